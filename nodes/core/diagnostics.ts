@@ -1,0 +1,115 @@
+/**
+ * One numbered table of every message Kleinflow reports. Codes are stable (tests and users may
+ * search for them): KF1xx document, KF2xx graph structure, KF3xx node evaluation, KF4xx
+ * scene/compile/render, KF5xx import/export.
+ */
+export type Severity = 'error' | 'warning' | 'info';
+
+export interface Diagnostic {
+  readonly code: string;
+  readonly severity: Severity;
+  readonly message: string;
+  /** JSON path in the document, e.g. `nodes[3].params.radius`. */
+  readonly path?: string;
+  readonly nodeId?: string;
+  readonly port?: string;
+}
+
+type Entry = { readonly code: string; readonly severity: Severity; readonly text: (...args: never[]) => string };
+
+const table = <T extends Record<string, Entry>>(t: T) => t;
+
+export const DIAGNOSTICS = table({
+  notJson: { code: 'KF101', severity: 'error', text: (detail: string) => `not valid JSON: ${detail}` },
+  schema: { code: 'KF102', severity: 'error', text: (detail: string) => detail },
+  wrongFormat: {
+    code: 'KF103',
+    severity: 'error',
+    text: (got: string) => `not a Kleinflow document (format is ${got}, expected "kleinflow")`,
+  },
+  futureVersion: {
+    code: 'KF104',
+    severity: 'error',
+    text: (v: number, max: number) => `document version ${v} is newer than this Kleinflow understands (${max})`,
+  },
+  tooManyNodes: {
+    code: 'KF105',
+    severity: 'error',
+    text: (n: number, max: number) => `document has ${n} nodes; the limit is ${max}`,
+  },
+  duplicateNodeId: { code: 'KF201', severity: 'error', text: (id: string) => `duplicate node id "${id}"` },
+  duplicateEdgeId: { code: 'KF202', severity: 'error', text: (id: string) => `duplicate edge id "${id}"` },
+  unknownNodeType: {
+    code: 'KF203',
+    severity: 'error',
+    text: (type: string) => `unknown node type "${type}" (kept as a placeholder; its data is preserved)`,
+  },
+  danglingEdge: {
+    code: 'KF204',
+    severity: 'error',
+    text: (end: string, node: string) => `edge ${end} names node "${node}", which does not exist`,
+  },
+  unknownPort: {
+    code: 'KF205',
+    severity: 'error',
+    text: (end: string, port: string, node: string) => `edge ${end} names port "${port}", which node "${node}" does not have`,
+  },
+  typeMismatch: {
+    code: 'KF206',
+    severity: 'error',
+    text: (from: string, to: string) => `cannot connect a ${from} output to a ${to} input`,
+  },
+  multipleEdges: {
+    code: 'KF207',
+    severity: 'error',
+    text: (port: string) => `input "${port}" takes one edge but has several`,
+  },
+  cycle: { code: 'KF208', severity: 'error', text: (ids: string) => `cycle through nodes ${ids}` },
+  selfEdge: { code: 'KF209', severity: 'error', text: (node: string) => `node "${node}" is wired to itself` },
+  noRender: { code: 'KF210', severity: 'warning', text: () => 'the graph has no render node: nothing is drawn' },
+  manyRenders: {
+    code: 'KF211',
+    severity: 'warning',
+    text: (used: string) => `several render nodes; "${used}" (first by id) is drawn`,
+  },
+  badParam: { code: 'KF301', severity: 'error', text: (name: string, detail: string) => `${name}: ${detail}` },
+  upstreamMissing: {
+    code: 'KF302',
+    severity: 'error',
+    text: (port: string, node: string) => `input "${port}" has no value because node "${node}" failed`,
+  },
+  degenerate: { code: 'KF303', severity: 'error', text: (detail: string) => detail },
+  notATiling: { code: 'KF304', severity: 'warning', text: (detail: string) => detail },
+  nodeThrew: { code: 'KF305', severity: 'error', text: (detail: string) => `internal error while evaluating: ${detail}` },
+  nonFinite: {
+    code: 'KF306',
+    severity: 'error',
+    text: (port: string) => `output "${port}" is not a finite number (NaN or ∞)`,
+  },
+  tooManyElements: {
+    code: 'KF401',
+    severity: 'error',
+    text: (n: number, max: number) => `the scene has ${n} elements; the limit is ${max} (the extra ones are ignored)`,
+  },
+  clamped: { code: 'KF402', severity: 'warning', text: (what: string) => what },
+  shaderCompile: { code: 'KF403', severity: 'error', text: (detail: string) => `shader failed to compile: ${detail}` },
+  importProblem: { code: 'KF501', severity: 'error', text: (detail: string) => detail },
+  importNote: { code: 'KF502', severity: 'warning', text: (detail: string) => detail },
+});
+
+export type DiagnosticKey = keyof typeof DIAGNOSTICS;
+
+type Args<K extends DiagnosticKey> = Parameters<(typeof DIAGNOSTICS)[K]['text']>;
+
+/** Builds a diagnostic from the table: `diag('cycle', { nodeId }, 'a → b → a')`. */
+export function diag<K extends DiagnosticKey>(
+  key: K,
+  where: { path?: string; nodeId?: string; port?: string },
+  ...args: Args<K>
+): Diagnostic {
+  const entry = DIAGNOSTICS[key];
+  const text = entry.text as (...a: Args<K>) => string;
+  return { code: entry.code, severity: entry.severity, message: text(...args), ...where };
+}
+
+export const hasErrors = (ds: readonly Diagnostic[]): boolean => ds.some((d) => d.severity === 'error');

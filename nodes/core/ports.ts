@@ -1,0 +1,36 @@
+/**
+ * Port (socket) types: the single table that the UI (colours, connection rules), the validator
+ * and the evaluator read.
+ */
+export const PORT_TYPES = ['number', 'point', 'line', 'circle', 'element', 'tile', 'color', 'image'] as const;
+export type PortType = (typeof PORT_TYPES)[number];
+
+interface PortTypeInfo {
+  /** Colour of sockets and wires of this type in the editor. */
+  readonly color: string;
+  /** Whether an input of this type takes many edges (their values are concatenated). */
+  readonly many: boolean;
+  /** Output types that may be wired into an input of this type (besides itself). */
+  readonly accepts: readonly PortType[];
+  readonly doc: string;
+}
+
+export const PORT_TYPE_INFO: Readonly<Record<PortType, PortTypeInfo>> = {
+  number: { color: '#9aa5b1', many: false, accepts: [], doc: 'a real number' },
+  point: { color: '#f2c14e', many: false, accepts: [], doc: 'a point of the plane' },
+  line: { color: '#4ecdc4', many: false, accepts: [], doc: 'a directed line (keeps its left side)' },
+  circle: { color: '#5b8def', many: false, accepts: [], doc: 'a circle (centre and radius)' },
+  element: { color: '#e85d75', many: true, accepts: [], doc: 'one or more IIS elements (mirrors, generators)' },
+  tile: { color: '#b07cf0', many: false, accepts: [], doc: 'how the tile and its images are coloured' },
+  color: { color: '#f08a5d', many: false, accepts: [], doc: 'an sRGB colour' },
+  image: { color: '#7bc96f', many: false, accepts: [], doc: 'a picture' },
+};
+
+/** Whether an output of type `from` may be connected to an input of type `to`. */
+export function canConnect(from: PortType, to: PortType): boolean {
+  return from === to || PORT_TYPE_INFO[to].accepts.includes(from);
+}
+
+export function isPortType(s: string): s is PortType {
+  return (PORT_TYPES as readonly string[]).includes(s);
+}

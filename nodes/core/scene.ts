@@ -1,0 +1,155 @@
+/**
+ * The Scene: the small resolved form between the graph and both back ends (CPU interpreter and
+ * GLSL compiler). Every construction is already done; only element data with numbers remains.
+ * Element kinds are implemented (CPU + GLSL, side by side) in shader-gen/elements/.
+ */
+import type { Circle, Color, Line, Vec2 } from './values.ts';
+
+/** A disk (|p−c| < r) or, when `outside`, the open complement of the closed disk (|p−c| > r). */
+export interface DiskRegion {
+  readonly c: Vec2;
+  readonly r: number;
+  readonly outside: boolean;
+}
+
+interface ElementBase {
+  /** The node that produced the element: errors and `#line` markers point back to it. */
+  readonly nodeId: string;
+}
+
+/** Inversion in the circle (c, r): inside |p−c| < r, σ(p) = c + r²(p−c)/|p−c|². */
+export interface InversionElement extends ElementBase {
+  readonly kind: 'inversion';
+  readonly c: Vec2;
+  readonly r: number;
+}
+
+/** Reflection in the line through q with unit normal n: inside (p−q)·n < 0. */
+export interface ReflectionElement extends ElementBase {
+  readonly kind: 'reflection';
+  readonly q: Vec2;
+  readonly n: Vec2;
+}
+
+/**
+ * Two-circle Möbius generator g = σ_C2∘σ_C1 (math.md). In A apply g, else in B apply
+ * g⁻¹ = σ_C1∘σ_C2; A is always tested first. A is bounded by C1, B by C1' = σ_C2(C1).
+ */
+export interface MobiusElement extends ElementBase {
+  readonly kind: 'mobius';
+  readonly c1: Circle;
+  readonly c2: Circle;
+  readonly a: DiskRegion;
+  readonly b: DiskRegion;
+}
+
+/**
+ * Loxodromic generator from two nested circles and a control point (math.md): inside A (C1)
+ * p ← σ_C2(σ_C1(σ_C3(ρ_L(p)))); inside B (outside C1') p ← ρ_L(σ_C3(σ_C1(σ_C2(p)))).
+ */
+export interface LoxodromicElement extends ElementBase {
+  readonly kind: 'loxodromic';
+  readonly c1: Circle;
+  readonly c2: Circle;
+  readonly c3: Circle;
+  /** ρ_L: reflection in the line through c1 and c2 (q, unit normal n). */
+  readonly lq: Vec2;
+  readonly ln: Vec2;
+  readonly a: DiskRegion;
+  readonly b: DiskRegion;
+}
+
+export type SceneElement = InversionElement | ReflectionElement | MobiusElement | LoxodromicElement;
+export type ElementKind = SceneElement['kind'];
+
+/** How a point is coloured from its IIS result. */
+export type Coloring =
+  /** HSV with hue = hueOffset + hueStep·depth (hue in turns). */
+  | { readonly mode: 'depth-hsv'; readonly hueOffset: number; readonly hueStep: number; readonly saturation: number; readonly value: number }
+  /** Cosine palette a + b·cos(2π(c·t + d)), t = depth·step (Quilez). */
+  | { readonly mode: 'cosine'; readonly a: Color; readonly b: Color; readonly c: Color; readonly d: Color; readonly step: number }
+  /** Two tones by the parity of depth. */
+  | { readonly mode: 'parity'; readonly even: Color; readonly odd: Color };
+
+export interface TileSpec {
+  readonly nodeId: string;
+  readonly coloring: Coloring;
+  /** Colour of points still moving at maxIterations (on or near the limit set). */
+  readonly limitColor: Color;
+  /** Colour outside the clip disk (e.g. outside the Poincaré disk). */
+  readonly background: Color;
+  /** Tile edges drawn this many pixels wide using the accumulated scale (0 = none). */
+  readonly edgeWidth: number;
+  readonly edgeColor: Color;
+}
+
+/** A view: `center` is the world point at the middle of the canvas, `scale` the world height. */
+export interface View {
+  readonly center: Vec2;
+  readonly scale: number;
+}
+
+/** What the overlay draws for a node (in the node's colour), with its draggable handles. */
+export type OverlayShape =
+  | { readonly shape: 'point'; readonly at: Vec2 }
+  | { readonly shape: 'line'; readonly line: Line }
+  | { readonly shape: 'circle'; readonly circle: Circle };
+
+export interface OverlayItem {
+  readonly nodeId: string;
+  readonly color: string;
+  readonly label?: string;
+  readonly shape: OverlayShape;
+}
+
+export interface HandleItem {
+  readonly nodeId: string;
+  /** Handle id, unique within the node, passed back to the node type's `drag`. */
+  readonly handle: string;
+  readonly at: Vec2;
+}
+
+export interface Scene {
+  readonly elements: readonly SceneElement[];
+  readonly tile: TileSpec;
+  readonly maxIterations: number;
+  readonly samples: number;
+  /** Points outside this disk get the background colour (null: no clipping). */
+  readonly clip: Circle | null;
+  readonly view: View;
+  readonly overlays: readonly OverlayItem[];
+  readonly handles: readonly HandleItem[];
+  /** Id of the render node, or null when the graph has none (then the scene is empty). */
+  readonly renderNodeId: string | null;
+}
+
+/** Bounds shared by the validator, evaluator and compiler (one home for each limit). */
+export const LIMITS = {
+  maxElements: 256,
+  maxIterations: 10_000,
+  maxSamples: 256,
+  maxNodes: 5_000,
+  defaultMaxIterations: 100,
+} as const;
+
+/**
+ * The tile used when a render node has no tile wired (and for an empty scene). The tile node's
+ * defaults are these values, so there is one home for them.
+ */
+export const DEFAULT_TILE: TileSpec = {
+  nodeId: '',
+  coloring: {
+    mode: 'cosine',
+    a: [0.5, 0.5, 0.5],
+    b: [0.5, 0.5, 0.5],
+    c: [1, 1, 1],
+    d: [0, 0.33, 0.67],
+    step: 0.07,
+  },
+  limitColor: [0.02, 0.02, 0.03],
+  background: [0.06, 0.06, 0.08],
+  edgeWidth: 0,
+  edgeColor: [1, 1, 1],
+};
+
+export const EMPTY_SCENE_DEFAULTS = { maxIterations: LIMITS.defaultMaxIterations, samples: 4 } as const;

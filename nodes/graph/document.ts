@@ -1,0 +1,60 @@
+/**
+ * The Kleinflow JSON document (GraphDoc) and its zod schema — the schema is the validator and the
+ * source of the published JSON Schema. Per-node params are checked against the node type later
+ * (params.ts), because the type decides what they mean.
+ */
+import { z } from 'zod';
+
+export const FORMAT = 'kleinflow';
+/** Current document version. Older versions migrate forward in migrate.ts. */
+export const DOC_VERSION = 1;
+
+const finite = z.number().finite();
+const vec2 = z.tuple([finite, finite]);
+const id = z.string().min(1, 'expected a non-empty id').max(200, 'ids are at most 200 characters');
+
+export const portRefSchema = z.strictObject({ node: id, port: z.string().min(1).max(200) });
+
+export const nodeSchema = z.strictObject({
+  id,
+  type: z.string().min(1).max(200),
+  /** Version of the node type the params were written for (1 when absent). */
+  version: z.number().int().positive().optional(),
+  position: vec2,
+  params: z.record(z.string(), z.unknown()),
+  label: z.string().max(200).optional(),
+});
+
+export const edgeSchema = z.strictObject({ id, from: portRefSchema, to: portRefSchema });
+
+export const viewSchema = z.strictObject({
+  center: vec2,
+  scale: finite.positive('expected a positive number'),
+});
+
+export const metaSchema = z
+  .object({
+    title: z.string().max(500).optional(),
+    description: z.string().max(20_000).optional(),
+  })
+  .catchall(z.unknown());
+
+export const docSchema = z.strictObject({
+  format: z.literal(FORMAT),
+  version: z.number().int().positive(),
+  meta: metaSchema,
+  nodes: z.array(nodeSchema),
+  edges: z.array(edgeSchema),
+  view: viewSchema,
+});
+
+export type GraphDoc = z.infer<typeof docSchema>;
+export type GraphNode = z.infer<typeof nodeSchema>;
+export type GraphEdge = z.infer<typeof edgeSchema>;
+export type PortRef = z.infer<typeof portRefSchema>;
+
+export const DEFAULT_VIEW = { center: [0, 0] as [number, number], scale: 4 };
+
+export function emptyDocument(title = 'Untitled'): GraphDoc {
+  return { format: FORMAT, version: DOC_VERSION, meta: { title }, nodes: [], edges: [], view: { ...DEFAULT_VIEW } };
+}

@@ -1,0 +1,175 @@
+/**
+ * Evaluation: a document → per-node results and the Scene. Nodes run in deterministic topological
+ * order; a failing node has no outputs and its dependants say why, the rest go on.
+ */
+import type { EvalContext, NodeDef, RenderSettings } from '../core/define-node.ts';
+import { type Diagnostic, diag, hasErrors } from '../core/diagnostics.ts';
+import { PORT_TYPE_INFO } from '../core/ports.ts';
+import type { NodeRegistry } from '../core/registry.ts';
+import {
+  DEFAULT_TILE,
+  EMPTY_SCENE_DEFAULTS,
+  type HandleItem,
+  type OverlayItem,
+  type Scene,
+  type SceneElement,
+} from '../core/scene.ts';
+import { type Analysis, analyzeGraph } from './analyze.ts';
+import type { GraphDoc } from './document.ts';
+import { checkNumber, resolveParams } from './params.ts';
+
+export interface NodeEvaluation {
+  readonly outputs?: Readonly<Record<string, unknown>>;
+  readonly readout?: string;
+  readonly diagnostics: readonly Diagnostic[];
+  /** The context evaluate ran with (the editor uses it to map handle drags back to params). */
+  readonly ctx?: EvalContext;
+}
+
+export interface Evaluation {
+  readonly scene: Scene;
+  readonly nodes: ReadonlyMap<string, NodeEvaluation>;
+  /** Every diagnostic: document structure first, then per node in evaluation order. */
+  readonly diagnostics: readonly Diagnostic[];
+  readonly analysis: Analysis;
+}
+
+export interface EvaluateOptions {
+  /** Seconds of animation time. */
+  readonly time?: number;
+}
+
+/** True when every number inside `value` (recursively) is finite. */
+export function allFinite(value: unknown, depth = 0): boolean {
+  if (typeof value === 'number') return Number.isFinite(value);
+  if (depth > 8 || value === null || typeof value !== 'object') return true;
+  if (Array.isArray(value)) return value.every((v) => allFinite(v, depth + 1));
+  return Object.values(value).every((v) => allFinite(v, depth + 1));
+}
+
+export function evaluateGraph(doc: GraphDoc, registry: NodeRegistry, options: EvaluateOptions = {}): Evaluation {
+  const analysis = analyzeGraph(doc, registry);
+  const results = new Map<string, NodeEvaluation>();
+  const overlays: OverlayItem[] = [];
+  const handles: HandleItem[] = [];
+  const renders: { id: string; settings: RenderSettings }[] = [];
+  const time = options.time ?? 0;
+
+  for (const id of analysis.order) {
+    const { node, index, def } = analysis.nodes.get(id)!;
+    if (!def) {
+      results.set(id, { diagnostics: [] }); // placeholder: reported by analyze
+      continue;
+    }
+    const result = evaluateNode(def, node.id, index, node.params, analysis, results, time);
+    results.set(id, result);
+    if (!result.outputs || !result.ctx) continue;
+    if (result.render) renders.push({ id, settings: result.render });
+    if (result.ctx.params.visible === false) continue;
+    try {
+      for (const shape of def.overlay?.(result.ctx, result.outputs) ?? []) {
+        overlays.push({ nodeId: id, color: def.color, shape, ...(node.label ? { label: node.label } : {}) });
+      }
+      for (const h of def.handles?.(result.ctx, result.outputs) ?? []) {
+        if (allFinite(h.at)) handles.push({ ...h, nodeId: id });
+      }
+    } catch {
+      // An overlay is decoration: a failure here must not hide the node's real result.
+    }
+  }
+  for (const id of analysis.blocked) results.set(id, { diagnostics: [] });
+
+  const diagnostics: Diagnostic[] = [...analysis.diagnostics];
+  for (const id of analysis.order) diagnostics.push(...results.get(id)!.diagnostics);
+
+  renders.sort((a, b) => (a.id < b.id ? -1 : a.id > b.id ? 1 : 0));
+  const renderNodes = [...analysis.nodes.values()].filter((n) => n.node.type === 'render');
+  if (renderNodes.length === 0 && doc.nodes.length > 0) diagnostics.push(diag('noRender', {}));
+  if (renderNodes.length > 1) {
+    const used = renders[0]?.id ?? renderNodes[0].node.id;
+    diagnostics.push(diag('manyRenders', { nodeId: used }, used));
+  }
+  const chosen = renders[0];
+  const scene: Scene = {
+    elements: chosen?.settings.elements ?? [],
+    tile: chosen?.settings.tile ?? DEFAULT_TILE,
+    maxIterations: chosen?.settings.maxIterations ?? EMPTY_SCENE_DEFAULTS.maxIterations,
+    samples: chosen?.settings.samples ?? EMPTY_SCENE_DEFAULTS.samples,
+    clip: chosen?.settings.clip ?? null,
+    view: { center: doc.view.center, scale: doc.view.scale },
+    overlays,
+    handles,
+    renderNodeId: chosen?.id ?? null,
+  };
+  return { scene, nodes: results, diagnostics, analysis };
+}
+
+function evaluateNode(
+  def: NodeDef,
+  nodeId: string,
+  index: number,
+  rawParams: Record<string, unknown>,
+  analysis: Analysis,
+  results: ReadonlyMap<string, NodeEvaluation>,
+  time: number,
+): NodeEvaluation & { render?: RenderSettings } {
+  const edgesByPort = analysis.incoming.get(nodeId);
+  const connected = new Set(edgesByPort ? [...edgesByPort.keys()] : []);
+  const resolved = resolveParams(def, { id: nodeId, params: rawParams }, connected, ['nodes', index]);
+  const diagnostics: Diagnostic[] = [...resolved.diagnostics];
+  const inputs: Record<string, unknown> = { ...resolved.inline };
+
+  for (const [port, spec] of Object.entries(def.inputs)) {
+    const edges = edgesByPort?.get(port);
+    const many = PORT_TYPE_INFO[spec.type].many;
+    if (!edges) {
+      if (many) inputs[port] = [];
+      continue;
+    }
+    const values: unknown[] = [];
+    for (const edge of orderBySource(edges, analysis)) {
+      const value = results.get(edge.from.node)?.outputs?.[edge.from.port];
+      if (value === undefined) {
+        // One broken source of a many-input is a warning (the others still draw); otherwise an error.
+        const d = diag('upstreamMissing', { nodeId, port }, port, edge.from.node);
+        diagnostics.push(many ? { ...d, severity: 'warning' } : d);
+        continue;
+      }
+      values.push(value);
+    }
+    if (many) inputs[port] = (values as SceneElement[][]).flat();
+    else if (values.length > 0) {
+      inputs[port] = values[0];
+      if (spec.type === 'number') {
+        const problem = checkNumber(spec, values[0] as number);
+        if (problem) diagnostics.push(diag('badParam', { nodeId, port }, port, problem));
+      }
+    }
+  }
+  if (hasErrors(diagnostics)) return { diagnostics };
+
+  const ctx: EvalContext = { nodeId, inputs: inputs as EvalContext['inputs'], params: resolved.params, time };
+  let outcome: ReturnType<NodeDef['evaluate']>;
+  try {
+    outcome = def.evaluate(ctx);
+  } catch (e) {
+    return { diagnostics: [...diagnostics, diag('nodeThrew', { nodeId }, (e as Error)?.message ?? String(e))], ctx };
+  }
+  diagnostics.push(...(outcome.diagnostics ?? []).map((d) => ({ ...d, nodeId })));
+  const readout = outcome.readout;
+  if (hasErrors(diagnostics) || !outcome.outputs) return { diagnostics, readout, ctx };
+  for (const [port, value] of Object.entries(outcome.outputs)) {
+    if (!allFinite(value)) {
+      diagnostics.push(diag('nonFinite', { nodeId, port }, port));
+      return { diagnostics, readout, ctx };
+    }
+  }
+  return { outputs: outcome.outputs, readout, diagnostics, ctx, render: outcome.render };
+}
+
+/** Edges into a many-input, ordered by their source node's evaluation order ("graph order"). */
+function orderBySource<T extends { from: { node: string } }>(edges: readonly T[], analysis: Analysis): T[] {
+  if (edges.length < 2) return [...edges];
+  const rank = new Map(analysis.order.map((id, i) => [id, i]));
+  return [...edges].sort((a, b) => (rank.get(a.from.node) ?? 0) - (rank.get(b.from.node) ?? 0));
+}

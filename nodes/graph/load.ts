@@ -1,0 +1,64 @@
+/**
+ * Loading a document: JSON text (or an already parsed value) → migrate → validate with zod.
+ * Problems that make the file unusable come back with their paths and no document; graph-level
+ * problems (unknown types, bad edges, cycles) are found later by analyze/evaluate and never stop a load.
+ */
+import { type Diagnostic, diag } from '../core/diagnostics.ts';
+import { LIMITS } from '../core/scene.ts';
+import { docSchema, FORMAT, type GraphDoc } from './document.ts';
+import { formatPath } from './json-path.ts';
+import { DOC_MIGRATIONS, type DocMigration, migrateDocument } from './migrate.ts';
+
+export type LoadResult =
+  | { ok: true; doc: GraphDoc; migratedFrom: number; diagnostics: Diagnostic[] }
+  | { ok: false; diagnostics: Diagnostic[] };
+
+/** At most this many schema problems are listed (a broken file can have thousands). */
+const MAX_REPORTED = 50;
+
+export function parseDocumentText(text: string): LoadResult {
+  let value: unknown;
+  try {
+    value = JSON.parse(text);
+  } catch (e) {
+    return { ok: false, diagnostics: [diag('notJson', { path: '(document)' }, (e as Error).message)] };
+  }
+  return loadDocument(value);
+}
+
+export function loadDocument(
+  value: unknown,
+  migrations: Readonly<Record<number, DocMigration>> = DOC_MIGRATIONS,
+  target?: number,
+): LoadResult {
+  if (typeof value !== 'object' || value === null || Array.isArray(value)) {
+    const got = Array.isArray(value) ? 'an array' : value === null ? 'null' : typeof value;
+    return { ok: false, diagnostics: [diag('schema', { path: '(document)' }, `expected a JSON object, got ${got}`)] };
+  }
+  const raw = value as Record<string, unknown>;
+  if (raw.format !== FORMAT) {
+    return { ok: false, diagnostics: [diag('wrongFormat', { path: 'format' }, JSON.stringify(raw.format) ?? 'missing')] };
+  }
+  if (Array.isArray(raw.nodes) && raw.nodes.length > LIMITS.maxNodes) {
+    return { ok: false, diagnostics: [diag('tooManyNodes', { path: 'nodes' }, raw.nodes.length, LIMITS.maxNodes)] };
+  }
+  let migrated: ReturnType<typeof migrateDocument>;
+  try {
+    migrated = migrateDocument(raw, migrations, target);
+  } catch (e) {
+    return { ok: false, diagnostics: [diag('schema', { path: 'version' }, `migration failed: ${(e as Error).message}`)] };
+  }
+  if (!migrated.ok) return { ok: false, diagnostics: [diag('schema', { path: 'version' }, migrated.message)] };
+  const parsed = docSchema.safeParse(migrated.doc);
+  if (!parsed.success) {
+    const diagnostics = parsed.error.issues.slice(0, MAX_REPORTED).map((issue) => {
+      const path = formatPath(issue.path);
+      return diag('schema', { path }, `${path}: ${issue.message}`);
+    });
+    if (parsed.error.issues.length > MAX_REPORTED) {
+      diagnostics.push(diag('schema', { path: '(document)' }, `…and ${parsed.error.issues.length - MAX_REPORTED} more problems`));
+    }
+    return { ok: false, diagnostics };
+  }
+  return { ok: true, doc: parsed.data, migratedFrom: migrated.from, diagnostics: [] };
+}

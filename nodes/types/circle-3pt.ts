@@ -1,0 +1,27 @@
+import { defineNode } from '../core/define-node.ts';
+import type { Circle, Vec2 } from '../core/values.ts';
+import { circleThrough3 } from '../geometry/circle.ts';
+import { fail, pointInput, VISIBLE } from './shared.ts';
+
+export const circle3ptNode = defineNode({
+  type: 'circle-3pt',
+  version: 1,
+  label: 'Circle through 3 points',
+  category: 'Geometry',
+  color: '#5b8def',
+  doc: 'The circle through three points (they must not be collinear).',
+  inputs: { a: pointInput('a', -1, 0), b: pointInput('b', 0, 1), c: pointInput('c', 1, 0) },
+  outputs: { circle: { type: 'circle', label: 'circle' } },
+  params: { visible: VISIBLE },
+  evaluate: ({ inputs }) => {
+    const circle = circleThrough3(inputs.a as Vec2, inputs.b as Vec2, inputs.c as Vec2);
+    if (!circle) return fail('the three points are collinear (or coincide): no circle passes through them');
+    return { outputs: { circle } };
+  },
+  overlay: (ctx, out) => [
+    { shape: 'circle', circle: out.circle as Circle },
+    ...(['a', 'b', 'c'] as const).map((k) => ({ shape: 'point' as const, at: ctx.inputs[k] as Vec2 })),
+  ],
+  handles: (ctx) => (['a', 'b', 'c'] as const).map((k) => ({ handle: k, at: ctx.inputs[k] as Vec2 })),
+  drag: (handle, to) => ({ [handle]: [...to] }),
+});

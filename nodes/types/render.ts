@@ -1,0 +1,52 @@
+import { defineNode } from '../core/define-node.ts';
+import { diag } from '../core/diagnostics.ts';
+import { DEFAULT_TILE, LIMITS, type SceneElement, type TileSpec } from '../core/scene.ts';
+import type { Circle } from '../core/values.ts';
+import { elementInput } from './shared.ts';
+
+export const renderNode = defineNode({
+  type: 'render',
+  version: 1,
+  label: 'Render',
+  category: 'Output',
+  color: '#ffffff',
+  doc: 'The picture: runs the IIS with every element wired in (tested in graph order) and colours it with the tile.',
+  inputs: {
+    elements: elementInput('elements'),
+    tile: { type: 'tile', label: 'tile', optional: true },
+    clip: { type: 'circle', label: 'clip', optional: true, doc: 'only draw inside this disk (e.g. the Poincaré disk)' },
+  },
+  outputs: {},
+  params: {
+    maxIterations: {
+      kind: 'number',
+      default: LIMITS.defaultMaxIterations,
+      min: 1,
+      max: LIMITS.maxIterations,
+      integer: true,
+      label: 'max iterations',
+    },
+    samples: { kind: 'number', default: 4, min: 1, max: LIMITS.maxSamples, integer: true, label: 'samples / pixel' },
+  },
+  evaluate: ({ inputs, params }) => {
+    let elements = inputs.elements as readonly SceneElement[];
+    const diagnostics = [];
+    if (elements.length > LIMITS.maxElements) {
+      diagnostics.push(diag('tooManyElements', { port: 'elements' }, elements.length, LIMITS.maxElements));
+      elements = elements.slice(0, LIMITS.maxElements);
+    }
+    if (elements.length === 0) diagnostics.push({ ...diag('clamped', { port: 'elements' }, 'no elements wired in: the whole plane is the tile'), severity: 'info' as const });
+    return {
+      outputs: {},
+      diagnostics,
+      readout: `${elements.length} element${elements.length === 1 ? '' : 's'}`,
+      render: {
+        elements,
+        tile: (inputs.tile as TileSpec | undefined) ?? DEFAULT_TILE,
+        maxIterations: params.maxIterations as number,
+        samples: params.samples as number,
+        clip: (inputs.clip as Circle | undefined) ?? null,
+      },
+    };
+  },
+});

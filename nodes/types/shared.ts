@@ -1,0 +1,19 @@
+/** Small helpers shared by node type files (outcomes, common port and param specs). */
+import type { EvalOutcome, InputSpec, ParamSpec } from '../core/define-node.ts';
+import { diag } from '../core/diagnostics.ts';
+
+/** A node error for a degenerate or invalid set-up; the node has no outputs. */
+export const fail = (reason: string, readout?: string): EvalOutcome => ({
+  diagnostics: [diag('degenerate', {}, reason)],
+  ...(readout ? { readout } : {}),
+});
+
+/** The overlay toggle every geometric node has. */
+export const VISIBLE: ParamSpec = { kind: 'boolean', default: true, label: 'show', doc: 'draw it over the render' };
+
+export const pointInput = (label: string, x: number, y: number): InputSpec => ({ type: 'point', label, default: [x, y] });
+export const elementInput = (label: string): InputSpec => ({ type: 'element', label, optional: true });
+
+/** Formats a number for read-outs: up to 4 significant decimals, no trailing zeros. */
+export const fmt = (v: number): string => (Number.isInteger(v) ? String(v) : String(Number(v.toFixed(4))));
+export const degrees = (radians: number): string => `${fmt((radians * 180) / Math.PI)}°`;

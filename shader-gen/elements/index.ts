@@ -1,0 +1,15 @@
+/** Every element kind, by kind: the one table the interpreter and the compiler dispatch on. */
+import type { SceneElement } from '../../nodes/core/scene.ts';
+import type { ElementKind } from './element-kind.ts';
+import { inversion } from './inversion.ts';
+import { loxodromic } from './loxodromic.ts';
+import { mobius } from './mobius.ts';
+import { reflection } from './reflection.ts';
+
+type KindTable = { readonly [K in SceneElement['kind']]: ElementKind<Extract<SceneElement, { kind: K }>> };
+
+export const ELEMENT_KINDS: KindTable = { inversion, reflection, mobius, loxodromic };
+
+export function elementKind<E extends SceneElement>(e: E): ElementKind<E> {
+  return ELEMENT_KINDS[e.kind] as unknown as ElementKind<E>;
+}

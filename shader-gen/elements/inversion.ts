@@ -1,0 +1,27 @@
+/** Circle inversion (c, r): inside |p−c| < r; σ(p) = c + r²(p−c)/|p−c|²; scale r²/|p−c|². */
+import type { InversionElement } from '../../nodes/core/scene.ts';
+import type { ElementKind, IisState } from './element-kind.ts';
+
+/** Inverts the state's point in (cx, cy, r) unconditionally; shared by the generator kinds. */
+export function invertState(st: IisState, cx: number, cy: number, r: number): void {
+  const dx = st.x - cx;
+  const dy = st.y - cy;
+  const k = (r * r) / (dx * dx + dy * dy);
+  st.x = cx + dx * k;
+  st.y = cy + dy * k;
+  st.s *= k;
+}
+
+export const inversion: ElementKind<InversionElement> = {
+  kind: 'inversion',
+  step(e, st) {
+    const dx = st.x - e.c[0];
+    const dy = st.y - e.c[1];
+    if (dx * dx + dy * dy >= e.r * e.r) return false;
+    invertState(st, e.c[0], e.c[1], e.r);
+    st.depth += 1;
+    return true;
+  },
+  inside: (e, x, y) => (x - e.c[0]) ** 2 + (y - e.c[1]) ** 2 < e.r * e.r,
+  boundaryDistance: (e, x, y) => Math.abs(Math.hypot(x - e.c[0], y - e.c[1]) - e.r),
+};

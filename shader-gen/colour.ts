@@ -10,7 +10,8 @@ export type Rgb = [number, number, number];
 /** sRGB transfer function, decoding: c ≤ 0.04045 ? c/12.92 : ((c+0.055)/1.055)^2.4. */
 export const srgbToLinear = (c: number): number => (c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4);
 /** sRGB transfer function, encoding: c ≤ 0.0031308 ? 12.92c : 1.055 c^(1/2.4) − 0.055. */
-export const linearToSrgb = (c: number): number => (c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055);
+export const linearToSrgb = (c: number): number =>
+  c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055;
 
 export const toLinear = (c: Color): Rgb => [srgbToLinear(c[0]), srgbToLinear(c[1]), srgbToLinear(c[2])];
 
@@ -58,5 +59,9 @@ export function shade(tile: TileSpec, r: ShadeInput): Rgb {
   if (tile.edgeWidth <= 0) return base;
   const t = clamp01(r.edgePixels - tile.edgeWidth / 2 + 0.5);
   const edge = toLinear(tile.edgeColor);
-  return [edge[0] + (base[0] - edge[0]) * t, edge[1] + (base[1] - edge[1]) * t, edge[2] + (base[2] - edge[2]) * t];
+  return [
+    edge[0] + (base[0] - edge[0]) * t,
+    edge[1] + (base[1] - edge[1]) * t,
+    edge[2] + (base[2] - edge[2]) * t,
+  ];
 }

@@ -27,7 +27,10 @@ export interface PreparedElements {
 }
 
 export function prepare(elements: readonly SceneElement[]): PreparedElements {
-  return { elements, kinds: elements.map((e) => ELEMENT_KINDS[e.kind] as unknown as ElementKind<SceneElement>) };
+  return {
+    elements,
+    kinds: elements.map((e) => ELEMENT_KINDS[e.kind] as unknown as ElementKind<SceneElement>),
+  };
 }
 
 /**

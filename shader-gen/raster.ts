@@ -3,8 +3,8 @@
  * light, averaged, encoded as 8-bit sRGB RGBA with the first row at the top (PNG order).
  */
 import type { Scene } from '../nodes/core/scene.ts';
-import type { IisState } from './elements/element-kind.ts';
 import { linearToSrgb, shade } from './colour.ts';
+import type { IisState } from './elements/element-kind.ts';
 import { prepare, runIis } from './interpret.ts';
 import { pixelToWorld, sampleOffset } from './view.ts';
 

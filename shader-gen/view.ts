@@ -9,7 +9,15 @@ import type { Vec2 } from '../nodes/core/values.ts';
  * Pixel (px, py), origin bottom-left, sample offset (ox, oy) in [0,1)² (0.5, 0.5 = centre):
  * world = center + ((px + ox − W/2)/H, (py + oy − H/2)/H) · scale.
  */
-export function pixelToWorld(view: View, width: number, height: number, px: number, py: number, ox = 0.5, oy = 0.5): Vec2 {
+export function pixelToWorld(
+  view: View,
+  width: number,
+  height: number,
+  px: number,
+  py: number,
+  ox = 0.5,
+  oy = 0.5,
+): Vec2 {
   return [
     view.center[0] + ((px + ox - width / 2) / height) * view.scale,
     view.center[1] + ((py + oy - height / 2) / height) * view.scale,

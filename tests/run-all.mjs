@@ -18,7 +18,11 @@ function ensureSystemTools() {
   if (root && has('apt-get')) {
     console.log(`[kleinflow] installing ${missing.join(' ')} with apt-get (once)…`);
     const env = { ...process.env, DEBIAN_FRONTEND: 'noninteractive' };
-    if (run('apt-get', ['update', '-qq'], { env }) === 0 && run('apt-get', ['install', '-y', '-qq', ...missing], { env }) === 0) return;
+    if (
+      run('apt-get', ['update', '-qq'], { env }) === 0 &&
+      run('apt-get', ['install', '-y', '-qq', ...missing], { env }) === 0
+    )
+      return;
   }
   console.error(
     `[kleinflow] the browser and GLSL tests need Debian's ${missing.join(' and ')}: run "sudo apt-get install -y ${missing.join(' ')}" and try again.`,
@@ -35,7 +39,14 @@ failed |= run('npx', ['tsc', '--noEmit', '-p', '.']);
 console.log('\n[kleinflow] tests (vitest)');
 mkdirSync('test-artifacts', { recursive: true });
 const report = 'test-artifacts/vitest-report.json';
-const vitest = run('npx', ['vitest', 'run', '--reporter=default', '--reporter=json', `--outputFile.json=${report}`, ...process.argv.slice(2)]);
+const vitest = run('npx', [
+  'vitest',
+  'run',
+  '--reporter=default',
+  '--reporter=json',
+  `--outputFile.json=${report}`,
+  ...process.argv.slice(2),
+]);
 let summary = '';
 if (existsSync(report)) {
   const r = JSON.parse(readFileSync(report, 'utf8'));

@@ -82,7 +82,15 @@ export interface NodeDef {
   readonly type: string;
   readonly version: number;
   readonly label: string;
-  readonly category: 'Values' | 'Geometry' | 'Construction' | 'Generators' | 'Kaleidoscopes' | 'Colour' | 'Animation' | 'Output';
+  readonly category:
+    | 'Values'
+    | 'Geometry'
+    | 'Construction'
+    | 'Generators'
+    | 'Kaleidoscopes'
+    | 'Colour'
+    | 'Animation'
+    | 'Output';
   readonly color: string;
   /** One line shown in the palette, inspector and README. */
   readonly doc: string;
@@ -94,11 +102,19 @@ export interface NodeDef {
    * migrations[v] turns the params of a version-v node into version v+1 params. Every version
    * below `version` needs one.
    */
-  readonly migrations?: Readonly<Record<number, (params: Record<string, unknown>) => Record<string, unknown>>>;
+  readonly migrations?: Readonly<
+    Record<number, (params: Record<string, unknown>) => Record<string, unknown>>
+  >;
   /** What the overlay draws from the evaluated values (in the node's colour). */
-  readonly overlay?: (ctx: EvalContext, outputs: Readonly<Record<string, unknown>>) => readonly OverlayShape[];
+  readonly overlay?: (
+    ctx: EvalContext,
+    outputs: Readonly<Record<string, unknown>>,
+  ) => readonly OverlayShape[];
   /** Draggable handles at their current positions. */
-  readonly handles?: (ctx: EvalContext, outputs: Readonly<Record<string, unknown>>) => readonly Omit<HandleItem, 'nodeId'>[];
+  readonly handles?: (
+    ctx: EvalContext,
+    outputs: Readonly<Record<string, unknown>>,
+  ) => readonly Omit<HandleItem, 'nodeId'>[];
   /**
    * Maps a drag of `handle` to world point `to` onto new values (document form) of this node's
    * unconnected inputs / params. When a key names a connected point input, the editor drags the
@@ -109,6 +125,7 @@ export interface NodeDef {
 
 /** Declares a node type. Identity function with defaults filled in and the id checked. */
 export function defineNode(def: NodeDef): NodeDef {
-  if (!/^[a-z][a-z0-9]*(-[a-z0-9]+)*$/.test(def.type)) throw new Error(`node type id "${def.type}" is not kebab-case`);
+  if (!/^[a-z][a-z0-9]*(-[a-z0-9]+)*$/.test(def.type))
+    throw new Error(`node type id "${def.type}" is not kebab-case`);
   return def;
 }

@@ -15,7 +15,11 @@ export interface Diagnostic {
   readonly port?: string;
 }
 
-type Entry = { readonly code: string; readonly severity: Severity; readonly text: (...args: never[]) => string };
+type Entry = {
+  readonly code: string;
+  readonly severity: Severity;
+  readonly text: (...args: never[]) => string;
+};
 
 const table = <T extends Record<string, Entry>>(t: T) => t;
 
@@ -30,7 +34,8 @@ export const DIAGNOSTICS = table({
   futureVersion: {
     code: 'KF104',
     severity: 'error',
-    text: (v: number, max: number) => `document version ${v} is newer than this Kleinflow understands (${max})`,
+    text: (v: number, max: number) =>
+      `document version ${v} is newer than this Kleinflow understands (${max})`,
   },
   tooManyNodes: {
     code: 'KF105',
@@ -52,7 +57,8 @@ export const DIAGNOSTICS = table({
   unknownPort: {
     code: 'KF205',
     severity: 'error',
-    text: (end: string, port: string, node: string) => `edge ${end} names port "${port}", which node "${node}" does not have`,
+    text: (end: string, port: string, node: string) =>
+      `edge ${end} names port "${port}", which node "${node}" does not have`,
   },
   typeMismatch: {
     code: 'KF206',
@@ -66,13 +72,21 @@ export const DIAGNOSTICS = table({
   },
   cycle: { code: 'KF208', severity: 'error', text: (ids: string) => `cycle through nodes ${ids}` },
   selfEdge: { code: 'KF209', severity: 'error', text: (node: string) => `node "${node}" is wired to itself` },
-  noRender: { code: 'KF210', severity: 'warning', text: () => 'the graph has no render node: nothing is drawn' },
+  noRender: {
+    code: 'KF210',
+    severity: 'warning',
+    text: () => 'the graph has no render node: nothing is drawn',
+  },
   manyRenders: {
     code: 'KF211',
     severity: 'warning',
     text: (used: string) => `several render nodes; "${used}" (first by id) is drawn`,
   },
-  badParam: { code: 'KF301', severity: 'error', text: (name: string, detail: string) => `${name}: ${detail}` },
+  badParam: {
+    code: 'KF301',
+    severity: 'error',
+    text: (name: string, detail: string) => `${name}: ${detail}`,
+  },
   upstreamMissing: {
     code: 'KF302',
     severity: 'error',
@@ -80,7 +94,11 @@ export const DIAGNOSTICS = table({
   },
   degenerate: { code: 'KF303', severity: 'error', text: (detail: string) => detail },
   notATiling: { code: 'KF304', severity: 'warning', text: (detail: string) => detail },
-  nodeThrew: { code: 'KF305', severity: 'error', text: (detail: string) => `internal error while evaluating: ${detail}` },
+  nodeThrew: {
+    code: 'KF305',
+    severity: 'error',
+    text: (detail: string) => `internal error while evaluating: ${detail}`,
+  },
   nonFinite: {
     code: 'KF306',
     severity: 'error',
@@ -89,10 +107,15 @@ export const DIAGNOSTICS = table({
   tooManyElements: {
     code: 'KF401',
     severity: 'error',
-    text: (n: number, max: number) => `the scene has ${n} elements; the limit is ${max} (the extra ones are ignored)`,
+    text: (n: number, max: number) =>
+      `the scene has ${n} elements; the limit is ${max} (the extra ones are ignored)`,
   },
   clamped: { code: 'KF402', severity: 'warning', text: (what: string) => what },
-  shaderCompile: { code: 'KF403', severity: 'error', text: (detail: string) => `shader failed to compile: ${detail}` },
+  shaderCompile: {
+    code: 'KF403',
+    severity: 'error',
+    text: (detail: string) => `shader failed to compile: ${detail}`,
+  },
   importProblem: { code: 'KF501', severity: 'error', text: (detail: string) => detail },
   importNote: { code: 'KF502', severity: 'warning', text: (detail: string) => detail },
 });

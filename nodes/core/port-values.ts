@@ -12,12 +12,18 @@ const vec2 = z.tuple([finite, finite]);
 export const hexColor = z
   .string()
   .regex(/^#[0-9a-fA-F]{6}$/, 'expected a colour like "#ff8800"')
-  .transform((s): Color => [1, 3, 5].map((i) => Number.parseInt(s.slice(i, i + 2), 16) / 255) as unknown as Color);
+  .transform(
+    (s): Color => [1, 3, 5].map((i) => Number.parseInt(s.slice(i, i + 2), 16) / 255) as unknown as Color,
+  );
 
 /** Color → "#rrggbb" (components clamped to [0, 1]). */
 export function toHex(c: Color): string {
   return `#${c
-    .map((v) => Math.round(Math.min(1, Math.max(0, v)) * 255).toString(16).padStart(2, '0'))
+    .map((v) =>
+      Math.round(Math.min(1, Math.max(0, v)) * 255)
+        .toString(16)
+        .padStart(2, '0'),
+    )
     .join('')}`;
 }
 

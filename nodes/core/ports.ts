@@ -20,7 +20,12 @@ export const PORT_TYPE_INFO: Readonly<Record<PortType, PortTypeInfo>> = {
   point: { color: '#f2c14e', many: false, accepts: [], doc: 'a point of the plane' },
   line: { color: '#4ecdc4', many: false, accepts: [], doc: 'a directed line (keeps its left side)' },
   circle: { color: '#5b8def', many: false, accepts: [], doc: 'a circle (centre and radius)' },
-  element: { color: '#e85d75', many: true, accepts: [], doc: 'one or more IIS elements (mirrors, generators)' },
+  element: {
+    color: '#e85d75',
+    many: true,
+    accepts: [],
+    doc: 'one or more IIS elements (mirrors, generators)',
+  },
   tile: { color: '#b07cf0', many: false, accepts: [], doc: 'how the tile and its images are coloured' },
   color: { color: '#f08a5d', many: false, accepts: [], doc: 'an sRGB colour' },
   image: { color: '#7bc96f', many: false, accepts: [], doc: 'a picture' },

@@ -65,9 +65,22 @@ export type ElementKind = SceneElement['kind'];
 /** How a point is coloured from its IIS result. */
 export type Coloring =
   /** HSV with hue = hueOffset + hueStep·depth (hue in turns). */
-  | { readonly mode: 'depth-hsv'; readonly hueOffset: number; readonly hueStep: number; readonly saturation: number; readonly value: number }
+  | {
+      readonly mode: 'depth-hsv';
+      readonly hueOffset: number;
+      readonly hueStep: number;
+      readonly saturation: number;
+      readonly value: number;
+    }
   /** Cosine palette a + b·cos(2π(c·t + d)), t = depth·step (Quilez). */
-  | { readonly mode: 'cosine'; readonly a: Color; readonly b: Color; readonly c: Color; readonly d: Color; readonly step: number }
+  | {
+      readonly mode: 'cosine';
+      readonly a: Color;
+      readonly b: Color;
+      readonly c: Color;
+      readonly d: Color;
+      readonly step: number;
+    }
   /** Two tones by the parity of depth. */
   | { readonly mode: 'parity'; readonly even: Color; readonly odd: Color };
 

@@ -26,7 +26,8 @@ export const sameCircle = (a: Circle, b: Circle): boolean =>
 export function classifyTwoCircle(c1: Circle, c2: Circle): MobiusClass {
   const d = dist(c1.c, c2.c);
   const trace = (c1.r * c1.r + c2.r * c2.r - d * d) / (c1.r * c2.r);
-  if (Math.abs(Math.abs(trace) - 2) <= TANGENT_EPS * Math.max(1, Math.abs(trace))) return { type: 'parabolic', trace };
+  if (Math.abs(Math.abs(trace) - 2) <= TANGENT_EPS * Math.max(1, Math.abs(trace)))
+    return { type: 'parabolic', trace };
   if (Math.abs(trace) > 2) return { type: 'hyperbolic', trace };
   return { type: 'elliptic', trace, angle: Math.acos(trace / 2) };
 }
@@ -41,7 +42,8 @@ export type TwoCircleRegions =
  * when A = inside C1 (∞ is outside A), and g(c1) = σ_C2(∞) = c2 when A = outside C1.
  */
 export function twoCircleRegions(c1: Circle, c2: Circle): TwoCircleRegions {
-  if (sameCircle(c1, c2)) return { ok: false, reason: 'the two circles are the same: the map is the identity' };
+  if (sameCircle(c1, c2))
+    return { ok: false, reason: 'the two circles are the same: the map is the identity' };
   const image = invertCircle(c2, c1);
   if (!image) {
     return { ok: false, reason: "C1 passes through C2's centre, so its image C1' is a line: move C1 or C2" };

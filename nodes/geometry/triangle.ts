@@ -41,7 +41,12 @@ export function triangleMirrors(p: number, q: number, r: number, size = 1): Tria
   if (geometry === 'euclidean') {
     const l = Math.hypot(ux, uy);
     const u: Vec2 = [ux / l, uy / l];
-    return { geometry, line1, line2, mirror3: { kind: 'line', q: [u[0] * size, u[1] * size], n: [-u[0], -u[1]] } };
+    return {
+      geometry,
+      line1,
+      line2,
+      mirror3: { kind: 'line', q: [u[0] * size, u[1] * size], n: [-u[0], -u[1]] },
+    };
   }
   const kappa = geometry === 'hyperbolic' ? 1 : -1;
   const R = Math.sqrt(kappa / (ux * ux + uy * uy - 1));

@@ -25,5 +25,8 @@ export const rotate = (a: Vec2, t: number): Vec2 => {
   const s = Math.sin(t);
   return [c * a[0] - s * a[1], s * a[0] + c * a[1]];
 };
-export const lerp = (a: Vec2, b: Vec2, t: number): Vec2 => [a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t];
+export const lerp = (a: Vec2, b: Vec2, t: number): Vec2 => [
+  a[0] + (b[0] - a[0]) * t,
+  a[1] + (b[1] - a[1]) * t,
+];
 export const nearlyEqual = (a: Vec2, b: Vec2, eps = 1e-9): boolean => dist(a, b) <= eps;

@@ -43,30 +43,9 @@ export function analyzeGraph(doc: GraphDoc, registry: NodeRegistry): Analysis {
       return;
     }
     edgeIds.add(edge.id);
-    const src = nodes.get(edge.from.node);
-    const dst = nodes.get(edge.to.node);
-    if (!src) return void diagnostics.push(diag('danglingEdge', { path: `${path}.from.node` }, 'source', edge.from.node));
-    if (!dst) return void diagnostics.push(diag('danglingEdge', { path: `${path}.to.node` }, 'target', edge.to.node));
-    if (edge.from.node === edge.to.node) {
-      return void diagnostics.push(diag('selfEdge', { path, nodeId: edge.to.node }, edge.to.node));
-    }
-    if (!src.def || !dst.def) return; // placeholder nodes: the edge is kept in the document, unused
-    const out = src.def.outputs[edge.from.port];
-    const inp = dst.def.inputs[edge.to.port];
-    if (!out) {
-      return void diagnostics.push(
-        diag('unknownPort', { path: `${path}.from.port`, nodeId: src.node.id }, 'source', edge.from.port, src.node.id),
-      );
-    }
-    if (!inp) {
-      return void diagnostics.push(
-        diag('unknownPort', { path: `${path}.to.port`, nodeId: dst.node.id }, 'target', edge.to.port, dst.node.id),
-      );
-    }
-    if (!canConnect(out.type, inp.type)) {
-      return void diagnostics.push(diag('typeMismatch', { path, nodeId: dst.node.id, port: edge.to.port }, out.type, inp.type));
-    }
-    good.push(edge);
+    const problem = checkEdge(edge, path, nodes);
+    if (problem) diagnostics.push(problem);
+    else if (problem === null) good.push(edge);
   });
 
   const incoming = new Map<string, Map<string, GraphEdge[]>>();
@@ -81,7 +60,9 @@ export function analyzeGraph(doc: GraphDoc, registry: NodeRegistry): Analysis {
     const { def } = nodes.get(nodeId)!;
     for (const [port, list] of byPort) {
       if (list.length > 1 && !PORT_TYPE_INFO[def!.inputs[port].type].many) {
-        diagnostics.push(diag('multipleEdges', { nodeId, port, path: `edges[${doc.edges.indexOf(list[1])}]` }, port));
+        diagnostics.push(
+          diag('multipleEdges', { nodeId, port, path: `edges[${doc.edges.indexOf(list[1])}]` }, port),
+        );
         byPort.set(port, [list[0]]);
       }
     }
@@ -89,11 +70,53 @@ export function analyzeGraph(doc: GraphDoc, registry: NodeRegistry): Analysis {
 
   const topo = topologicalOrder(
     [...nodes.keys()],
-    [...incoming.values()].flatMap((m) => [...m.values()].flat()).map((e) => ({ from: e.from.node, to: e.to.node })),
+    [...incoming.values()]
+      .flatMap((m) => [...m.values()].flat())
+      .map((e) => ({ from: e.from.node, to: e.to.node })),
   );
   for (const cycle of topo.cycles) {
     const text = cycle.join(' → ');
-    for (const id of new Set(cycle)) diagnostics.push(diag('cycle', { nodeId: id, path: `nodes[${nodes.get(id)!.index}]` }, text));
+    for (const id of new Set(cycle))
+      diagnostics.push(diag('cycle', { nodeId: id, path: `nodes[${nodes.get(id)!.index}]` }, text));
   }
   return { nodes, incoming, order: topo.order, blocked: topo.blocked, diagnostics };
+}
+
+/**
+ * An edge's problem, null when it is usable, or undefined when it touches a placeholder node
+ * (kept in the document, unused by evaluation, not reported twice).
+ */
+function checkEdge(
+  edge: GraphEdge,
+  path: string,
+  nodes: ReadonlyMap<string, { node: GraphNode; def: NodeDef | undefined }>,
+): Diagnostic | null | undefined {
+  const src = nodes.get(edge.from.node);
+  const dst = nodes.get(edge.to.node);
+  if (!src) return diag('danglingEdge', { path: `${path}.from.node` }, 'source', edge.from.node);
+  if (!dst) return diag('danglingEdge', { path: `${path}.to.node` }, 'target', edge.to.node);
+  if (edge.from.node === edge.to.node) return diag('selfEdge', { path, nodeId: edge.to.node }, edge.to.node);
+  if (!src.def || !dst.def) return undefined;
+  const out = src.def.outputs[edge.from.port];
+  const inp = dst.def.inputs[edge.to.port];
+  if (!out)
+    return diag(
+      'unknownPort',
+      { path: `${path}.from.port`, nodeId: src.node.id },
+      'source',
+      edge.from.port,
+      src.node.id,
+    );
+  if (!inp)
+    return diag(
+      'unknownPort',
+      { path: `${path}.to.port`, nodeId: dst.node.id },
+      'target',
+      edge.to.port,
+      dst.node.id,
+    );
+  if (!canConnect(out.type, inp.type)) {
+    return diag('typeMismatch', { path, nodeId: dst.node.id, port: edge.to.port }, out.type, inp.type);
+  }
+  return null;
 }

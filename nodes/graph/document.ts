@@ -56,5 +56,12 @@ export type PortRef = z.infer<typeof portRefSchema>;
 export const DEFAULT_VIEW = { center: [0, 0] as [number, number], scale: 4 };
 
 export function emptyDocument(title = 'Untitled'): GraphDoc {
-  return { format: FORMAT, version: DOC_VERSION, meta: { title }, nodes: [], edges: [], view: { ...DEFAULT_VIEW } };
+  return {
+    format: FORMAT,
+    version: DOC_VERSION,
+    meta: { title },
+    nodes: [],
+    edges: [],
+    view: { ...DEFAULT_VIEW },
+  };
 }

@@ -47,7 +47,11 @@ export function allFinite(value: unknown, depth = 0): boolean {
   return Object.values(value).every((v) => allFinite(v, depth + 1));
 }
 
-export function evaluateGraph(doc: GraphDoc, registry: NodeRegistry, options: EvaluateOptions = {}): Evaluation {
+export function evaluateGraph(
+  doc: GraphDoc,
+  registry: NodeRegistry,
+  options: EvaluateOptions = {},
+): Evaluation {
   const analysis = analyzeGraph(doc, registry);
   const results = new Map<string, NodeEvaluation>();
   const overlays: OverlayItem[] = [];
@@ -153,7 +157,10 @@ function evaluateNode(
   try {
     outcome = def.evaluate(ctx);
   } catch (e) {
-    return { diagnostics: [...diagnostics, diag('nodeThrew', { nodeId }, (e as Error)?.message ?? String(e))], ctx };
+    return {
+      diagnostics: [...diagnostics, diag('nodeThrew', { nodeId }, (e as Error)?.message ?? String(e))],
+      ctx,
+    };
   }
   diagnostics.push(...(outcome.diagnostics ?? []).map((d) => ({ ...d, nodeId })));
   const readout = outcome.readout;

@@ -33,22 +33,35 @@ export function loadDocument(
 ): LoadResult {
   if (typeof value !== 'object' || value === null || Array.isArray(value)) {
     const got = Array.isArray(value) ? 'an array' : value === null ? 'null' : typeof value;
-    return { ok: false, diagnostics: [diag('schema', { path: '(document)' }, `expected a JSON object, got ${got}`)] };
+    return {
+      ok: false,
+      diagnostics: [diag('schema', { path: '(document)' }, `expected a JSON object, got ${got}`)],
+    };
   }
   const raw = value as Record<string, unknown>;
   if (raw.format !== FORMAT) {
-    return { ok: false, diagnostics: [diag('wrongFormat', { path: 'format' }, JSON.stringify(raw.format) ?? 'missing')] };
+    return {
+      ok: false,
+      diagnostics: [diag('wrongFormat', { path: 'format' }, JSON.stringify(raw.format) ?? 'missing')],
+    };
   }
   if (Array.isArray(raw.nodes) && raw.nodes.length > LIMITS.maxNodes) {
-    return { ok: false, diagnostics: [diag('tooManyNodes', { path: 'nodes' }, raw.nodes.length, LIMITS.maxNodes)] };
+    return {
+      ok: false,
+      diagnostics: [diag('tooManyNodes', { path: 'nodes' }, raw.nodes.length, LIMITS.maxNodes)],
+    };
   }
   let migrated: ReturnType<typeof migrateDocument>;
   try {
     migrated = migrateDocument(raw, migrations, target);
   } catch (e) {
-    return { ok: false, diagnostics: [diag('schema', { path: 'version' }, `migration failed: ${(e as Error).message}`)] };
+    return {
+      ok: false,
+      diagnostics: [diag('schema', { path: 'version' }, `migration failed: ${(e as Error).message}`)],
+    };
   }
-  if (!migrated.ok) return { ok: false, diagnostics: [diag('schema', { path: 'version' }, migrated.message)] };
+  if (!migrated.ok)
+    return { ok: false, diagnostics: [diag('schema', { path: 'version' }, migrated.message)] };
   const parsed = docSchema.safeParse(migrated.doc);
   if (!parsed.success) {
     const diagnostics = parsed.error.issues.slice(0, MAX_REPORTED).map((issue) => {
@@ -56,7 +69,13 @@ export function loadDocument(
       return diag('schema', { path }, `${path}: ${issue.message}`);
     });
     if (parsed.error.issues.length > MAX_REPORTED) {
-      diagnostics.push(diag('schema', { path: '(document)' }, `…and ${parsed.error.issues.length - MAX_REPORTED} more problems`));
+      diagnostics.push(
+        diag(
+          'schema',
+          { path: '(document)' },
+          `…and ${parsed.error.issues.length - MAX_REPORTED} more problems`,
+        ),
+      );
     }
     return { ok: false, diagnostics };
   }

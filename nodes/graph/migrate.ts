@@ -20,10 +20,16 @@ export function migrateDocument(
 ): MigrateResult {
   const from = doc.version;
   if (typeof from !== 'number' || !Number.isInteger(from) || from < 1) {
-    return { ok: false, message: `version: expected a positive integer, got ${JSON.stringify(from) ?? 'nothing'}` };
+    return {
+      ok: false,
+      message: `version: expected a positive integer, got ${JSON.stringify(from) ?? 'nothing'}`,
+    };
   }
   if (from > target) {
-    return { ok: false, message: `version: document version ${from} is newer than this Kleinflow understands (${target})` };
+    return {
+      ok: false,
+      message: `version: document version ${from} is newer than this Kleinflow understands (${target})`,
+    };
   }
   let current = doc;
   for (let v = from; v < target; v++) {

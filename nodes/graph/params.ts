@@ -16,7 +16,10 @@ export interface ResolvedParams {
 }
 
 /** Range/integer check shared by inline values, wired values and number params. */
-export function checkNumber(spec: { min?: number; max?: number; integer?: boolean }, v: number): string | null {
+export function checkNumber(
+  spec: { min?: number; max?: number; integer?: boolean },
+  v: number,
+): string | null {
   if (!Number.isFinite(v)) return `expected a finite number, got ${v}`;
   if (spec.integer && !Number.isInteger(v)) return `expected an integer, got ${v}`;
   if (spec.min !== undefined && v < spec.min) return `expected a number ≥ ${spec.min}, got ${v}`;
@@ -44,11 +47,15 @@ function parseInput(spec: InputSpec, raw: unknown): { value?: unknown; problem?:
 function parseParam(spec: ParamSpec, raw: unknown): { value?: unknown; problem?: string } {
   switch (spec.kind) {
     case 'boolean':
-      return typeof raw === 'boolean' ? { value: raw } : { problem: `expected true or false, got ${describe(raw)}` };
+      return typeof raw === 'boolean'
+        ? { value: raw }
+        : { problem: `expected true or false, got ${describe(raw)}` };
     case 'enum':
       return typeof raw === 'string' && spec.options.includes(raw)
         ? { value: raw }
-        : { problem: `expected one of ${spec.options.map((o) => `"${o}"`).join(', ')}, got ${describe(raw)}` };
+        : {
+            problem: `expected one of ${spec.options.map((o) => `"${o}"`).join(', ')}, got ${describe(raw)}`,
+          };
     case 'number': {
       if (typeof raw !== 'number') return { problem: `expected a number, got ${describe(raw)}` };
       const problem = checkNumber(spec, raw);
@@ -56,7 +63,9 @@ function parseParam(spec: ParamSpec, raw: unknown): { value?: unknown; problem?:
     }
     case 'color': {
       const parsed = hexColor.safeParse(raw);
-      return parsed.success ? { value: parsed.data } : { problem: `expected a colour like "#ff8800", got ${describe(raw)}` };
+      return parsed.success
+        ? { value: parsed.data }
+        : { problem: `expected a colour like "#ff8800", got ${describe(raw)}` };
     }
     case 'string':
       return typeof raw === 'string' && raw.length <= 10_000
@@ -80,7 +89,12 @@ export function resolveParams(
   const diagnostics: Diagnostic[] = [];
   const problem = (name: string, text: string) =>
     diagnostics.push(
-      diag('badParam', { nodeId: node.id, port: name, path: formatPath([...path, 'params', name]) }, name, text),
+      diag(
+        'badParam',
+        { nodeId: node.id, port: name, path: formatPath([...path, 'params', name]) },
+        name,
+        text,
+      ),
     );
 
   for (const [name, spec] of Object.entries(def.inputs)) {
@@ -100,7 +114,12 @@ export function resolveParams(
   for (const name of Object.keys(node.params)) {
     if (!Object.hasOwn(def.inputs, name) && !Object.hasOwn(def.params, name)) {
       diagnostics.push({
-        ...diag('badParam', { nodeId: node.id, path: formatPath([...path, 'params', name]) }, name, `"${def.type}" has no parameter "${name}" (kept, ignored)`),
+        ...diag(
+          'badParam',
+          { nodeId: node.id, path: formatPath([...path, 'params', name]) },
+          name,
+          `"${def.type}" has no parameter "${name}" (kept, ignored)`,
+        ),
         severity: 'warning',
       });
     }

@@ -13,7 +13,10 @@ export interface TopoResult {
 
 const byId = (a: string, b: string) => (a < b ? -1 : a > b ? 1 : 0);
 
-export function topologicalOrder(ids: readonly string[], edges: readonly { from: string; to: string }[]): TopoResult {
+export function topologicalOrder(
+  ids: readonly string[],
+  edges: readonly { from: string; to: string }[],
+): TopoResult {
   const succ = new Map<string, string[]>();
   const indeg = new Map<string, number>();
   for (const id of ids) {

@@ -104,6 +104,18 @@ export const DIAGNOSTICS = table({
     severity: 'error',
     text: (port: string) => `output "${port}" is not a finite number (NaN or ∞)`,
   },
+  noIntersection: {
+    code: 'KF307',
+    severity: 'warning',
+    text: (detail: string) => `${detail}: the intersection outputs have no value`,
+  },
+  noPortValue: {
+    code: 'KF308',
+    severity: 'info',
+    text: (port: string, node: string, output: string) =>
+      `input "${port}" gets no value: node "${node}" has no "${output}" output in its current set-up`,
+  },
+  nodeVersion: { code: 'KF309', severity: 'error', text: (detail: string) => detail },
   tooManyElements: {
     code: 'KF401',
     severity: 'error',
@@ -116,8 +128,19 @@ export const DIAGNOSTICS = table({
     severity: 'error',
     text: (detail: string) => `shader failed to compile: ${detail}`,
   },
+  uniformBudget: {
+    code: 'KF404',
+    severity: 'warning',
+    text: (rows: number, max: number) =>
+      `the scene needs ${rows} uniform vectors, more than the ${max} every WebGL2 GPU offers: its values are built into the shader instead (editing them recompiles it)`,
+  },
   importProblem: { code: 'KF501', severity: 'error', text: (detail: string) => detail },
   importNote: { code: 'KF502', severity: 'warning', text: (detail: string) => detail },
+  migrated: {
+    code: 'KF503',
+    severity: 'info',
+    text: (from: number, to: number) => `document upgraded from format version ${from} to ${to}`,
+  },
 });
 
 export type DiagnosticKey = keyof typeof DIAGNOSTICS;

@@ -59,7 +59,74 @@ export interface LoxodromicElement extends ElementBase {
   readonly b: DiskRegion;
 }
 
-export type SceneElement = InversionElement | ReflectionElement | MobiusElement | LoxodromicElement;
+/**
+ * Möbius map from a det-1 matrix (math.md "Möbius from a matrix"), complex entries as [re, im]:
+ * inside I(g) (`forward`, centre −d/c) apply g(z) = (az + b)/(cz + d); else inside I(g⁻¹)
+ * (`backward`, centre a/c) apply g⁻¹(z) = (dz − b)/(−cz + a). Both radii are 1/|c|.
+ */
+export interface MobiusMatrixElement extends ElementBase {
+  readonly kind: 'mobius-matrix';
+  readonly a: Vec2;
+  readonly b: Vec2;
+  readonly c: Vec2;
+  readonly d: Vec2;
+  readonly forward: DiskRegion;
+  readonly backward: DiskRegion;
+}
+
+/** A strip across the unit direction n: h = (p−q)·n, tile 0 ≤ h < period (closed-form kinds). */
+export interface StripData {
+  readonly q: Vec2;
+  readonly n: Vec2;
+  readonly period: number;
+}
+
+/** Translation by period·n, folded in closed form: p ← p − ⌊h/D⌋·D·n. */
+export interface TranslationElement extends ElementBase, StripData {
+  readonly kind: 'translation';
+}
+
+/** The reflections in the parallel lines h = 0 and h = period, folded in closed form. */
+export interface ParallelMirrorsElement extends ElementBase, StripData {
+  readonly kind: 'parallel-mirrors';
+}
+
+/** Glide: translate by period·n and reflect in the axis through q along n, in closed form. */
+export interface GlideReflectionElement extends ElementBase, StripData {
+  readonly kind: 'glide-reflection';
+}
+
+/** Rotation by 2π/order about c; tile = the wedge from unit direction b1 counter-clockwise. */
+export interface RotationElement extends ElementBase {
+  readonly kind: 'rotation';
+  readonly c: Vec2;
+  readonly b1: Vec2;
+  readonly order: number;
+}
+
+/**
+ * Spiral similarity g(p) = c + (r2/r1)² R_2φ (p − c) (φ = `angle`, radians; 0 < r1 < r2); tile =
+ * the annulus r1 ≤ |p − c| < r2²/r1, folded in closed form.
+ */
+export interface SpiralSimilarityElement extends ElementBase {
+  readonly kind: 'spiral-similarity';
+  readonly c: Vec2;
+  readonly r1: number;
+  readonly r2: number;
+  readonly angle: number;
+}
+
+export type SceneElement =
+  | InversionElement
+  | ReflectionElement
+  | MobiusElement
+  | LoxodromicElement
+  | MobiusMatrixElement
+  | TranslationElement
+  | ParallelMirrorsElement
+  | GlideReflectionElement
+  | RotationElement
+  | SpiralSimilarityElement;
 export type ElementKind = SceneElement['kind'];
 
 /** How a point is coloured from its IIS result. */
@@ -143,6 +210,17 @@ export const LIMITS = {
   maxSamples: 256,
   maxNodes: 5_000,
   defaultMaxIterations: 100,
+  /**
+   * vec4 uniform rows a generated fragment shader may declare: WebGL2 guarantees 224
+   * (MAX_FRAGMENT_UNIFORM_VECTORS); 16 stay free for what ANGLE and drivers add internally.
+   */
+  maxUniformVectors: 208,
+  /** Largest width or height of an exported image (CLI render, PNG export), in pixels. */
+  maxImageSide: 16_384,
+  /** Share links: the longest `#g=` fragment accepted (characters of base64url). */
+  shareFragmentMaxChars: 512 * 1024,
+  /** Share links: the most bytes a fragment may inflate to (stops a zip bomb early). */
+  shareInflatedMaxBytes: 4 * 1024 * 1024,
 } as const;
 
 /**

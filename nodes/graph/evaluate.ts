@@ -16,6 +16,7 @@ import {
 } from '../core/scene.ts';
 import { type Analysis, analyzeGraph } from './analyze.ts';
 import type { GraphDoc } from './document.ts';
+import { migrateNodeParams } from './migrate.ts';
 import { checkNumber, resolveParams } from './params.ts';
 
 export interface NodeEvaluation {
@@ -65,7 +66,13 @@ export function evaluateGraph(
       results.set(id, { diagnostics: [] }); // placeholder: reported by analyze
       continue;
     }
-    const result = evaluateNode(def, node.id, index, node.params, analysis, results, time);
+    const migrated = migrateNodeParams(def, node.params, node.version);
+    if (!migrated.ok) {
+      const problem = diag('nodeVersion', { nodeId: id, path: `nodes[${index}].version` }, migrated.message);
+      results.set(id, { diagnostics: [problem] });
+      continue;
+    }
+    const result = evaluateNode(def, node.id, index, migrated.params, analysis, results, time);
     results.set(id, result);
     if (!result.outputs || !result.ctx) continue;
     if (result.render) renders.push({ id, settings: result.render });
@@ -90,7 +97,7 @@ export function evaluateGraph(
   const renderNodes = [...analysis.nodes.values()].filter((n) => n.node.type === 'render');
   if (renderNodes.length === 0 && doc.nodes.length > 0) diagnostics.push(diag('noRender', {}));
   if (renderNodes.length > 1) {
-    const used = renders[0]?.id ?? renderNodes[0].node.id;
+    const used = renders[0]?.id ?? renderNodes.map((n) => n.node.id).sort()[0];
     diagnostics.push(diag('manyRenders', { nodeId: used }, used));
   }
   const chosen = renders[0];
@@ -132,7 +139,15 @@ function evaluateNode(
     }
     const values: unknown[] = [];
     for (const edge of orderBySource(edges, analysis)) {
-      const value = results.get(edge.from.node)?.outputs?.[edge.from.port];
+      const source = results.get(edge.from.node);
+      const value = source?.outputs?.[edge.from.port];
+      if (value === undefined && source?.outputs) {
+        // The source worked but leaves this output empty in its current set-up (a kaleidoscope's
+        // disk when it is not hyperbolic): an optional input is then simply unconnected.
+        const d = diag('noPortValue', { nodeId, port }, port, edge.from.node, edge.from.port);
+        diagnostics.push(spec.optional ? d : { ...d, severity: 'error' });
+        continue;
+      }
       if (value === undefined) {
         // One broken source of a many-input is a warning (the others still draw); otherwise an error.
         const d = diag('upstreamMissing', { nodeId, port }, port, edge.from.node);

@@ -5,7 +5,7 @@
  */
 import { type Diagnostic, diag } from '../core/diagnostics.ts';
 import { LIMITS } from '../core/scene.ts';
-import { docSchema, FORMAT, type GraphDoc } from './document.ts';
+import { DOC_VERSION, docSchema, FORMAT, type GraphDoc } from './document.ts';
 import { formatPath } from './json-path.ts';
 import { DOC_MIGRATIONS, type DocMigration, migrateDocument } from './migrate.ts';
 
@@ -50,6 +50,11 @@ export function loadDocument(
       ok: false,
       diagnostics: [diag('tooManyNodes', { path: 'nodes' }, raw.nodes.length, LIMITS.maxNodes)],
     };
+  }
+  // A newer document gets its own code (KF104), so the UI can say "update Kleinflow", not "broken file".
+  const newest = target ?? DOC_VERSION;
+  if (typeof raw.version === 'number' && Number.isInteger(raw.version) && raw.version > newest) {
+    return { ok: false, diagnostics: [diag('futureVersion', { path: 'version' }, raw.version, newest)] };
   }
   let migrated: ReturnType<typeof migrateDocument>;
   try {

@@ -30,5 +30,7 @@ export const circleNode = defineNode({
     ];
   },
   drag: (handle, to, ctx) =>
-    handle === 'center' ? { center: [...to] } : { radius: Math.max(1e-6, dist(ctx.inputs.center as Vec2, to)) },
+    handle === 'center'
+      ? { center: [...to] }
+      : { radius: Math.max(1e-6, dist(ctx.inputs.center as Vec2, to)) },
 });

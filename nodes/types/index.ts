@@ -1,16 +1,30 @@
 /** The registry: every node type, in palette order. Adding a node type = one file + one line here. */
 import { createRegistry } from '../core/registry.ts';
+import { circularMotionNode, sineNode, timeNode } from './animation.ts';
 import { circleNode } from './circle.ts';
 import { circle3ptNode } from './circle-3pt.ts';
+import { circleCenterPointNode } from './circle-center-point.ts';
+import { colorNode, cosinePaletteNode } from './colour.ts';
+import { hyperbolicPolygonNode } from './hyperbolic-polygon.ts';
+import { intersectCirclesNode, intersectLineCircleNode, intersectLinesNode } from './intersections.ts';
 import { inversionNode } from './inversion.ts';
+import { kMirrorNode } from './k-mirror.ts';
 import { kaleidoscopeNode } from './kaleidoscope.ts';
 import { lineNode } from './line.ts';
+import { parallelLineNode, perpendicularBisectorNode, perpendicularLineNode } from './line-constructions.ts';
 import { loxodromicNode } from './loxodromic.ts';
+import { angleNode, distanceNode } from './measures.ts';
 import { mobiusNode } from './mobius.ts';
+import { mobiusMatrixNode } from './mobius-matrix.ts';
 import { numberNode } from './number.ts';
 import { pointNode } from './point.ts';
+import { invertPointNode, midpointNode, reflectPointNode } from './point-constructions.ts';
+import { rectangleKaleidoscopeNode } from './rectangle-kaleidoscope.ts';
 import { reflectionNode } from './reflection.ts';
 import { renderNode } from './render.ts';
+import { rotationNode } from './rotation.ts';
+import { spiralSimilarityNode } from './spiral-similarity.ts';
+import { glideReflectionNode, parallelMirrorsNode, translationNode } from './strip.ts';
 import { tileNode } from './tile.ts';
 
 export const NODE_TYPES = [
@@ -19,12 +33,38 @@ export const NODE_TYPES = [
   lineNode,
   circleNode,
   circle3ptNode,
+  circleCenterPointNode,
+  midpointNode,
+  intersectLinesNode,
+  intersectLineCircleNode,
+  intersectCirclesNode,
+  perpendicularBisectorNode,
+  parallelLineNode,
+  perpendicularLineNode,
+  invertPointNode,
+  reflectPointNode,
+  angleNode,
+  distanceNode,
   inversionNode,
   reflectionNode,
   mobiusNode,
   loxodromicNode,
+  mobiusMatrixNode,
+  translationNode,
+  glideReflectionNode,
+  rotationNode,
+  spiralSimilarityNode,
   kaleidoscopeNode,
+  kMirrorNode,
+  rectangleKaleidoscopeNode,
+  parallelMirrorsNode,
+  hyperbolicPolygonNode,
   tileNode,
+  colorNode,
+  cosinePaletteNode,
+  timeNode,
+  sineNode,
+  circularMotionNode,
   renderNode,
 ] as const;
 

@@ -29,11 +29,22 @@ export const kaleidoscopeNode = defineNode({
     p: order('p', 2, false),
     q: order('q', 3, true),
     r: order('r', 7, true),
-    size: { type: 'number', label: 'size', default: 1, min: 0, step: 0.01, doc: 'Euclidean case: distance of mirror 3 from the origin' },
+    size: {
+      type: 'number',
+      label: 'size',
+      default: 1,
+      min: 0,
+      step: 0.01,
+      doc: 'Euclidean case: distance of mirror 3 from the origin',
+    },
   },
   outputs: {
     elements: { type: 'element', label: 'mirrors' },
-    boundary: { type: 'circle', label: 'disk', doc: 'the unit circle (the Poincaré disk) in the hyperbolic case' },
+    boundary: {
+      type: 'circle',
+      label: 'disk',
+      doc: 'the unit circle (the Poincaré disk) in the hyperbolic case',
+    },
   },
   params: {},
   evaluate: ({ inputs, nodeId }) => {
@@ -41,9 +52,15 @@ export const kaleidoscopeNode = defineNode({
     const size = inputs.size as number;
     if (q === 1 || r === 1) return fail('q and r must be 2 or more (or 0 for ∞)');
     const geometry = triangleGeometry(p, q, r);
-    if (geometry === 'euclidean' && !(size > 0)) return fail('size must be positive for a Euclidean kaleidoscope');
+    if (geometry === 'euclidean' && !(size > 0))
+      return fail('size must be positive for a Euclidean kaleidoscope');
     const m = triangleMirrors(p, q, r, size);
-    const refl = (l: { q: Vec2; n: Vec2 }): ReflectionElement => ({ kind: 'reflection', nodeId, q: l.q, n: l.n });
+    const refl = (l: { q: Vec2; n: Vec2 }): ReflectionElement => ({
+      kind: 'reflection',
+      nodeId,
+      q: l.q,
+      n: l.n,
+    });
     const third: SceneElement =
       m.mirror3.kind === 'line'
         ? refl(m.mirror3)

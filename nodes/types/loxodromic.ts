@@ -36,14 +36,25 @@ export const loxodromicNode = defineNode({
     const dir = normalize(sub(c2.c, c1.c));
     const ln = perp(dir);
     const off = (P[0] - c1.c[0]) * ln[0] + (P[1] - c1.c[1]) * ln[1];
-    if (Math.abs(off) <= tol) return fail('P lies on the line through the centres: the map is only hyperbolic there');
+    if (Math.abs(off) <= tol)
+      return fail('P lies on the line through the centres: the map is only hyperbolic there');
     const p1 = invertPoint(c1, P);
     const p2 = invertPoint(c2, P);
     const c3 = p1 && p2 ? circleThrough3(P, p1, p2) : null;
     if (!c3) return fail('the control point gives no circle orthogonal to C1 and C2: move P');
     const regions = twoCircleRegions(c1, c2);
     if (!regions.ok) return fail(regions.reason);
-    const element: LoxodromicElement = { kind: 'loxodromic', nodeId, c1, c2, c3, lq: c1.c, ln, a: regions.a, b: regions.b };
+    const element: LoxodromicElement = {
+      kind: 'loxodromic',
+      nodeId,
+      c1,
+      c2,
+      c3,
+      lq: c1.c,
+      ln,
+      a: regions.a,
+      b: regions.b,
+    };
     return { outputs: { element: [element], orthogonal: c3 }, readout: 'loxodromic' };
   },
   overlay: (ctx, out) => [

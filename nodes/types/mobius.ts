@@ -39,7 +39,13 @@ export const mobiusNode = defineNode({
       readout: describeMobius(cls),
       diagnostics: regions.tiling
         ? []
-        : [diag('notATiling', {}, 'the circles cross at an angle that is not π/n: the images overlap and do not tile')],
+        : [
+            diag(
+              'notATiling',
+              {},
+              'the circles cross at an angle that is not π/n: the images overlap and do not tile',
+            ),
+          ],
     };
   },
   overlay: (_ctx, out) => [{ shape: 'circle', circle: out.image as Circle }],

@@ -13,7 +13,9 @@ export const reflectionNode = defineNode({
   doc: "Reflection in a line: a straight mirror that keeps the line's left side (flip keeps the right).",
   inputs: { line: { type: 'line', label: 'line', default: { a: [0, 0], b: [1, 0] } } },
   outputs: { element: { type: 'element', label: 'element' } },
-  params: { flip: { kind: 'boolean', default: false, label: 'flip', doc: 'keep the other side of the line' } },
+  params: {
+    flip: { kind: 'boolean', default: false, label: 'flip', doc: 'keep the other side of the line' },
+  },
   evaluate: ({ inputs, params, nodeId }) => {
     const line = inputs.line as Line;
     if (isDegenerateLine(line)) return fail('the line has no direction (its two points coincide)');

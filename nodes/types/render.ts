@@ -14,7 +14,12 @@ export const renderNode = defineNode({
   inputs: {
     elements: elementInput('elements'),
     tile: { type: 'tile', label: 'tile', optional: true },
-    clip: { type: 'circle', label: 'clip', optional: true, doc: 'only draw inside this disk (e.g. the Poincaré disk)' },
+    clip: {
+      type: 'circle',
+      label: 'clip',
+      optional: true,
+      doc: 'only draw inside this disk (e.g. the Poincaré disk)',
+    },
   },
   outputs: {},
   params: {
@@ -26,16 +31,31 @@ export const renderNode = defineNode({
       integer: true,
       label: 'max iterations',
     },
-    samples: { kind: 'number', default: 4, min: 1, max: LIMITS.maxSamples, integer: true, label: 'samples / pixel' },
+    samples: {
+      kind: 'number',
+      default: 4,
+      min: 1,
+      max: LIMITS.maxSamples,
+      integer: true,
+      label: 'samples / pixel',
+    },
   },
   evaluate: ({ inputs, params }) => {
     let elements = inputs.elements as readonly SceneElement[];
     const diagnostics = [];
     if (elements.length > LIMITS.maxElements) {
-      diagnostics.push(diag('tooManyElements', { port: 'elements' }, elements.length, LIMITS.maxElements));
+      // A warning: the first maxElements still draw (an error would withhold the whole render).
+      diagnostics.push({
+        ...diag('tooManyElements', { port: 'elements' }, elements.length, LIMITS.maxElements),
+        severity: 'warning' as const,
+      });
       elements = elements.slice(0, LIMITS.maxElements);
     }
-    if (elements.length === 0) diagnostics.push({ ...diag('clamped', { port: 'elements' }, 'no elements wired in: the whole plane is the tile'), severity: 'info' as const });
+    if (elements.length === 0)
+      diagnostics.push({
+        ...diag('clamped', { port: 'elements' }, 'no elements wired in: the whole plane is the tile'),
+        severity: 'info' as const,
+      });
     return {
       outputs: {},
       diagnostics,

@@ -9,9 +9,18 @@ export const fail = (reason: string, readout?: string): EvalOutcome => ({
 });
 
 /** The overlay toggle every geometric node has. */
-export const VISIBLE: ParamSpec = { kind: 'boolean', default: true, label: 'show', doc: 'draw it over the render' };
+export const VISIBLE: ParamSpec = {
+  kind: 'boolean',
+  default: true,
+  label: 'show',
+  doc: 'draw it over the render',
+};
 
-export const pointInput = (label: string, x: number, y: number): InputSpec => ({ type: 'point', label, default: [x, y] });
+export const pointInput = (label: string, x: number, y: number): InputSpec => ({
+  type: 'point',
+  label,
+  default: [x, y],
+});
 export const elementInput = (label: string): InputSpec => ({ type: 'element', label, optional: true });
 
 /** Formats a number for read-outs: up to 4 significant decimals, no trailing zeros. */

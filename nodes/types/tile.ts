@@ -1,7 +1,7 @@
 import { defineNode } from '../core/define-node.ts';
+import { toHex } from '../core/port-values.ts';
 import { type Coloring, DEFAULT_TILE, type TileSpec } from '../core/scene.ts';
 import type { Color } from '../core/values.ts';
-import { toHex } from '../core/port-values.ts';
 
 const d = DEFAULT_TILE;
 const cos = d.coloring as Extract<Coloring, { mode: 'cosine' }>;
@@ -28,12 +28,28 @@ export const tileNode = defineNode({
   outputs: { tile: { type: 'tile', label: 'tile' } },
   params: {
     mode: { kind: 'enum', default: 'cosine', options: ['cosine', 'depth-hsv', 'parity'], label: 'colouring' },
-    step: { kind: 'number', default: cos.step, min: 0, max: 1, step: 0.005, label: 'palette step', doc: 'palette t = depth × step' },
+    step: {
+      kind: 'number',
+      default: cos.step,
+      min: 0,
+      max: 1,
+      step: 0.005,
+      label: 'palette step',
+      doc: 'palette t = depth × step',
+    },
     hueOffset: { kind: 'number', default: 0.01, min: 0, max: 1, step: 0.01, label: 'hue start' },
     hueStep: { kind: 'number', default: 0.05, min: -1, max: 1, step: 0.005, label: 'hue per step' },
     saturation: { kind: 'number', default: 1, min: 0, max: 1, step: 0.01, label: 'saturation' },
     value: { kind: 'number', default: 1, min: 0, max: 1, step: 0.01, label: 'value' },
-    edgeWidth: { kind: 'number', default: d.edgeWidth, min: 0, max: 20, step: 0.5, label: 'edge px', doc: 'tile edges of constant pixel width; 0 = none' },
+    edgeWidth: {
+      kind: 'number',
+      default: d.edgeWidth,
+      min: 0,
+      max: 20,
+      step: 0.5,
+      label: 'edge px',
+      doc: 'tile edges of constant pixel width; 0 = none',
+    },
   },
   evaluate: ({ inputs, params, nodeId }) => {
     const c = (k: string) => inputs[k] as Color;

@@ -27,5 +27,6 @@ export const loxodromic: ElementKind<LoxodromicElement> = {
     return true;
   },
   inside: (e, x, y) => inRegion(e.a, x, y) || inRegion(e.b, x, y),
-  boundaryDistance: (e, x, y) => Math.min(regionBoundaryDistance(e.a, x, y), regionBoundaryDistance(e.b, x, y)),
+  boundaryDistance: (e, x, y) =>
+    Math.min(regionBoundaryDistance(e.a, x, y), regionBoundaryDistance(e.b, x, y)),
 };

@@ -22,5 +22,6 @@ export const mobius: ElementKind<MobiusElement> = {
     return true;
   },
   inside: (e, x, y) => inRegion(e.a, x, y) || inRegion(e.b, x, y),
-  boundaryDistance: (e, x, y) => Math.min(regionBoundaryDistance(e.a, x, y), regionBoundaryDistance(e.b, x, y)),
+  boundaryDistance: (e, x, y) =>
+    Math.min(regionBoundaryDistance(e.a, x, y), regionBoundaryDistance(e.b, x, y)),
 };

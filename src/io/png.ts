@@ -113,6 +113,50 @@ export function readPngText(bytes: Uint8Array): Record<string, string> | null {
   return out;
 }
 
+export const isPng = (bytes: Uint8Array): boolean =>
+  bytes.length >= 8 && SIGNATURE.every((b, i) => bytes[i] === b);
+
+/** The keyword of a tEXt/iTXt/zTXt chunk's data (Latin-1 up to the first 0 byte). */
+const chunkKeyword = (data: Uint8Array): string => {
+  const z = data.indexOf(0);
+  return z > 0 ? String.fromCharCode(...data.subarray(0, z)) : '';
+};
+
+/**
+ * A copy of a PNG with iTXt entries set: text chunks with the same keywords are removed and the
+ * new entries go just before the first IDAT. Other chunks are copied byte for byte. Throws when
+ * `bytes` is not a PNG (callers check with isPng first).
+ */
+export function setPngText(bytes: Uint8Array, text: Readonly<Record<string, string>>): Uint8Array {
+  if (!isPng(bytes)) throw new Error('not a PNG file');
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const parts: Uint8Array[] = [bytes.subarray(0, 8)];
+  const fresh = Object.entries(text).map(([k, t]) => itxt(k, t));
+  let inserted = false;
+  let o = 8;
+  while (o + 12 <= bytes.length) {
+    const len = view.getUint32(o);
+    const type = String.fromCharCode(...bytes.subarray(o + 4, o + 8));
+    const end = Math.min(bytes.length, o + 12 + len);
+    const isText = type === 'tEXt' || type === 'iTXt' || type === 'zTXt';
+    if ((type === 'IDAT' || type === 'IEND') && !inserted) {
+      parts.push(...fresh);
+      inserted = true;
+    }
+    if (!(isText && Object.hasOwn(text, chunkKeyword(bytes.subarray(o + 8, end))))) parts.push(bytes.subarray(o, end));
+    if (type === 'IEND') break;
+    o += 12 + len;
+  }
+  if (!inserted) parts.push(...fresh);
+  const out = new Uint8Array(parts.reduce((n, p) => n + p.length, 0));
+  let p = 0;
+  for (const part of parts) {
+    out.set(part, p);
+    p += part.length;
+  }
+  return out;
+}
+
 /** Decodes an 8-bit RGBA, non-interlaced PNG as written by encodePng (filter types 0–4). For tests. */
 export function decodePng(bytes: Uint8Array): PngImage {
   const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);

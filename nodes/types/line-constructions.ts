@@ -1,0 +1,72 @@
+/** Lines constructed from points and lines: perpendicular bisector, parallel and perpendicular. */
+import { defineNode } from '../core/define-node.ts';
+import type { Line, Vec2 } from '../core/values.ts';
+import { isDegenerateLine } from '../geometry/circle.ts';
+import { lerp, nearlyEqual, perp, sub } from '../geometry/vec.ts';
+import { lineAlong, pointHandles } from './construction-shared.ts';
+import { fail, pointInput, VISIBLE } from './shared.ts';
+
+const lineOut = { line: { type: 'line' as const, label: 'line' } };
+const lineOverlay = (_ctx: unknown, out: Readonly<Record<string, unknown>>) => [
+  { shape: 'line' as const, line: out.line as Line },
+];
+const lineIn = { type: 'line' as const, label: 'line', default: { a: [-1, -0.5], b: [1, 0.5] } };
+const noLine = 'the line has no direction (its two points coincide)';
+
+export const perpendicularBisectorNode = defineNode({
+  type: 'perpendicular-bisector',
+  version: 1,
+  label: 'Perpendicular bisector',
+  category: 'Construction',
+  color: '#4ecdc4',
+  doc: 'The line of points equally far from a and b (through their midpoint, at right angles; it keeps the side of a).',
+  inputs: { a: pointInput('a', -1, 0), b: pointInput('b', 1, 0) },
+  outputs: lineOut,
+  params: { visible: VISIBLE },
+  evaluate: ({ inputs }) => {
+    const [a, b] = [inputs.a as Vec2, inputs.b as Vec2];
+    if (nearlyEqual(a, b, 1e-12 * Math.max(1, Math.hypot(...a))))
+      return fail('a and b coincide: every line through them bisects');
+    return { outputs: { line: lineAlong(lerp(a, b, 0.5), perp(sub(b, a))) } };
+  },
+  overlay: lineOverlay,
+  ...pointHandles('a', 'b'),
+});
+
+export const parallelLineNode = defineNode({
+  type: 'parallel-line',
+  version: 1,
+  label: 'Parallel line',
+  category: 'Construction',
+  color: '#4ecdc4',
+  doc: 'The line through a point parallel to a line (same direction).',
+  inputs: { line: lineIn, point: pointInput('through', 0, 1) },
+  outputs: lineOut,
+  params: { visible: VISIBLE },
+  evaluate: ({ inputs }) => {
+    const line = inputs.line as Line;
+    if (isDegenerateLine(line)) return fail(noLine);
+    return { outputs: { line: lineAlong(inputs.point as Vec2, sub(line.b, line.a)) } };
+  },
+  overlay: lineOverlay,
+  ...pointHandles('point'),
+});
+
+export const perpendicularLineNode = defineNode({
+  type: 'perpendicular-line',
+  version: 1,
+  label: 'Perpendicular line',
+  category: 'Construction',
+  color: '#4ecdc4',
+  doc: "The line through a point at right angles to a line (its direction is the line's turned by +90°).",
+  inputs: { line: lineIn, point: pointInput('through', 0, 1) },
+  outputs: lineOut,
+  params: { visible: VISIBLE },
+  evaluate: ({ inputs }) => {
+    const line = inputs.line as Line;
+    if (isDegenerateLine(line)) return fail(noLine);
+    return { outputs: { line: lineAlong(inputs.point as Vec2, perp(sub(line.b, line.a))) } };
+  },
+  overlay: lineOverlay,
+  ...pointHandles('point'),
+});

@@ -1,0 +1,27 @@
+/**
+ * Parallel mirrors h = 0 and h = D (closed form, math.md): the group they generate folds the
+ * plane onto the strip 0 ≤ h < D. With k = ⌊h/D⌋ and r = h − kD ∈ [0, D): an even k is a
+ * translation by −kD (h ← r), an odd k adds one reflection (h ← D − r). depth += |k|, the number
+ * of mirrors crossed; scale 1.
+ */
+import type { ParallelMirrorsElement } from '../../nodes/core/scene.ts';
+import type { ElementKind } from './element-kind.ts';
+import { stripBoundaryDistance, stripHeight } from './strip-fold.ts';
+
+export const parallelMirrors: ElementKind<ParallelMirrorsElement> = {
+  kind: 'parallel-mirrors',
+  step(e, st) {
+    const D = e.period;
+    const h = stripHeight(e, st.x, st.y);
+    const k = Math.floor(h / D);
+    if (k === 0) return false;
+    const r = h - k * D;
+    const target = k % 2 === 0 ? r : D - r;
+    st.x += (target - h) * e.n[0];
+    st.y += (target - h) * e.n[1];
+    st.depth += Math.abs(k);
+    return true;
+  },
+  inside: (e, x, y) => Math.floor(stripHeight(e, x, y) / e.period) !== 0,
+  boundaryDistance: stripBoundaryDistance,
+};

@@ -1,0 +1,79 @@
+/**
+ * GLSL twin of rotation.ts. Packing (2 vec4): d0 = (c.x, c.y, b1.x, b1.y), d1 = (order k, 0, 0, 0).
+ * atan/cos/sin are approximate on GPUs (errors ~1e-4 in SwiftShader): the wedge edges are where
+ * the GPU and the CPU may disagree, which boundaryDistance reports.
+ */
+import type { RotationElement } from '../../nodes/core/scene.ts';
+import type { GlslElementTwin } from '../glsl/element-twin.ts';
+import { floatLiteral } from '../glsl/literal.ts';
+import { glslFunction } from '../glsl/snippet.ts';
+
+const TWO_PI = floatLiteral(2 * Math.PI);
+
+/** m = ⌊arg·k/2π⌋ ∈ [0, k − 1], arg ∈ [0, 2π) from b1; the centre (atan2(0, 0) = 0) gives 0. */
+export const wedgeIndexGlsl = glslFunction(
+  'wedgeIndex',
+  `
+float wedgeIndex(vec4 d0, vec4 d1, float dx, float dy) {
+  float cr = d0.z * dy - d0.w * dx;
+  float dt = d0.z * dx + d0.w * dy;
+  if (cr == 0.0 && dt == 0.0) return 0.0;
+  float arg = atan(cr, dt);
+  if (arg < 0.0) arg += ${TWO_PI};
+  return min(d1.x - 1.0, floor((arg * d1.x) / ${TWO_PI}));
+}`,
+);
+
+/** Distance from (dx, dy) to the ray from the origin in unit direction u. */
+export const rayDistanceGlsl = glslFunction(
+  'rayDistance',
+  `
+float rayDistance(float dx, float dy, float ux, float uy) {
+  float t = dx * ux + dy * uy;
+  return t <= 0.0 ? length(vec2(dx, dy)) : abs(ux * dy - uy * dx);
+}`,
+);
+
+export const rotationGlsl: GlslElementTwin<RotationElement> = {
+  kind: 'rotation',
+  vec4s: 2,
+  pack: (e) => [e.c[0], e.c[1], e.b1[0], e.b1[1], e.order, 0, 0, 0],
+  step: glslFunction(
+    'rotationStep',
+    `
+bool rotationStep(inout vec2 p, inout float s, inout int depth, vec4 d0, vec4 d1) {
+  float dx = p.x - d0.x;
+  float dy = p.y - d0.y;
+  float m = wedgeIndex(d0, d1, dx, dy);
+  if (m <= 0.0) return false;
+  float t = (-${TWO_PI} * m) / d1.x;
+  float c = cos(t);
+  float sn = sin(t);
+  p = vec2(d0.x + c * dx - sn * dy, d0.y + sn * dx + c * dy);
+  depth += int(m);
+  return true;
+}`,
+    [wedgeIndexGlsl],
+  ),
+  inside: glslFunction(
+    'rotationInside',
+    `
+bool rotationInside(vec2 p, vec4 d0, vec4 d1) {
+  return wedgeIndex(d0, d1, p.x - d0.x, p.y - d0.y) > 0.0;
+}`,
+    [wedgeIndexGlsl],
+  ),
+  boundaryDistance: glslFunction(
+    'rotationBoundaryDistance',
+    `
+float rotationBoundaryDistance(vec2 p, vec4 d0, vec4 d1) {
+  float dx = p.x - d0.x;
+  float dy = p.y - d0.y;
+  float t = ${TWO_PI} / d1.x;
+  float vx = cos(t) * d0.z - sin(t) * d0.w;
+  float vy = sin(t) * d0.z + cos(t) * d0.w;
+  return min(rayDistance(dx, dy, d0.z, d0.w), rayDistance(dx, dy, vx, vy));
+}`,
+    [rayDistanceGlsl],
+  ),
+};

@@ -1,0 +1,77 @@
+/**
+ * GLSL twin of spiral-similarity.ts. Packing (2 vec4): d0 = (c.x, c.y, r1, r2),
+ * d1 = (angle φ, 0, 0, 0). log/pow/cos/sin are approximate on GPUs: the annulus circles are where
+ * the GPU and the CPU may disagree, which boundaryDistance reports.
+ */
+import type { SpiralSimilarityElement } from '../../nodes/core/scene.ts';
+import type { GlslElementTwin } from '../glsl/element-twin.ts';
+import { glslFunction } from '../glsl/snippet.ts';
+import { foldCountGlsl } from './strip-fold.glsl.ts';
+
+/** λ = (r2/r1)². */
+export const spiralRatioGlsl = glslFunction(
+  'spiralRatio',
+  `
+float spiralRatio(vec4 d0) {
+  float q = d0.w / d0.z;
+  return q * q;
+}`,
+);
+
+/** m = ⌊log(ρ/r1)/log λ⌋; the centre (ρ = 0, log 0 = −∞ on the CPU) is never in the tile. */
+export const annulusIndexGlsl = glslFunction(
+  'annulusIndex',
+  `
+float annulusIndex(vec4 d0, float rho) {
+  if (rho == 0.0) return -1.0e9;
+  return floor(log(rho / d0.z) / log(spiralRatio(d0)));
+}`,
+  [spiralRatioGlsl],
+);
+
+export const spiralSimilarityGlsl: GlslElementTwin<SpiralSimilarityElement> = {
+  kind: 'spiral-similarity',
+  vec4s: 2,
+  pack: (e) => [e.c[0], e.c[1], e.r1, e.r2, e.angle, 0, 0, 0],
+  step: glslFunction(
+    'spiralSimilarityStep',
+    `
+bool spiralSimilarityStep(inout vec2 p, inout float s, inout int depth, vec4 d0, vec4 d1) {
+  float dx = p.x - d0.x;
+  float dy = p.y - d0.y;
+  float rho = length(vec2(dx, dy));
+  if (rho == 0.0) {
+    depth += 1; // the fixed point: one step at a time until maxIterations (not escaped)
+    return true;
+  }
+  float m = annulusIndex(d0, rho);
+  if (m == 0.0) return false;
+  float k = pow(spiralRatio(d0), -m);
+  float t = -2.0 * m * d1.x;
+  float c = cos(t) * k;
+  float sn = sin(t) * k;
+  p = vec2(d0.x + c * dx - sn * dy, d0.y + sn * dx + c * dy);
+  s *= k;
+  depth += foldCount(m);
+  return true;
+}`,
+    [annulusIndexGlsl, spiralRatioGlsl, foldCountGlsl],
+  ),
+  inside: glslFunction(
+    'spiralSimilarityInside',
+    `
+bool spiralSimilarityInside(vec2 p, vec4 d0, vec4 d1) {
+  return annulusIndex(d0, length(p - d0.xy)) != 0.0;
+}`,
+    [annulusIndexGlsl],
+  ),
+  boundaryDistance: glslFunction(
+    'spiralSimilarityBoundaryDistance',
+    `
+float spiralSimilarityBoundaryDistance(vec2 p, vec4 d0, vec4 d1) {
+  float rho = length(p - d0.xy);
+  return min(abs(rho - d0.z), abs(rho - d0.z * spiralRatio(d0)));
+}`,
+    [spiralRatioGlsl],
+  ),
+};

@@ -1,0 +1,120 @@
+/**
+ * GLSL twin of shader-gen/colour.ts, function by function (same names, same formulas). The fixed
+ * functions are constants; depthColour and shade read the tile's values (uniforms or literals)
+ * and are specialised to its colouring mode and to edges on/off.
+ */
+import type { Coloring, TileSpec } from '../../nodes/core/scene.ts';
+import { floatLiteral } from './literal.ts';
+import { type GlslFunction, glslFunction } from './snippet.ts';
+import type { SceneValues } from './values.ts';
+
+export const srgbToLinearGlsl = glslFunction(
+  'srgbToLinear',
+  `
+float srgbToLinear(float c) {
+  return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
+}`,
+);
+
+export const linearToSrgbGlsl = glslFunction(
+  'linearToSrgb',
+  `
+float linearToSrgb(float c) {
+  return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
+}`,
+);
+
+export const toLinearGlsl = glslFunction(
+  'toLinear',
+  `
+vec3 toLinear(vec3 c) {
+  return vec3(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b));
+}`,
+  [srgbToLinearGlsl],
+);
+
+/** The encoding direction for a whole colour (the Shadertoy version outputs sRGB itself). */
+export const toSrgbGlsl = glslFunction(
+  'toSrgb',
+  `
+vec3 toSrgb(vec3 c) {
+  return vec3(linearToSrgb(c.r), linearToSrgb(c.g), linearToSrgb(c.b));
+}`,
+  [linearToSrgbGlsl],
+);
+
+export const hsvToRgbGlsl = glslFunction(
+  'hsvToRgb',
+  `
+float hsvChannel(float h, float s, float v, float k) {
+  return v * (1.0 - s * (1.0 - clamp(abs(fract(h + k) * 6.0 - 3.0) - 1.0, 0.0, 1.0)));
+}
+vec3 hsvToRgb(float h, float s, float v) {
+  return vec3(hsvChannel(h, s, v, 0.0), hsvChannel(h, s, v, ${floatLiteral(2 / 3)}), hsvChannel(h, s, v, ${floatLiteral(1 / 3)}));
+}`,
+);
+
+export const cosinePaletteGlsl = glslFunction(
+  'cosinePalette',
+  `
+vec3 cosinePalette(vec3 a, vec3 b, vec3 c, vec3 d, float t) {
+  return clamp(a + b * cos(${floatLiteral(2 * Math.PI)} * (c * t + d)), 0.0, 1.0);
+}`,
+);
+
+/** `vec3 depthColour(int depth)`: the sRGB colour of an escaped point, for the tile's mode. */
+export function depthColourGlsl(coloring: Coloring, v: SceneValues): GlslFunction {
+  const head = 'vec3 depthColour(int depth) {';
+  switch (coloring.mode) {
+    case 'depth-hsv': {
+      const hsv = v.vec('u_hsv', [coloring.hueOffset, coloring.hueStep, coloring.saturation, coloring.value]);
+      return glslFunction(
+        'depthColour',
+        `${head}\n  vec4 hsv = ${hsv};\n  return hsvToRgb(hsv.x + hsv.y * float(depth), hsv.z, hsv.w);\n}`,
+        [hsvToRgbGlsl],
+      );
+    }
+    case 'cosine': {
+      const [a, b, c, d] = (['a', 'b', 'c', 'd'] as const).map((k) =>
+        v.vec(`u_palette${k.toUpperCase()}`, coloring[k]),
+      );
+      const step = v.float('u_paletteStep', coloring.step);
+      return glslFunction(
+        'depthColour',
+        `${head}\n  return cosinePalette(${a}, ${b}, ${c}, ${d}, float(depth) * ${step});\n}`,
+        [cosinePaletteGlsl],
+      );
+    }
+    case 'parity': {
+      const even = v.vec('u_even', coloring.even);
+      const odd = v.vec('u_odd', coloring.odd);
+      return glslFunction('depthColour', `${head}\n  return depth % 2 == 0 ? ${even} : ${odd};\n}`);
+    }
+  }
+}
+
+/**
+ * `vec3 shade(bool clipped, bool escaped, int depth, float edgePixels)`: linear colour of one
+ * sample; edges with a 1-pixel antialiased falloff, t = clamp(edgePixels − width/2 + 0.5, 0, 1).
+ */
+export function shadeGlsl(tile: TileSpec, v: SceneValues): GlslFunction {
+  const background = v.vec('u_background', tile.background);
+  const limit = v.vec('u_limitColor', tile.limitColor);
+  const lines = [
+    'vec3 shade(bool clipped, bool escaped, int depth, float edgePixels) {',
+    `  if (clipped) return toLinear(${background});`,
+    `  if (!escaped) return toLinear(${limit});`,
+    '  vec3 base = toLinear(depthColour(depth));',
+  ];
+  if (tile.edgeWidth > 0) {
+    const width = v.float('u_edgeWidth', tile.edgeWidth);
+    const colour = v.vec('u_edgeColor', tile.edgeColor);
+    lines.push(
+      `  float t = clamp(edgePixels - ${width} / 2.0 + 0.5, 0.0, 1.0);`,
+      `  vec3 edge = toLinear(${colour});`,
+      '  return edge + (base - edge) * t;',
+    );
+  } else lines.push('  return base;');
+  lines.push('}');
+  return glslFunction('shade', lines.join('\n'), [toLinearGlsl, depthColourGlsl(tile.coloring, v)]);
+}

@@ -1,0 +1,131 @@
+/**
+ * Assembles the whole shader: header (version, precision, frame and scene uniforms), the functions
+ * the scene uses (each once), the IIS loop, and the entry point of the variant — `main` for WebGL2
+ * (colour or probe) or `mainImage` for Shadertoy.
+ */
+import type { Scene } from '../../nodes/core/scene.ts';
+import { toSrgbGlsl } from './colour.glsl.ts';
+import { elementFunctions, emitBoundaryDistance, emitRunIis, placeElements, shadeSampleGlsl } from './iis.glsl.ts';
+import { floatLiteral, intLiteral } from './literal.ts';
+import { collectFunctions, type GlslFunction } from './snippet.ts';
+import { SourceBuilder } from './source.ts';
+import { type UniformEntry, SceneValues, declaration } from './values.ts';
+import { pixelToWorldGlsl, sampleOffsetGlsl } from './view.glsl.ts';
+
+export type Variant = 'color' | 'probe';
+
+/** Uniforms the runtime sets per frame, declared in every WebGL variant (names fixed). */
+export const FRAME_UNIFORMS = [
+  { name: 'u_resolution', type: 'vec2', doc: 'full image size in pixels' },
+  { name: 'u_pixelOffset', type: 'vec2', doc: 'offset of this framebuffer within the full image (tiled export)' },
+  { name: 'u_view', type: 'vec3', doc: 'view centre x, y and scale (world height of the image)' },
+  { name: 'u_jitter', type: 'vec2', doc: 'sub-pixel sample offset in [0,1)² (view.ts sampleOffset)' },
+  { name: 'u_bgAlpha', type: 'float', doc: 'alpha of the background outside the clip disk (1; 0 for transparent export)' },
+] as const;
+
+/** Attribute-less full-screen triangle: vertices (−1,−1), (3,−1), (−1,3) from gl_VertexID. */
+export const VERTEX_SOURCE = `#version 300 es
+void main() {
+  vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+  gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
+}
+`;
+
+export interface EmittedShader {
+  readonly source: string;
+  readonly uniforms: UniformEntry[];
+  readonly lineMap: Record<number, string>;
+}
+
+/** The scene-dependent parts, with the uniforms they read registered in `v`. */
+function sceneParts(scene: Scene, v: SceneValues, withColour: boolean) {
+  const placed = placeElements(scene.elements, v);
+  const maxIter = v.int('u_maxIterations', scene.maxIterations);
+  const edges = withColour && scene.tile.edgeWidth > 0;
+  const shadeSample = withColour ? shadeSampleGlsl(scene, v) : null;
+  const lineMap: Record<number, string> = {};
+  scene.elements.forEach((e, i) => {
+    lineMap[i + 1] = e.nodeId;
+  });
+  /** Writes the functions, the loop and shadeSample (colour only) after the header. */
+  const emitBody = (out: SourceBuilder, extra: readonly GlslFunction[]) => {
+    const fns = [...elementFunctions(placed, edges), ...(shadeSample?.deps ?? []), ...extra];
+    for (const code of collectFunctions(fns)) out.push(code, '');
+    emitRunIis(out, placed, maxIter);
+    out.push('');
+    if (edges) {
+      emitBoundaryDistance(out, placed);
+      out.push('');
+    }
+    if (shadeSample) out.push(shadeSample.code, '');
+  };
+  return { emitBody, lineMap };
+}
+
+const HEADER = ['precision highp float;', 'precision highp int;'];
+
+export function fragmentShader(scene: Scene, variant: Variant, baked: boolean): EmittedShader {
+  const v = new SceneValues(baked);
+  const { emitBody, lineMap } = sceneParts(scene, v, variant === 'color');
+  const uniforms = v.entries();
+  const out = new SourceBuilder().push('#version 300 es', ...HEADER, '');
+  out.push('// Frame uniforms (set by the runtime).');
+  for (const u of FRAME_UNIFORMS) out.push(`uniform ${u.type} ${u.name}; // ${u.doc}`);
+  if (uniforms.length > 0) out.push('// Scene uniforms (values; changing them needs no recompile).');
+  for (const u of uniforms) out.push(declaration(u));
+  out.push(
+    variant === 'color'
+      ? 'out vec4 outColor; // linear RGB; alpha u_bgAlpha on the background'
+      : 'out vec4 outProbe; // (depth, final.x, final.y, escaped)',
+    '',
+  );
+  emitBody(out, [pixelToWorldGlsl]);
+  out.push(
+    'void main() {',
+    '  vec2 px = floor(gl_FragCoord.xy) + u_pixelOffset;',
+    '  vec2 w = pixelToWorld(u_view, u_resolution, px, u_jitter);',
+  );
+  if (variant === 'color') out.push('  outColor = shadeSample(w, u_view.z / u_resolution.y, u_bgAlpha);');
+  else {
+    out.push(
+      '  vec2 p = w;',
+      '  float s = 1.0;',
+      '  int depth = 0;',
+      '  bool escaped = runIis(p, s, depth);',
+      '  outProbe = vec4(float(depth), p, escaped ? 1.0 : 0.0);',
+    );
+  }
+  out.push('}');
+  return { source: out.toString(), uniforms, lineMap };
+}
+
+/**
+ * Shadertoy's `mainImage` (no #version, no uniforms: Shadertoy supplies iResolution): every value
+ * baked, the view of the graph, `samples` jittered samples per pixel averaged in linear light and
+ * encoded to sRGB. The image is a still: iTime is not used.
+ */
+export function shadertoyShader(scene: Scene): string {
+  const v = new SceneValues(true);
+  const { emitBody } = sceneParts(scene, v, true);
+  const [cx, cy] = scene.view.center;
+  const view = `vec3(${[cx, cy, scene.view.scale].map(floatLiteral).join(', ')})`;
+  const samples = intLiteral(Math.max(1, Math.round(scene.samples)));
+  const out = new SourceBuilder(false).push(
+    '// Kleinflow: an Iterated Inversion System, generated from a node graph. Paste into Shadertoy.',
+    '',
+  );
+  emitBody(out, [pixelToWorldGlsl, sampleOffsetGlsl, toSrgbGlsl]);
+  out.push(
+    'void mainImage(out vec4 fragColor, in vec2 fragCoord) {',
+    `  vec3 view = ${view};`,
+    '  vec2 px = floor(fragCoord);',
+    '  vec3 sum = vec3(0.0);',
+    `  for (int k = 0; k < ${samples}; ++k) {`,
+    '    vec2 w = pixelToWorld(view, iResolution.xy, px, sampleOffset(k));',
+    '    sum += shadeSample(w, view.z / iResolution.y, 1.0).rgb;',
+    '  }',
+    `  fragColor = vec4(toSrgb(sum / ${floatLiteral(Math.max(1, Math.round(scene.samples)))}), 1.0);`,
+    '}',
+  );
+  return out.toString();
+}

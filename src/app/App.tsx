@@ -1,0 +1,188 @@
+/**
+ * The app shell: top bar, graph editor | live render (resizable), status line. Owns the
+ * evaluation (memoised per document change), global shortcuts, files and export.
+ */
+import { ReactFlowProvider } from '@xyflow/react';
+import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
+import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import { emptyDocument, type GraphDoc } from '../../nodes/graph/document.ts';
+import { registry } from '../../nodes/types/index.ts';
+import { GraphEditor } from '../editor/GraphEditor.tsx';
+import { isTyping } from '../editor/typing.ts';
+import { createEvaluator } from '../state/evaluation.ts';
+import { useEditorState, useStore } from '../state/use-store.ts';
+import type { Viewport } from '../viewport/viewport.ts';
+import { useAnimationClock } from './animation.ts';
+import { Banner, type Message } from './Banner.tsx';
+import { EXAMPLES } from './examples.ts';
+import { exportGlsl, exportPng } from './export.ts';
+import { documentJson, download, fileStem, readDocumentFile } from './files.ts';
+import { HelpDialog } from './HelpDialog.tsx';
+import { type RenderInfo, RenderPane } from './RenderPane.tsx';
+import { SplitPane } from './SplitPane.tsx';
+import { StatusBar } from './StatusBar.tsx';
+import { TopBar } from './TopBar.tsx';
+import { useAutosave } from './use-autosave.ts';
+
+interface Props {
+  readonly initialMessages: readonly Message[];
+}
+
+export function App({ initialMessages }: Props) {
+  const store = useStore();
+  const doc = useEditorState((s) => s.doc);
+  const time = useEditorState((s) => s.time);
+  const playing = useEditorState((s) => s.playing);
+  const history = useEditorState((s) => s.history);
+  const evaluate = useMemo(() => createEvaluator(registry), []);
+  const evaluation = useMemo(() => evaluate(doc, time), [evaluate, doc, time]);
+  const [hovered, setHovered] = useState<string | null>(null);
+  const [renderDiagnostics, setRenderDiagnostics] = useState<Diagnostic[]>([]);
+  const [renderInfo, setRenderInfo] = useState<RenderInfo | null>(null);
+  const [messages, setMessages] = useState<readonly Message[]>(initialMessages);
+  const [help, setHelp] = useState(false);
+  const viewport = useRef<Viewport | null>(null);
+  const fileInput = useRef<HTMLInputElement>(null);
+  useAnimationClock(store, playing);
+  const say = useCallback((m: Message) => setMessages((ms) => [...ms.filter((x) => x.id !== m.id), m]), []);
+  const saveState = useAutosave(store, say);
+
+  const load = useCallback(
+    (next: GraphDoc, label: string) => {
+      store.dispatch({ type: 'load-document', doc: next }, label);
+      store.setSelection([]);
+      setRenderDiagnostics([]);
+    },
+    [store],
+  );
+
+  const save = useCallback(() => {
+    const current = store.getState().doc;
+    download(`${fileStem(current)}.kleinflow.json`, documentJson(current), 'application/json');
+  }, [store]);
+  const open = useCallback(() => fileInput.current?.click(), []);
+  const onFile = async (file: File) => {
+    const result = await readDocumentFile(file);
+    if (result.ok) {
+      load(result.doc, `open ${file.name}`);
+      setMessages((ms) => ms.filter((m) => m.id !== 'open'));
+    } else {
+      say({
+        id: 'open',
+        kind: 'error',
+        text: `“${file.name}” could not be opened:`,
+        details: result.diagnostics.map((d) => `${d.code} ${d.message}`),
+      });
+    }
+  };
+
+  const runExport = async (width: number, height: number) => {
+    const v = viewport.current;
+    if (!v) return say({ id: 'export', kind: 'error', text: 'Export needs the WebGL2 renderer, which is not running.' });
+    say({ id: 'export', kind: 'info', text: `Rendering ${width}×${height}…` });
+    try {
+      const current = store.getState().doc;
+      await exportPng(v, current, evaluate(current, store.getState().time).scene, { width, height }, (f) =>
+        say({ id: 'export', kind: 'info', text: `Rendering ${width}×${height}… ${Math.round(f * 100)}%` }),
+      );
+      setMessages((ms) => ms.filter((m) => m.id !== 'export'));
+    } catch (e) {
+      say({ id: 'export', kind: 'error', text: `Export failed: ${(e as Error).message}` });
+    }
+  };
+  const exportItems = [
+    { label: 'PNG 1920 × 1080', hint: 'graph embedded', onSelect: () => void runExport(1920, 1080) },
+    { label: 'PNG 3840 × 2160', hint: '4K', onSelect: () => void runExport(3840, 2160) },
+    { label: 'PNG 2048 × 2048', hint: 'square', onSelect: () => void runExport(2048, 2048) },
+    { label: 'GLSL fragment shader', hint: 'WebGL2, values baked', onSelect: () => exportGlsl(doc, evaluation.scene, 'webgl2') },
+    { label: 'GLSL for Shadertoy', onSelect: () => exportGlsl(doc, evaluation.scene, 'shadertoy') },
+  ];
+
+  useEffect(() => {
+    const onKey = (e: KeyboardEvent) => {
+      if (isTyping(e.target)) return;
+      const mod = e.ctrlKey || e.metaKey;
+      const key = e.key.toLowerCase();
+      if (mod && key === 'z' && !e.shiftKey) store.undo();
+      else if (mod && (key === 'y' || (key === 'z' && e.shiftKey))) store.redo();
+      else if (mod && key === 's') save();
+      else if (mod && key === 'o') open();
+      else if (!mod && e.key === '?') setHelp(true);
+      else return;
+      e.preventDefault();
+    };
+    window.addEventListener('keydown', onKey);
+    return () => window.removeEventListener('keydown', onKey);
+  }, [store, save, open]);
+
+  const onViewport = useCallback((v: Viewport | null) => {
+    viewport.current = v;
+  }, []);
+  const allDiagnostics = useMemo(() => [...evaluation.diagnostics, ...renderDiagnostics], [evaluation, renderDiagnostics]);
+
+  return (
+    <div className="kf-app">
+      <TopBar
+        title={doc.meta.title ?? ''}
+        examples={EXAMPLES}
+        undoLabel={history.past.at(-1)?.label ?? null}
+        redoLabel={history.future[0]?.label ?? null}
+        playing={playing}
+        exportItems={exportItems}
+        onTitle={(title) => store.dispatch({ type: 'set-meta', meta: { ...doc.meta, title } }, 'rename document')}
+        onExample={(ex) => load(ex.doc, `open ${ex.title}`)}
+        onNew={() => load(emptyDocument(), 'new document')}
+        onOpen={open}
+        onSave={save}
+        onUndo={store.undo}
+        onRedo={store.redo}
+        onPlay={() => store.setPlaying(!playing)}
+        onHelp={() => setHelp(true)}
+      />
+      <Banner messages={messages} onDismiss={(id) => setMessages((ms) => ms.filter((m) => m.id !== id))} />
+      <SplitPane
+        left={
+          <ReactFlowProvider>
+            <GraphEditor
+              evaluation={evaluation}
+              extraDiagnostics={renderDiagnostics}
+              hoveredNodeId={hovered}
+              onHoverNode={setHovered}
+            />
+          </ReactFlowProvider>
+        }
+        right={
+          <RenderPane
+            evaluation={evaluation}
+            hoveredNodeId={hovered}
+            onHoverNode={setHovered}
+            onDiagnostics={setRenderDiagnostics}
+            onFrame={setRenderInfo}
+            onViewport={onViewport}
+          />
+        }
+      />
+      <StatusBar
+        diagnostics={allDiagnostics}
+        render={renderInfo}
+        nodes={doc.nodes.length}
+        edges={doc.edges.length}
+        saveState={saveState}
+        onSelectNode={(id) => store.setSelection([id])}
+      />
+      <input
+        ref={fileInput}
+        type="file"
+        accept=".json,.kleinflow.json,application/json,image/png"
+        hidden
+        data-testid="open-file"
+        onChange={(e) => {
+          const file = e.target.files?.[0];
+          e.target.value = '';
+          if (file) void onFile(file);
+        }}
+      />
+      {help && <HelpDialog onClose={() => setHelp(false)} />}
+    </div>
+  );
+}

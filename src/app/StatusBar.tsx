@@ -1,0 +1,70 @@
+/** The status line: diagnostics (click for the list), render progress and autosave state. */
+import { useState } from 'react';
+import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import type { RenderInfo } from './RenderPane.tsx';
+
+interface Props {
+  readonly diagnostics: readonly Diagnostic[];
+  readonly render: RenderInfo | null;
+  readonly nodes: number;
+  readonly edges: number;
+  readonly saveState: string;
+  onSelectNode(id: string): void;
+}
+
+export function StatusBar({ diagnostics, render, nodes, edges, saveState, onSelectNode }: Props) {
+  const [open, setOpen] = useState(false);
+  const errors = diagnostics.filter((d) => d.severity === 'error').length;
+  const warnings = diagnostics.filter((d) => d.severity === 'warning').length;
+  const done = render && render.samples >= render.target;
+  return (
+    <footer className="kf-status" aria-label="Status">
+      <button
+        type="button"
+        className={`kf-status__diag${errors ? ' kf-status__diag--error' : warnings ? ' kf-status__diag--warning' : ''}`}
+        onClick={() => setOpen(!open)}
+        aria-expanded={open}
+        data-testid="diagnostics-count"
+      >
+        {errors === 0 && warnings === 0 ? '✓ No problems' : `${errors} error${errors === 1 ? '' : 's'} · ${warnings} warning${warnings === 1 ? '' : 's'}`}
+      </button>
+      <span className="kf-status__sep" />
+      <span data-testid="render-progress" className="kf-status__item">
+        {render ? (
+          <>
+            {done ? 'Rendered' : 'Rendering'} {render.samples}/{render.target} samples
+            {render.ms > 0 && <span className="kf-status__muted"> · {render.ms.toFixed(0)} ms/frame</span>}
+          </>
+        ) : (
+          'Renderer starting…'
+        )}
+      </span>
+      <span className="kf-status__spacer" />
+      <span className="kf-status__item kf-status__muted">
+        {nodes} nodes · {edges} wires
+      </span>
+      <span className="kf-status__sep" />
+      <span className="kf-status__item kf-status__muted" data-testid="save-state">
+        {saveState}
+      </span>
+      {open && diagnostics.length > 0 && (
+        <ul className="kf-status__list" aria-label="Diagnostics">
+          {diagnostics.map((d, i) => (
+            // biome-ignore lint/suspicious/noArrayIndexKey: diagnostics may repeat; their order is stable
+            <li key={i} className={`kf-diag kf-diag--${d.severity}`}>
+              <code>{d.code}</code>{' '}
+              {d.nodeId ? (
+                <button type="button" className="kf-link" onClick={() => onSelectNode(d.nodeId!)}>
+                  {d.nodeId}
+                </button>
+              ) : (
+                d.path && <code>{d.path}</code>
+              )}{' '}
+              {d.message}
+            </li>
+          ))}
+        </ul>
+      )}
+    </footer>
+  );
+}

@@ -1,0 +1,98 @@
+/** The top bar: document title, examples, file actions, export, undo/redo, play and help. */
+import { useEffect, useState } from 'react';
+import type { Example } from './examples.ts';
+import { Menu, type MenuItem } from './Menu.tsx';
+
+interface Props {
+  readonly title: string;
+  readonly examples: readonly Example[];
+  readonly undoLabel: string | null;
+  readonly redoLabel: string | null;
+  readonly playing: boolean;
+  readonly exportItems: readonly MenuItem[];
+  onTitle(title: string): void;
+  onExample(example: Example): void;
+  onNew(): void;
+  onOpen(): void;
+  onSave(): void;
+  onUndo(): void;
+  onRedo(): void;
+  onPlay(): void;
+  onHelp(): void;
+}
+
+export function TopBar(p: Props) {
+  const [title, setTitle] = useState(p.title);
+  useEffect(() => setTitle(p.title), [p.title]);
+  return (
+    <header className="kf-topbar">
+      <div className="kf-brand" aria-label="Kleinflow">
+        <svg viewBox="0 0 24 24" width="20" height="20" aria-hidden="true">
+          <circle cx="12" cy="12" r="9.5" fill="none" stroke="currentColor" strokeWidth="1.5" />
+          <circle cx="12" cy="7" r="3.2" fill="#e85d75" />
+          <circle cx="7.7" cy="14.5" r="3.2" fill="#5b8def" />
+          <circle cx="16.3" cy="14.5" r="3.2" fill="#f2c14e" />
+        </svg>
+        <span>Kleinflow</span>
+      </div>
+      <input
+        className="kf-title"
+        aria-label="Document title"
+        value={title}
+        onChange={(e) => setTitle(e.target.value)}
+        onBlur={() => title !== p.title && p.onTitle(title)}
+        onKeyDown={(e) => e.key === 'Enter' && (e.target as HTMLInputElement).blur()}
+      />
+      <nav className="kf-toolbar" aria-label="Document">
+        <Menu
+          label="Examples"
+          title="Open an example graph"
+          items={p.examples.map((ex) => ({ label: ex.title, onSelect: () => p.onExample(ex) }))}
+        />
+        <button type="button" className="kf-button" onClick={p.onNew} title="Start an empty graph">
+          New
+        </button>
+        <button type="button" className="kf-button" onClick={p.onOpen} title="Open a .kleinflow.json file or a Kleinflow PNG (Ctrl O)">
+          Open…
+        </button>
+        <button type="button" className="kf-button" onClick={p.onSave} title="Download the graph as .kleinflow.json (Ctrl S)">
+          Save
+        </button>
+        <Menu label="Export" title="Export a picture or the shader" items={p.exportItems} />
+        <span className="kf-toolbar__gap" />
+        <button
+          type="button"
+          className="kf-button kf-button--icon"
+          onClick={p.onUndo}
+          disabled={!p.undoLabel}
+          aria-label="Undo"
+          title={p.undoLabel ? `Undo ${p.undoLabel} (Ctrl Z)` : 'Nothing to undo'}
+        >
+          ↶
+        </button>
+        <button
+          type="button"
+          className="kf-button kf-button--icon"
+          onClick={p.onRedo}
+          disabled={!p.redoLabel}
+          aria-label="Redo"
+          title={p.redoLabel ? `Redo ${p.redoLabel} (Ctrl Y)` : 'Nothing to redo'}
+        >
+          ↷
+        </button>
+        <button
+          type="button"
+          className={`kf-button kf-button--icon${p.playing ? ' kf-button--active' : ''}`}
+          onClick={p.onPlay}
+          aria-label={p.playing ? 'Pause animation' : 'Play animation'}
+          title={p.playing ? 'Pause animation time' : 'Play animation time (nodes may read time)'}
+        >
+          {p.playing ? '❚❚' : '▶'}
+        </button>
+        <button type="button" className="kf-button kf-button--icon" onClick={p.onHelp} aria-label="Help" title="Help and shortcuts (?)">
+          ?
+        </button>
+      </nav>
+    </header>
+  );
+}

@@ -1,0 +1,29 @@
+/** The bundled examples (examples/*.kleinflow.json), by title, and the one the first run opens. */
+import type { GraphDoc } from '../../nodes/graph/document.ts';
+import { loadDocument } from '../../nodes/graph/load.ts';
+
+export interface Example {
+  readonly id: string;
+  readonly title: string;
+  readonly description: string;
+  readonly doc: GraphDoc;
+}
+
+const modules = import.meta.glob('../../examples/*.kleinflow.json', { eager: true, import: 'default' });
+
+/** Examples that load cleanly, sorted by title (a broken example file is skipped, never shown). */
+export const EXAMPLES: readonly Example[] = Object.entries(modules)
+  .flatMap(([path, json]) => {
+    const loaded = loadDocument(json);
+    if (!loaded.ok) return [];
+    const id = path.replace(/^.*\//, '').replace(/\.kleinflow\.json$/, '');
+    const { title, description } = loaded.doc.meta;
+    return [{ id, title: title ?? id, description: description ?? '', doc: loaded.doc }];
+  })
+  .sort((a, b) => a.title.localeCompare(b.title));
+
+export const DEFAULT_EXAMPLE_ID = 'hyperbolic-237';
+
+export function defaultExample(): Example | undefined {
+  return EXAMPLES.find((e) => e.id === DEFAULT_EXAMPLE_ID) ?? EXAMPLES[0];
+}

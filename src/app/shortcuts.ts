@@ -1,0 +1,47 @@
+/** The keyboard shortcuts: one table for the handlers' documentation and the Help dialog. */
+export interface Shortcut {
+  readonly keys: readonly string[];
+  readonly action: string;
+}
+
+export const SHORTCUTS: readonly { group: string; items: readonly Shortcut[] }[] = [
+  {
+    group: 'Graph',
+    items: [
+      { keys: ['Space', 'Ctrl K', 'Double-click'], action: 'Add a node (search palette)' },
+      { keys: ['Drag a wire onto empty canvas'], action: 'Add a node that fits, wired in' },
+      { keys: ['Shift drag'], action: 'Box-select' },
+      { keys: ['Ctrl click'], action: 'Add to the selection' },
+      { keys: ['Delete', 'Backspace'], action: 'Delete the selection' },
+      { keys: ['Ctrl C', 'Ctrl X', 'Ctrl V'], action: 'Copy, cut, paste nodes (works across tabs)' },
+      { keys: ['Ctrl D'], action: 'Duplicate the selection' },
+      { keys: ['Ctrl A'], action: 'Select all nodes' },
+    ],
+  },
+  {
+    group: 'Values',
+    items: [
+      { keys: ['Drag a field label'], action: 'Scrub a number (Shift: finer)' },
+      { keys: ['↑', '↓'], action: 'Step a number field' },
+      { keys: ['Enter', 'Esc'], action: 'Accept, cancel typing' },
+    ],
+  },
+  {
+    group: 'Render',
+    items: [
+      { keys: ['Drag'], action: 'Pan (or drag a handle of the construction)' },
+      { keys: ['Wheel', 'Pinch'], action: 'Zoom about the cursor' },
+      { keys: ['Shift drag handle'], action: 'Snap while dragging' },
+    ],
+  },
+  {
+    group: 'Document',
+    items: [
+      { keys: ['Ctrl Z'], action: 'Undo' },
+      { keys: ['Ctrl Y', 'Ctrl Shift Z'], action: 'Redo' },
+      { keys: ['Ctrl S'], action: 'Save as a .kleinflow.json file' },
+      { keys: ['Ctrl O'], action: 'Open a file (.json or a Kleinflow PNG)' },
+      { keys: ['?'], action: 'This help' },
+    ],
+  },
+];

@@ -1,0 +1,10 @@
+/**
+ * Every `kleinflow` sub-command, in the order `kleinflow help` lists them. Adding a command =
+ * one file in this folder + one line here.
+ */
+import type { CliCommand } from '../command.ts';
+import { checkCommand } from './check.ts';
+import { renderCommand } from './render.ts';
+import { sampleCommand } from './sample.ts';
+
+export const COMMANDS: readonly CliCommand[] = [renderCommand, sampleCommand, checkCommand];

@@ -1,0 +1,127 @@
+/**
+ * The one way every CLI command gets a graph: read the file (a .json document, or a PNG that
+ * Kleinflow exported with its graph embedded), load it (parse → migrate → validate), evaluate it
+ * into a Scene, and collect every diagnostic. File problems become one-line CliErrors.
+ */
+import type { Diagnostic, Severity } from '../../nodes/core/diagnostics.ts';
+import { hasErrors } from '../../nodes/core/diagnostics.ts';
+import type { Scene } from '../../nodes/core/scene.ts';
+import type { GraphDoc } from '../../nodes/graph/document.ts';
+import { type Evaluation, evaluateGraph } from '../../nodes/graph/evaluate.ts';
+import { registry } from '../../nodes/types/index.ts';
+import { openDocumentText, serializeDocument } from '../io/document-io.ts';
+import { readPngText } from '../io/png.ts';
+import { PNG_GRAPH_KEY } from '../io/png-graph.ts';
+import { CliError, type CliIo } from './command.ts';
+
+/** The iTXt keyword under which exported PNGs carry their graph JSON (its home: src/io/png-graph.ts). */
+export { PNG_GRAPH_KEY };
+
+export interface GraphLoad {
+  readonly path: string;
+  /** The document text as read (for embedding into exports). */
+  readonly text: string;
+  /** Absent when the file could not be loaded as a document (see diagnostics). */
+  readonly doc?: GraphDoc;
+  readonly evaluation?: Evaluation;
+  /** Load problems, or every diagnostic of the evaluation. */
+  readonly diagnostics: readonly Diagnostic[];
+}
+
+const FILE_ERRORS: Readonly<Record<string, string>> = {
+  ENOENT: 'no such file',
+  EISDIR: 'it is a directory',
+  EACCES: 'permission denied',
+  EPERM: 'permission denied',
+  ENOTDIR: 'a folder on the path is a file',
+  EMFILE: 'too many open files',
+};
+
+/** One readable line for a failed read or write of `path`. */
+export function fileErrorMessage(verb: 'read' | 'write', path: string, error: unknown): string {
+  const code = (error as { code?: string } | null)?.code;
+  const why = (code && FILE_ERRORS[code]) ?? (error instanceof Error ? error.message : String(error));
+  return `cannot ${verb} "${path}": ${why}`;
+}
+
+export async function readInput(io: CliIo, path: string): Promise<Uint8Array> {
+  try {
+    return await io.readFile(path);
+  } catch (e) {
+    throw new CliError(fileErrorMessage('read', path, e));
+  }
+}
+
+/** The document text inside the bytes: UTF-8 JSON, or the graph embedded in a Kleinflow PNG. */
+export function documentText(path: string, bytes: Uint8Array): string {
+  const png = readPngText(bytes);
+  if (png) {
+    const text = png[PNG_GRAPH_KEY];
+    if (text === undefined) throw new CliError(`"${path}" is a PNG without an embedded Kleinflow graph`);
+    return text;
+  }
+  try {
+    return new TextDecoder('utf-8', { fatal: true, ignoreBOM: false }).decode(bytes);
+  } catch {
+    throw new CliError(`"${path}" is not a text file (not valid UTF-8): expected a Kleinflow JSON document`);
+  }
+}
+
+export async function loadGraph(io: CliIo, path: string): Promise<GraphLoad> {
+  const read = documentText(path, await readInput(io, path));
+  // A Kleinflow document, or a Flower graph imported on the fly (its notes come first).
+  const opened = openDocumentText(read, registry);
+  if (!opened.ok) return { path, text: read, diagnostics: opened.diagnostics };
+  // Exports embed a Kleinflow document, never the Flower text it came from.
+  const text = opened.source === 'kleinflow' ? read : serializeDocument(opened.doc);
+  const evaluation = evaluateGraph(opened.doc, registry);
+  return {
+    path,
+    text,
+    doc: opened.doc,
+    evaluation,
+    diagnostics: [...opened.notes, ...evaluation.diagnostics],
+  };
+}
+
+/**
+ * One line per diagnostic: `error KF203 nodes[2].type (node "k"): unknown node type "foo"`.
+ * Where the diagnostic has no path, the node's place in the document stands in for it.
+ */
+export function formatDiagnostic(d: Diagnostic, doc?: GraphDoc): string {
+  const index = d.nodeId === undefined || !doc ? -1 : doc.nodes.findIndex((n) => n.id === d.nodeId);
+  const where = d.path ?? (index >= 0 ? `nodes[${index}]` : '');
+  const who: string[] = [];
+  if (d.nodeId !== undefined) who.push(`node "${d.nodeId}"`);
+  if (d.port !== undefined && !d.path) who.push(`port "${d.port}"`);
+  const location = [where, who.length ? `(${who.join(', ')})` : ''].filter(Boolean).join(' ') || '(document)';
+  // Schema messages already start with their path; do not say it twice.
+  const message = d.path && d.message.startsWith(`${d.path}: `) ? d.message.slice(d.path.length + 2) : d.message;
+  return `${d.severity} ${d.code} ${location}: ${message}`;
+}
+
+export const countBySeverity = (ds: readonly Diagnostic[]): Record<Severity, number> => ({
+  error: ds.filter((d) => d.severity === 'error').length,
+  warning: ds.filter((d) => d.severity === 'warning').length,
+  info: ds.filter((d) => d.severity === 'info').length,
+});
+
+/**
+ * For commands that need a picture (render, sample, glsl): loads the graph, prints its warnings
+ * to stderr, and throws when anything is an error (after printing every error), so a broken graph
+ * never produces a half-right output.
+ */
+export async function loadScene(io: CliIo, path: string): Promise<GraphLoad & { scene: Scene }> {
+  const load = await loadGraph(io, path);
+  for (const d of load.diagnostics) {
+    if (d.severity !== 'info') io.stderr.write(`${path}: ${formatDiagnostic(d, load.doc)}\n`);
+  }
+  if (!load.evaluation || hasErrors(load.diagnostics)) {
+    const n = countBySeverity(load.diagnostics).error;
+    throw new CliError(`"${path}" has ${n} error${n === 1 ? '' : 's'}; nothing was produced`);
+  }
+  if (load.evaluation.scene.renderNodeId === null) {
+    throw new CliError(`"${path}" has no render node: add one and wire elements into it`);
+  }
+  return { ...load, scene: load.evaluation.scene };
+}

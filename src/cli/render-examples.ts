@@ -1,0 +1,97 @@
+/**
+ * `npm run render-examples [-- NAME...] [--size WxH]`: renders every examples/*.kleinflow.json
+ * (or the named ones) to examples/png/NAME.png with the CPU interpreter at the graph's own view
+ * and sample count, the graph embedded, two at a time on worker threads. Prints name and time;
+ * exits 1 if any example fails (after rendering the rest).
+ */
+import { readdirSync } from 'node:fs';
+import { mkdir } from 'node:fs/promises';
+import { availableParallelism } from 'node:os';
+import { basename, join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { Worker } from 'node:worker_threads';
+import { LIMITS } from '../../nodes/core/scene.ts';
+import { parseArgs, parseSizeOption, stringOption } from './args.ts';
+import { CliError } from './command.ts';
+import type { RenderJob, RenderJobResult } from './render-job.ts';
+
+const ROOT = resolve(fileURLToPath(new URL('../..', import.meta.url)));
+export const EXAMPLES_DIR = join(ROOT, 'examples');
+export const EXAMPLES_PNG_DIR = join(EXAMPLES_DIR, 'png');
+const SUFFIX = '.kleinflow.json';
+const DEFAULT_SIZE = { width: 800, height: 800 };
+
+/** Example names (file names without the suffix), sorted. */
+export function exampleNames(dir = EXAMPLES_DIR): string[] {
+  return readdirSync(dir)
+    .filter((f) => f.endsWith(SUFFIX))
+    .map((f) => basename(f, SUFFIX))
+    .sort();
+}
+
+export const examplePath = (name: string, dir = EXAMPLES_DIR): string => join(dir, `${name}${SUFFIX}`);
+
+/** Workers start without tsx: register it there first, then load the TypeScript job module. */
+const WORKER_BOOTSTRAP = `import(${JSON.stringify(import.meta.resolve('tsx/esm/api'))})
+  .then((tsx) => { tsx.register(); return import(${JSON.stringify(new URL('./render-job.ts', import.meta.url).href)}); });`;
+
+function runPool(jobs: readonly RenderJob[], size: number, report: (r: RenderJobResult) => void): Promise<void> {
+  const queue = [...jobs];
+  const worker = () =>
+    new Promise<void>((done, fail) => {
+      const w = new Worker(WORKER_BOOTSTRAP, { eval: true });
+      const next = () => {
+        const job = queue.shift();
+        if (job) w.postMessage(job);
+        else void w.terminate().then(() => done());
+      };
+      w.on('message', (r: RenderJobResult) => {
+        report(r);
+        next();
+      });
+      w.on('error', fail);
+      next();
+    });
+  return Promise.all(Array.from({ length: Math.min(size, jobs.length) }, worker)).then(() => undefined);
+}
+
+async function main(argv: readonly string[]): Promise<number> {
+  const parsed = parseArgs(argv, [{ long: 'size', value: 'WxH', doc: 'image size (default 800x800)' }]);
+  const sizeText = stringOption(parsed, 'size');
+  const { width, height } = sizeText ? parseSizeOption('size', sizeText, LIMITS.maxImageSide) : DEFAULT_SIZE;
+  const all = exampleNames();
+  const names = parsed.positionals.length ? [...parsed.positionals] : all;
+  const unknown = names.filter((n) => !all.includes(n));
+  if (unknown.length) throw new CliError(`no such example: ${unknown.join(', ')} (have: ${all.join(', ')})`);
+  await mkdir(EXAMPLES_PNG_DIR, { recursive: true });
+  const jobs = names.map((name) => ({
+    name,
+    input: examplePath(name),
+    output: join(EXAMPLES_PNG_DIR, `${name}.png`),
+    width,
+    height,
+  }));
+  const started = performance.now();
+  let failed = 0;
+  await runPool(jobs, Math.min(2, availableParallelism()), (r) => {
+    if (r.error !== undefined) {
+      failed++;
+      process.stderr.write(`${r.name.padEnd(28)} FAILED: ${r.error}\n`);
+    } else process.stdout.write(`${r.name.padEnd(28)} ${String(Math.round(r.ms)).padStart(6)} ms\n`);
+  });
+  const total = ((performance.now() - started) / 1000).toFixed(1);
+  process.stdout.write(`${jobs.length - failed} of ${jobs.length} examples → ${EXAMPLES_PNG_DIR} (${width}×${height}, ${total} s)\n`);
+  return failed ? 1 : 0;
+}
+
+if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {
+  main(process.argv.slice(2)).then(
+    (code) => {
+      process.exitCode = code;
+    },
+    (e) => {
+      process.stderr.write(`render-examples: ${e instanceof Error ? e.message : String(e)}\n`);
+      process.exitCode = 1;
+    },
+  );
+}

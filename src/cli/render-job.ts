@@ -1,0 +1,41 @@
+/**
+ * One render job of `npm run render-examples`, run on a worker thread: load the example with the
+ * CLI's loader, render it on the CPU, write the PNG. Answers each job with its time or its error.
+ */
+import { parentPort } from 'node:worker_threads';
+import { CliError } from './command.ts';
+import { loadScene } from './load-graph.ts';
+import { nodeIo } from './node-io.ts';
+import { renderScenePng } from './render-png.ts';
+
+export interface RenderJob {
+  readonly name: string;
+  readonly input: string;
+  readonly output: string;
+  readonly width: number;
+  readonly height: number;
+}
+
+export interface RenderJobResult {
+  readonly name: string;
+  readonly ms: number;
+  readonly error?: string;
+}
+
+export async function runRenderJob(job: RenderJob): Promise<RenderJobResult> {
+  const started = performance.now();
+  const io = nodeIo();
+  try {
+    const { scene, text } = await loadScene(io, job.input);
+    const png = renderScenePng(scene, text, { width: job.width, height: job.height });
+    await io.writeFile(job.output, png);
+    return { name: job.name, ms: performance.now() - started };
+  } catch (e) {
+    const error = e instanceof CliError || e instanceof Error ? e.message : String(e);
+    return { name: job.name, ms: performance.now() - started, error };
+  }
+}
+
+parentPort?.on('message', (job: RenderJob) => {
+  void runRenderJob(job).then((r) => parentPort?.postMessage(r));
+});

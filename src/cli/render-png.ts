@@ -1,0 +1,33 @@
+/**
+ * Scene → PNG bytes on the CPU, with the graph's JSON embedded (iTXt "kleinflow") so the picture
+ * reopens as its graph. Shared by `kleinflow render` and `npm run render-examples`.
+ */
+import type { Scene } from '../../nodes/core/scene.ts';
+import { rasterize } from '../../shader-gen/raster.ts';
+import { encodePng } from '../io/png.ts';
+import { PNG_GRAPH_KEY } from './load-graph.ts';
+
+export interface PngRequest {
+  readonly width: number;
+  readonly height: number;
+  /** Samples per pixel; the render node's setting when absent. */
+  readonly samples?: number;
+  /** Called after each row with the fraction done (0..1]. */
+  readonly onProgress?: (done: number) => void;
+}
+
+export function renderScenePng(scene: Scene, graphText: string, request: PngRequest): Uint8Array {
+  const onProgress = request.onProgress;
+  const image = rasterize(scene, {
+    width: request.width,
+    height: request.height,
+    samples: request.samples,
+    onProgress: onProgress
+      ? (done) => {
+          onProgress(done);
+          return true;
+        }
+      : undefined,
+  });
+  return encodePng(image, { [PNG_GRAPH_KEY]: graphText });
+}

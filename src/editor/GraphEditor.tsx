@@ -1,0 +1,376 @@
+/**
+ * The node editor (React Flow). The GraphDoc in the store is the only truth: React Flow's nodes
+ * are rebuilt from it; drags, wires, deletes and pastes become Changes (one undo step each).
+ */
+import {
+  applyNodeChanges,
+  Background,
+  BackgroundVariant,
+  type Connection,
+  Controls,
+  type Edge,
+  type EdgeChange,
+  type FinalConnectionState,
+  MiniMap,
+  type NodeChange,
+  ReactFlow,
+  useReactFlow,
+} from '@xyflow/react';
+import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
+import type { NodeDef } from '../../nodes/core/define-node.ts';
+import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import type { Evaluation } from '../../nodes/graph/evaluate.ts';
+import { registry } from '../../nodes/types/index.ts';
+import type { Change } from '../state/changes.ts';
+import { copyNodes, preparePaste } from '../state/clipboard.ts';
+import { idAllocator } from '../state/ids.ts';
+import { useEditorState, useStore } from '../state/use-store.ts';
+import { readClipboard, writeClipboard } from './clipboard-io.ts';
+import { checkConnection, portOfHandle } from './connection.ts';
+import { EditorContext, type EditorActions } from './editor-context.ts';
+import { diagnosticsByNode, type KfNode, type KfNodeData, toFlowEdges, toFlowNodes } from './flow-model.ts';
+import { compatiblePort, type WireFilter } from './fuzzy.ts';
+import { Inspector } from './Inspector.tsx';
+import { newNode } from './new-node.ts';
+import { NodeView } from './NodeView.tsx';
+import { Palette } from './Palette.tsx';
+import { isTyping } from './typing.ts';
+import { useRememberedFlag } from './use-remembered-flag.ts';
+
+const nodeTypes = { kf: NodeView };
+
+interface Props {
+  readonly evaluation: Evaluation;
+  /** Diagnostics from the renderer (e.g. a shader error), shown on their nodes too. */
+  readonly extraDiagnostics: readonly Diagnostic[];
+  readonly hoveredNodeId: string | null;
+  onHoverNode(id: string | null): void;
+}
+
+interface PaletteState {
+  readonly screen: { x: number; y: number };
+  readonly flow: { x: number; y: number };
+  readonly filter?: WireFilter;
+  /** The wire that opened the palette: its node and handle. */
+  readonly wire?: { nodeId: string; handle: string; side: 'source' | 'target' };
+}
+
+export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHoverNode }: Props) {
+  const store = useStore();
+  const doc = useEditorState((s) => s.doc);
+  const selection = useEditorState((s) => s.selection);
+  const flow = useReactFlow();
+  const [nodes, setNodes] = useState<KfNode[]>([]);
+  const [selectedEdges, setSelectedEdges] = useState<ReadonlySet<string>>(new Set());
+  const [palette, setPalette] = useState<PaletteState | null>(null);
+  const [inspectorOpen, setInspectorOpen] = useRememberedFlag('kleinflow.inspector', false);
+  const pointer = useRef<{ x: number; y: number } | null>(null);
+  const wrapper = useRef<HTMLDivElement>(null);
+
+  const diagnostics = useMemo(
+    () => diagnosticsByNode([...evaluation.diagnostics, ...extraDiagnostics]),
+    [evaluation, extraDiagnostics],
+  );
+
+  useEffect(() => {
+    setNodes((prev) =>
+      toFlowNodes(
+        doc,
+        registry,
+        evaluation.nodes,
+        diagnostics,
+        selection,
+        hoveredNodeId,
+        new Map(prev.map((n) => [n.id, n])),
+      ),
+    );
+  }, [doc, evaluation, diagnostics, selection, hoveredNodeId]);
+  const edges = useMemo(() => toFlowEdges(doc, registry, selectedEdges), [doc, selectedEdges]);
+
+  const actions = useMemo<EditorActions>(
+    () => ({
+      registry,
+      editParam: (nodeId, key) => (value, final) => {
+        const change: Change = { type: 'set-params', patches: [{ nodeId, params: { [key]: value } }] };
+        if (final) store.commit(change, `edit ${key}`);
+        else store.preview(change);
+      },
+      setHoveredNode: onHoverNode,
+    }),
+    [store, onHoverNode],
+  );
+
+  const onNodesChange = useCallback(
+    (changes: NodeChange<KfNode>[]) => {
+      const kept = changes.filter((c) => c.type !== 'remove');
+      setNodes((prev) => {
+        const next = applyNodeChanges(kept, prev);
+        if (kept.some((c) => c.type === 'select')) {
+          queueMicrotask(() => store.setSelection(next.filter((n) => n.selected).map((n) => n.id)));
+        }
+        return next;
+      });
+    },
+    [store],
+  );
+  const onEdgesChange = useCallback((changes: EdgeChange[]) => {
+    setSelectedEdges((prev) => {
+      const next = new Set(prev);
+      for (const c of changes) {
+        if (c.type === 'select') c.selected ? next.add(c.id) : next.delete(c.id);
+        if (c.type === 'remove') next.delete(c.id);
+      }
+      return next;
+    });
+  }, []);
+
+  const onDelete = useCallback(
+    ({ nodes: ns, edges: es }: { nodes: KfNode[]; edges: Edge[] }) => {
+      if (ns.length + es.length === 0) return;
+      store.dispatch({ type: 'remove', nodeIds: ns.map((n) => n.id), edgeIds: es.map((e) => e.id) }, 'delete');
+    },
+    [store],
+  );
+
+  const onNodeDragStop = useCallback(
+    (_e: unknown, _node: KfNode, dragged: KfNode[]) => {
+      const current = store.getState().doc;
+      const moves = dragged
+        .map((n) => ({ nodeId: n.id, position: [Math.round(n.position.x), Math.round(n.position.y)] as [number, number] }))
+        .filter((m) => {
+          const before = current.nodes.find((n) => n.id === m.nodeId)?.position;
+          return before && (before[0] !== m.position[0] || before[1] !== m.position[1]);
+        });
+      if (moves.length > 0) store.dispatch({ type: 'move-nodes', moves }, 'move nodes');
+    },
+    [store],
+  );
+
+  const isValidConnection = useCallback(
+    (c: Connection | Edge) => checkConnection(store.getState().doc, registry, c).ok,
+    [store],
+  );
+  const onConnect = useCallback(
+    (c: Connection) => {
+      const current = store.getState().doc;
+      if (!checkConnection(current, registry, c).ok) return;
+      const edge = {
+        id: idAllocator(current)('e'),
+        from: { node: c.source, port: portOfHandle(c.sourceHandle) },
+        to: { node: c.target, port: portOfHandle(c.targetHandle) },
+      };
+      store.dispatch({ type: 'connect', edge }, 'connect');
+    },
+    [store],
+  );
+
+  const openPalette = useCallback(
+    (screen: { x: number; y: number }, extra: Partial<PaletteState> = {}) => {
+      setPalette({ screen, flow: flow.screenToFlowPosition(screen), ...extra });
+    },
+    [flow],
+  );
+
+  /** A wire dropped on empty canvas opens the palette filtered to types that fit it. */
+  const onConnectEnd = useCallback(
+    (event: MouseEvent | TouchEvent, state: FinalConnectionState) => {
+      if (state.isValid || !state.fromHandle || !state.fromNode) return;
+      const target = event.target as Element | null;
+      if (!target?.classList.contains('react-flow__pane')) return;
+      const data = state.fromNode.data as KfNodeData;
+      const port = portOfHandle(state.fromHandle.id);
+      const side = state.fromHandle.type;
+      const type = side === 'source' ? data.def?.outputs[port]?.type : data.def?.inputs[port]?.type;
+      if (!type) return;
+      const point = 'changedTouches' in event ? event.changedTouches[0] : event;
+      openPalette(
+        { x: point.clientX, y: point.clientY },
+        { filter: { from: side, type }, wire: { nodeId: state.fromNode.id, handle: state.fromHandle.id ?? '', side } },
+      );
+    },
+    [openPalette],
+  );
+
+  const addFromPalette = useCallback(
+    (def: NodeDef) => {
+      if (!palette) return;
+      const current = store.getState().doc;
+      const width = 220;
+      const at: [number, number] =
+        palette.wire?.side === 'target' ? [palette.flow.x - width, palette.flow.y - 20] : [palette.flow.x, palette.flow.y - 20];
+      const node = newNode(current, def, at);
+      const changes: Change[] = [{ type: 'add-node', node }];
+      if (palette.wire && palette.filter) {
+        const port = compatiblePort(def, palette.filter);
+        if (port) {
+          const other = { node: palette.wire.nodeId, port: portOfHandle(palette.wire.handle) };
+          const mine = { node: node.id, port };
+          const id = idAllocator({ ...current, nodes: [...current.nodes, node] })('e');
+          changes.push({
+            type: 'connect',
+            edge: palette.wire.side === 'source' ? { id, from: other, to: mine } : { id, from: mine, to: other },
+          });
+        }
+      }
+      store.dispatch({ type: 'batch', changes }, `add ${def.label}`);
+      store.setSelection([node.id]);
+      setPalette(null);
+    },
+    [palette, store],
+  );
+
+  const copySelection = useCallback(() => {
+    const data = copyNodes(store.getState().doc, store.getState().selection);
+    if (data) void writeClipboard(data);
+    return data;
+  }, [store]);
+  const pasteData = useCallback(
+    (data: NonNullable<ReturnType<typeof copyNodes>>, where?: { x: number; y: number }) => {
+      const current = store.getState().doc;
+      const at = where ? ([where.x, where.y] as const) : undefined;
+      const { nodes: ns, edges: es } = preparePaste(current, data, at);
+      store.dispatch({ type: 'paste', nodes: ns, edges: es }, 'paste');
+      store.setSelection(ns.map((n) => n.id));
+    },
+    [store],
+  );
+
+  useEffect(() => {
+    const onKey = (e: KeyboardEvent) => {
+      if (isTyping(e.target) || palette) return;
+      const mod = e.ctrlKey || e.metaKey;
+      const key = e.key.toLowerCase();
+      const here = () => {
+        const rect = wrapper.current!.getBoundingClientRect();
+        const p = pointer.current ?? { x: rect.left + rect.width / 2, y: rect.top + rect.height / 3 };
+        return p;
+      };
+      if ((key === ' ' && !mod) || (mod && key === 'k')) {
+        e.preventDefault();
+        openPalette(here());
+      } else if (mod && key === 'c') {
+        if (copySelection()) e.preventDefault();
+      } else if (mod && key === 'x') {
+        const data = copySelection();
+        if (data) {
+          e.preventDefault();
+          store.dispatch({ type: 'remove', nodeIds: data.nodes.map((n) => n.id) }, 'cut');
+        }
+      } else if (mod && key === 'v') {
+        e.preventDefault();
+        const p = pointer.current ? flow.screenToFlowPosition(pointer.current) : undefined;
+        void readClipboard().then((data) => data && pasteData(data, p));
+      } else if (mod && key === 'd') {
+        e.preventDefault();
+        const data = copyNodes(store.getState().doc, store.getState().selection);
+        if (data) pasteData(data);
+      } else if (!mod && key === 'i') {
+        setInspectorOpen(!inspectorOpen);
+      } else if (mod && key === 'a') {
+        e.preventDefault();
+        store.setSelection(store.getState().doc.nodes.map((n) => n.id));
+      }
+    };
+    window.addEventListener('keydown', onKey);
+    return () => window.removeEventListener('keydown', onKey);
+  }, [palette, openPalette, copySelection, pasteData, store, flow, inspectorOpen, setInspectorOpen]);
+
+  const inspected = selection.size === 1 ? doc.nodes.find((n) => selection.has(n.id)) : undefined;
+  const inspectedData = inspected ? nodes.find((n) => n.id === inspected.id)?.data : undefined;
+
+  return (
+    <EditorContext.Provider value={actions}>
+      <div
+        className="kf-graph"
+        ref={wrapper}
+        onPointerMove={(e) => {
+          pointer.current = { x: e.clientX, y: e.clientY };
+        }}
+        onPointerLeave={() => {
+          pointer.current = null;
+        }}
+        onDoubleClick={(e) => {
+          if ((e.target as Element).classList.contains('react-flow__pane')) openPalette({ x: e.clientX, y: e.clientY });
+        }}
+      >
+        <ReactFlow<KfNode, Edge>
+          nodes={nodes}
+          edges={edges}
+          nodeTypes={nodeTypes}
+          onNodesChange={onNodesChange}
+          onEdgesChange={onEdgesChange}
+          onDelete={onDelete}
+          onNodeDragStop={onNodeDragStop}
+          onConnect={onConnect}
+          onConnectEnd={onConnectEnd}
+          isValidConnection={isValidConnection}
+          deleteKeyCode={['Delete', 'Backspace']}
+          selectionKeyCode="Shift"
+          panActivationKeyCode={null}
+          multiSelectionKeyCode={['Meta', 'Control']}
+          zoomOnDoubleClick={false}
+          colorMode="dark"
+          fitView
+          fitViewOptions={{ padding: 0.2, maxZoom: 1 }}
+          minZoom={0.15}
+          maxZoom={2.5}
+          proOptions={{ hideAttribution: true }}
+          defaultEdgeOptions={{ interactionWidth: 16 }}
+          connectionRadius={24}
+        >
+          <Background variant={BackgroundVariant.Dots} gap={22} size={1.2} color="#2c2f36" />
+          <MiniMap
+            pannable
+            zoomable
+            nodeColor={(n) => ((n.data as KfNodeData).def?.color ?? '#e5484d')}
+            nodeStrokeWidth={0}
+            maskColor="rgba(12, 13, 16, 0.7)"
+            ariaLabel="Graph overview"
+          />
+          <Controls showInteractive={false} />
+        </ReactFlow>
+        {doc.nodes.length === 0 && (
+          <div className="kf-empty-hint">
+            <p>
+              <kbd>Space</kbd> or double-click to add a node
+            </p>
+            <p>or open an example from the menu</p>
+          </div>
+        )}
+        <button
+          type="button"
+          className={`kf-button kf-inspector-toggle${inspectorOpen ? ' kf-button--active' : ''}`}
+          aria-pressed={inspectorOpen}
+          title="Show the inspector for the selected node (I)"
+          onClick={() => setInspectorOpen(!inspectorOpen)}
+        >
+          Inspector
+        </button>
+        {inspectorOpen && !inspected && (
+          <aside className="kf-inspector kf-inspector--empty" aria-label="Inspector">
+            Select one node to inspect it.
+          </aside>
+        )}
+        {inspectorOpen && inspected && (
+          <Inspector
+            node={inspected}
+            connected={inspectedData?.connected ?? new Set()}
+            evaluation={evaluation.nodes.get(inspected.id)}
+            diagnostics={diagnostics.get(inspected.id) ?? []}
+            onLabel={(label) => store.dispatch({ type: 'set-label', nodeId: inspected.id, label }, 'rename')}
+            onClose={() => setInspectorOpen(false)}
+          />
+        )}
+      </div>
+      {palette && (
+        <Palette
+          defs={registry.all}
+          at={palette.screen}
+          filter={palette.filter}
+          onPick={addFromPalette}
+          onClose={() => setPalette(null)}
+        />
+      )}
+    </EditorContext.Provider>
+  );
+}

@@ -1,0 +1,99 @@
+/**
+ * The inspector for the selected node: its doc, an editable label, every input (wired or inline)
+ * and param, the read-out and the full list of its diagnostics.
+ */
+import { useEffect, useState } from 'react';
+import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
+import type { GraphNode } from '../../nodes/graph/document.ts';
+import type { NodeEvaluation } from '../../nodes/graph/evaluate.ts';
+import { useEditorActions } from './editor-context.ts';
+import { InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
+
+interface Props {
+  readonly node: GraphNode;
+  readonly connected: ReadonlySet<string>;
+  readonly evaluation: NodeEvaluation | undefined;
+  readonly diagnostics: readonly Diagnostic[];
+  onLabel(label: string): void;
+  onClose(): void;
+}
+
+export function Inspector({ node, connected, evaluation, diagnostics, onLabel, onClose }: Props) {
+  const { registry, editParam } = useEditorActions();
+  const def = registry.get(node.type);
+  const [label, setLabel] = useState(node.label ?? '');
+  useEffect(() => setLabel(node.label ?? ''), [node.label]);
+
+  return (
+    <aside className="kf-inspector" aria-label="Inspector">
+      <header className="kf-inspector__header">
+        <span className="kf-dot" style={{ background: def?.color ?? '#e5484d' }} />
+        <h2>{def?.label ?? node.type}</h2>
+        <code className="kf-inspector__id">{node.id}</code>
+        <button type="button" className="kf-icon-button" aria-label="Close inspector" onClick={onClose}>
+          ×
+        </button>
+      </header>
+      <div className="kf-inspector__scroll">
+        {def && <p className="kf-inspector__doc">{def.doc}</p>}
+        <label className="kf-field">
+          <span className="kf-field__label">label</span>
+          <input
+            className="kf-input"
+            aria-label="Node label"
+            placeholder="(none)"
+            value={label}
+            onChange={(e) => setLabel(e.target.value)}
+            onBlur={() => label !== (node.label ?? '') && onLabel(label)}
+            onKeyDown={(e) => e.key === 'Enter' && (e.target as HTMLInputElement).blur()}
+          />
+        </label>
+        {def && Object.keys(def.inputs).length > 0 && <h3>Inputs</h3>}
+        {def &&
+          Object.entries(def.inputs).map(([port, spec]) => (
+            <div key={port} className="kf-inspector__item">
+              {connected.has(port) || spec.default === undefined ? (
+                <div className="kf-field">
+                  <span className="kf-field__label">{spec.label ?? port}</span>
+                  <span className="kf-inspector__wired">
+                    <span className="kf-dot" style={{ background: PORT_TYPE_INFO[spec.type].color }} />
+                    {connected.has(port) ? `wired ${spec.type}` : `${spec.type} (wire one in)`}
+                  </span>
+                </div>
+              ) : (
+                <InputWidget name={port} spec={spec} value={node.params[port]} onEdit={editParam(node.id, port)} />
+              )}
+              {spec.doc && <p className="kf-inspector__hint">{spec.doc}</p>}
+            </div>
+          ))}
+        {def && Object.keys(def.params).length > 0 && <h3>Settings</h3>}
+        {def &&
+          Object.entries(def.params).map(([name, spec]) => (
+            <div key={name} className="kf-inspector__item">
+              <ParamWidget name={name} spec={spec} value={node.params[name]} onEdit={editParam(node.id, name)} />
+              {spec.doc && <p className="kf-inspector__hint">{spec.doc}</p>}
+            </div>
+          ))}
+        {evaluation?.readout && (
+          <>
+            <h3>Read-out</h3>
+            <p className="kf-inspector__readout">{evaluation.readout}</p>
+          </>
+        )}
+        <h3>Diagnostics</h3>
+        {diagnostics.length === 0 ? (
+          <p className="kf-inspector__ok">No problems.</p>
+        ) : (
+          <ul className="kf-diag-list">
+            {diagnostics.map((d) => (
+              <li key={`${d.code}-${d.port ?? ''}-${d.message}`} className={`kf-diag kf-diag--${d.severity}`}>
+                <code>{d.code}</code> {d.message}
+              </li>
+            ))}
+          </ul>
+        )}
+      </div>
+    </aside>
+  );
+}

@@ -1,0 +1,166 @@
+/**
+ * The ONE node component: everything it shows comes from the node type's declaration (NodeDef) —
+ * header, typed ports (coloured by PORT_TYPE_INFO, labelled), inline widgets for unconnected
+ * inputs and params, the evaluation's read-out, and a badge for the node's diagnostics.
+ */
+import { Handle, type NodeProps, Position, useConnection } from '@xyflow/react';
+import { memo } from 'react';
+import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import { canConnect, PORT_TYPE_INFO, type PortType } from '../../nodes/core/ports.ts';
+import { inHandle, outHandle, portOfHandle } from './connection.ts';
+import { useEditorActions } from './editor-context.ts';
+import type { KfNode, KfNodeData } from './flow-model.ts';
+import { InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
+
+/** "source:point:p1" while a wire is dragged from an output of type point on node p1. */
+function useWireInProgress(): { side: 'source' | 'target'; type: PortType; nodeId: string } | null {
+  const key = useConnection((c) => {
+    if (!c.inProgress || !c.fromHandle) return null;
+    const data = c.fromNode.data as KfNodeData;
+    const port = portOfHandle(c.fromHandle.id);
+    const type = c.fromHandle.type === 'source' ? data.def?.outputs[port]?.type : data.def?.inputs[port]?.type;
+    return type ? `${c.fromHandle.type}|${type}|${c.fromNode.id}` : null;
+  });
+  if (!key) return null;
+  const [side, type, nodeId] = key.split('|');
+  return { side: side as 'source' | 'target', type: type as PortType, nodeId };
+}
+
+const worst = (ds: readonly Diagnostic[]) =>
+  ds.some((d) => d.severity === 'error') ? 'error' : ds.some((d) => d.severity === 'warning') ? 'warning' : 'info';
+
+export function DiagnosticBadge({ diagnostics }: { diagnostics: readonly Diagnostic[] }) {
+  if (diagnostics.length === 0) return null;
+  const level = worst(diagnostics);
+  return (
+    <span
+      className={`kf-badge kf-badge--${level}`}
+      title={diagnostics.map((d) => `${d.code} ${d.message}`).join('\n')}
+      role="img"
+      aria-label={`${diagnostics.length} ${level}${diagnostics.length === 1 ? '' : 's'}`}
+    >
+      {level === 'error' ? '!' : level === 'warning' ? '!' : 'i'}
+    </span>
+  );
+}
+
+function Port({
+  side,
+  port,
+  label,
+  type,
+  doc,
+  dim,
+}: { side: 'in' | 'out'; port: string; label: string; type: PortType | null; doc?: string; dim: boolean }) {
+  const info = type ? PORT_TYPE_INFO[type] : null;
+  return (
+    <Handle
+      id={side === 'in' ? inHandle(port) : outHandle(port)}
+      type={side === 'in' ? 'target' : 'source'}
+      position={side === 'in' ? Position.Left : Position.Right}
+      className={`kf-port kf-port--${type ?? 'unknown'}${info?.many ? ' kf-port--many' : ''}${dim ? ' kf-port--dim' : ''}`}
+      style={{ background: info?.color ?? '#666' }}
+      title={`${label}: ${type ?? 'unknown'}${info?.many ? ' (takes many wires)' : ''}${doc ? ` — ${doc}` : ''}`}
+    />
+  );
+}
+
+function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
+  const { editParam, setHoveredNode } = useEditorActions();
+  const wire = useWireInProgress();
+  const { node, def, connected, evaluation, diagnostics } = data;
+  const portDiag = (port: string) => diagnostics.filter((d) => d.port === port);
+
+  /** Whether a handle on this node can take the wire being dragged (others dim). */
+  const dims = (side: 'in' | 'out', type: PortType | null): boolean => {
+    if (!wire) return false;
+    if (wire.nodeId === id || !type) return true;
+    if (wire.side === 'source') return side === 'out' || !canConnect(wire.type, type);
+    return side === 'in' || !canConnect(type, wire.type);
+  };
+
+  const accent = def?.color ?? '#e5484d';
+  return (
+    <div
+      className={`kf-node${selected ? ' kf-node--selected' : ''}${data.hovered ? ' kf-node--hovered' : ''}${def ? '' : ' kf-node--unknown'}`}
+      style={{ '--kf-accent': accent } as React.CSSProperties}
+      onPointerEnter={() => setHoveredNode(id)}
+      onPointerLeave={() => setHoveredNode(null)}
+      data-node-id={id}
+      data-node-type={node.type}
+    >
+      <div className="kf-node__header" title={def?.doc}>
+        <span className="kf-node__swatch" />
+        {node.label ? (
+          <>
+            <span className="kf-node__title">{node.label}</span>
+            <span className="kf-node__type">{def?.label ?? node.type}</span>
+          </>
+        ) : (
+          <span className="kf-node__title">{def?.label ?? `Unknown “${node.type}”`}</span>
+        )}
+        <DiagnosticBadge diagnostics={diagnostics} />
+      </div>
+      <div className="kf-node__body">
+        {def &&
+          Object.entries(def.outputs).map(([port, spec]) => (
+            <div key={`o-${port}`} className="kf-row kf-row--out">
+              <span className="kf-row__label">{spec.label ?? port}</span>
+              <Port side="out" port={port} label={spec.label ?? port} type={spec.type} doc={spec.doc} dim={dims('out', spec.type)} />
+            </div>
+          ))}
+        {def &&
+          Object.entries(def.inputs).map(([port, spec]) => {
+            const isConnected = connected.has(port);
+            const problems = portDiag(port);
+            const widget = isConnected ? null : (
+              <InputWidget name={port} spec={spec} value={node.params[port]} onEdit={editParam(id, port)} />
+            );
+            return (
+              <div
+                key={`i-${port}`}
+                className={`kf-row kf-row--in${problems.length ? ` kf-row--${worst(problems)}` : ''}`}
+                title={problems.map((d) => d.message).join('\n') || undefined}
+              >
+                <Port side="in" port={port} label={spec.label ?? port} type={spec.type} doc={spec.doc} dim={dims('in', spec.type)} />
+                {widget ?? <span className="kf-row__label">{spec.label ?? port}</span>}
+              </div>
+            );
+          })}
+        {def &&
+          Object.entries(def.params).map(([name, spec]) => {
+            const problems = portDiag(name);
+            return (
+              <div
+                key={`p-${name}`}
+                className={`kf-row kf-row--param${problems.length ? ` kf-row--${worst(problems)}` : ''}`}
+                title={problems.map((d) => d.message).join('\n') || undefined}
+              >
+                <ParamWidget name={name} spec={spec} value={node.params[name]} onEdit={editParam(id, name)} />
+              </div>
+            );
+          })}
+        {!def && (
+          <>
+            {data.orphanPorts.outputs.map((port) => (
+              <div key={`o-${port}`} className="kf-row kf-row--out">
+                <span className="kf-row__label">{port}</span>
+                <Port side="out" port={port} label={port} type={null} dim={dims('out', null)} />
+              </div>
+            ))}
+            {data.orphanPorts.inputs.map((port) => (
+              <div key={`i-${port}`} className="kf-row kf-row--in">
+                <Port side="in" port={port} label={port} type={null} dim={dims('in', null)} />
+                <span className="kf-row__label">{port}</span>
+              </div>
+            ))}
+            <div className="kf-node__note">This node type is not known; its data is kept.</div>
+          </>
+        )}
+      </div>
+      {evaluation?.readout && <div className="kf-node__readout">{evaluation.readout}</div>}
+    </div>
+  );
+}
+
+export const NodeView = memo(NodeViewImpl);

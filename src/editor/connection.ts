@@ -1,0 +1,60 @@
+/**
+ * Connection rules of the graph editor, by port type (the one table in nodes/core/ports.ts):
+ * which wires may be drawn, and the edge a valid wire becomes. React Flow handle ids are
+ * `in:<port>` for inputs and `out:<port>` for outputs.
+ */
+import { canConnect, type PortType } from '../../nodes/core/ports.ts';
+import type { NodeRegistry } from '../../nodes/core/registry.ts';
+import type { GraphDoc } from '../../nodes/graph/document.ts';
+
+export const inHandle = (port: string) => `in:${port}`;
+export const outHandle = (port: string) => `out:${port}`;
+export const portOfHandle = (handle: string | null | undefined) => handle?.replace(/^(in|out):/, '') ?? '';
+
+export interface WireEnds {
+  readonly source: string;
+  readonly sourceHandle?: string | null;
+  readonly target: string;
+  readonly targetHandle?: string | null;
+}
+
+/** Port type of a node's output (`out`) or input (`in`), or null when unknown. */
+export function portType(
+  doc: GraphDoc,
+  registry: NodeRegistry,
+  nodeId: string,
+  side: 'in' | 'out',
+  port: string,
+): PortType | null {
+  const node = doc.nodes.find((n) => n.id === nodeId);
+  const def = node && registry.get(node.type);
+  if (!def) return null;
+  return (side === 'in' ? def.inputs[port]?.type : def.outputs[port]?.type) ?? null;
+}
+
+/** Whether `to` can be reached from `from` along edges (a new edge to → from would close a cycle). */
+function reaches(doc: GraphDoc, from: string, to: string): boolean {
+  const seen = new Set<string>();
+  const stack = [from];
+  while (stack.length > 0) {
+    const id = stack.pop()!;
+    if (id === to) return true;
+    if (seen.has(id)) continue;
+    seen.add(id);
+    for (const e of doc.edges) if (e.from.node === id) stack.push(e.to.node);
+  }
+  return false;
+}
+
+export type ConnectionVerdict = { ok: true } | { ok: false; reason: string };
+
+/** Why a wire may not be drawn: wrong types, a self loop, or a cycle. */
+export function checkConnection(doc: GraphDoc, registry: NodeRegistry, wire: WireEnds): ConnectionVerdict {
+  if (wire.source === wire.target) return { ok: false, reason: 'a node cannot feed itself' };
+  const from = portType(doc, registry, wire.source, 'out', portOfHandle(wire.sourceHandle));
+  const to = portType(doc, registry, wire.target, 'in', portOfHandle(wire.targetHandle));
+  if (!from || !to) return { ok: false, reason: 'unknown port' };
+  if (!canConnect(from, to)) return { ok: false, reason: `a ${from} output cannot feed a ${to} input` };
+  if (reaches(doc, wire.target, wire.source)) return { ok: false, reason: 'this wire would make a cycle' };
+  return { ok: true };
+}

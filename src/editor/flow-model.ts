@@ -1,0 +1,98 @@
+/**
+ * GraphDoc + evaluation → React Flow nodes and edges. Pure: the editor rebuilds these whenever
+ * the document, evaluation or selection changes; React Flow never owns graph data.
+ */
+import type { Edge, Node } from '@xyflow/react';
+import type { NodeDef } from '../../nodes/core/define-node.ts';
+import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
+import type { NodeRegistry } from '../../nodes/core/registry.ts';
+import type { GraphDoc, GraphNode } from '../../nodes/graph/document.ts';
+import type { NodeEvaluation } from '../../nodes/graph/evaluate.ts';
+import { inHandle, outHandle } from './connection.ts';
+
+export interface KfNodeData extends Record<string, unknown> {
+  readonly node: GraphNode;
+  readonly def: NodeDef | undefined;
+  /** Inputs that have an edge (they show no inline widget). */
+  readonly connected: ReadonlySet<string>;
+  readonly evaluation: NodeEvaluation | undefined;
+  readonly diagnostics: readonly Diagnostic[];
+  /** Ports named by edges of an unknown-type node (so its wires still show). */
+  readonly orphanPorts: { readonly inputs: readonly string[]; readonly outputs: readonly string[] };
+  readonly hovered: boolean;
+}
+
+export type KfNode = Node<KfNodeData, 'kf'>;
+
+export function diagnosticsByNode(diagnostics: readonly Diagnostic[]): Map<string, Diagnostic[]> {
+  const by = new Map<string, Diagnostic[]>();
+  for (const d of diagnostics) {
+    if (!d.nodeId) continue;
+    const list = by.get(d.nodeId) ?? [];
+    if (!list.some((x) => x.code === d.code && x.message === d.message)) list.push(d);
+    by.set(d.nodeId, list);
+  }
+  return by;
+}
+
+export function toFlowNodes(
+  doc: GraphDoc,
+  registry: NodeRegistry,
+  evaluations: ReadonlyMap<string, NodeEvaluation>,
+  diagnostics: ReadonlyMap<string, readonly Diagnostic[]>,
+  selection: ReadonlySet<string>,
+  hovered: string | null,
+  previous: ReadonlyMap<string, KfNode>,
+): KfNode[] {
+  const connected = new Map<string, Set<string>>();
+  for (const e of doc.edges) {
+    const set = connected.get(e.to.node) ?? new Set<string>();
+    set.add(e.to.port);
+    connected.set(e.to.node, set);
+  }
+  return doc.nodes.map((node) => {
+    const def = registry.get(node.type);
+    const prev = previous.get(node.id);
+    const orphanPorts = def
+      ? { inputs: [], outputs: [] }
+      : {
+          inputs: [...new Set(doc.edges.filter((e) => e.to.node === node.id).map((e) => e.to.port))],
+          outputs: [...new Set(doc.edges.filter((e) => e.from.node === node.id).map((e) => e.from.port))],
+        };
+    return {
+      id: node.id,
+      type: 'kf',
+      position: { x: node.position[0], y: node.position[1] },
+      selected: selection.has(node.id),
+      ...(prev?.measured ? { measured: prev.measured } : {}),
+      data: {
+        node,
+        def,
+        connected: connected.get(node.id) ?? new Set(),
+        evaluation: evaluations.get(node.id),
+        diagnostics: diagnostics.get(node.id) ?? [],
+        orphanPorts,
+        hovered: hovered === node.id,
+      },
+    };
+  });
+}
+
+export function toFlowEdges(doc: GraphDoc, registry: NodeRegistry, selectedEdges: ReadonlySet<string>): Edge[] {
+  const types = new Map(doc.nodes.map((n) => [n.id, registry.get(n.type)]));
+  return doc.edges.map((e) => {
+    const type = types.get(e.from.node)?.outputs[e.from.port]?.type;
+    const color = type ? PORT_TYPE_INFO[type].color : '#888';
+    return {
+      id: e.id,
+      source: e.from.node,
+      sourceHandle: outHandle(e.from.port),
+      target: e.to.node,
+      targetHandle: inHandle(e.to.port),
+      selected: selectedEdges.has(e.id),
+      style: { stroke: color },
+      className: `kf-edge kf-edge--${type ?? 'unknown'}`,
+    };
+  });
+}

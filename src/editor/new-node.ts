@@ -1,0 +1,15 @@
+/** A fresh node of a type, placed at a graph position, with an id unused in the document. */
+import type { NodeDef } from '../../nodes/core/define-node.ts';
+import type { GraphDoc, GraphNode } from '../../nodes/graph/document.ts';
+import { idAllocator } from '../state/ids.ts';
+
+/** Params stay empty: the type's defaults apply until the user edits a value. */
+export function newNode(doc: GraphDoc, def: NodeDef, position: readonly [number, number]): GraphNode {
+  return {
+    id: idAllocator(doc)(def.type),
+    type: def.type,
+    version: def.version,
+    position: [Math.round(position[0]), Math.round(position[1])],
+    params: {},
+  };
+}

@@ -1,0 +1,62 @@
+/** Toggles, enum selects and colour pickers: edits that end at once (each is one undo step). */
+import { useEffect, useRef } from 'react';
+import type { OnEdit } from './edit.ts';
+
+export function ToggleField({ label, value, onEdit, title }: { label: string; value: boolean; onEdit: OnEdit<boolean>; title?: string }) {
+  return (
+    <label className="kf-field kf-toggle nodrag" title={title}>
+      <span className="kf-field__label">{label}</span>
+      <input type="checkbox" aria-label={label} checked={value} onChange={(e) => onEdit(e.target.checked, true)} />
+      <span className="kf-toggle__track" aria-hidden="true" />
+    </label>
+  );
+}
+
+export function EnumField({
+  label,
+  value,
+  options,
+  onEdit,
+  title,
+}: { label: string; value: string; options: readonly string[]; onEdit: OnEdit<string>; title?: string }) {
+  return (
+    <label className="kf-field nodrag" title={title}>
+      <span className="kf-field__label">{label}</span>
+      <select className="kf-input kf-select" aria-label={label} value={value} onChange={(e) => onEdit(e.target.value, true)}>
+        {options.map((o) => (
+          <option key={o} value={o}>
+            {o}
+          </option>
+        ))}
+      </select>
+    </label>
+  );
+}
+
+/** Live preview while the picker is open (input events), one commit when it closes (change event). */
+export function ColorField({ label, value, onEdit, title }: { label: string; value: string; onEdit: OnEdit<string>; title?: string }) {
+  const ref = useRef<HTMLInputElement>(null);
+  const onEditRef = useRef(onEdit);
+  onEditRef.current = onEdit;
+  useEffect(() => {
+    const el = ref.current!;
+    const change = () => onEditRef.current(el.value, true);
+    el.addEventListener('change', change);
+    return () => el.removeEventListener('change', change);
+  }, []);
+  return (
+    <label className="kf-field nodrag" title={title}>
+      <span className="kf-field__label">{label}</span>
+      <span className="kf-color">
+        <input
+          ref={ref}
+          type="color"
+          aria-label={label}
+          value={value}
+          onChange={(e) => onEdit(e.target.value, false)}
+        />
+        <code>{value}</code>
+      </span>
+    </label>
+  );
+}

@@ -1,0 +1,217 @@
+/**
+ * Flower → Kleinflow: reads a Flower graph (format.ts), maps every node (node-types.ts), rewires
+ * the edges (mirrors pass their input through, as in Flower), adds a tile that colours like Flower
+ * and a render node with every mirror wired in Flower's order (circles, then lines), and opens on
+ * the region Flower showed. Whatever does not carry over is reported as a KF502 note, never dropped silently.
+ */
+import { type Diagnostic, diag } from '../../../nodes/core/diagnostics.ts';
+import { toHex } from '../../../nodes/core/port-values.ts';
+import type { NodeRegistry } from '../../../nodes/core/registry.ts';
+import { DEFAULT_VIEW, DOC_VERSION, FORMAT, type GraphDoc, type GraphEdge, type GraphNode } from '../../../nodes/graph/document.ts';
+import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
+import { loadDocument } from '../../../nodes/graph/load.ts';
+import { registry as defaultRegistry } from '../../../nodes/types/index.ts';
+import { type FlowerGraph, type FlowerNode, isFlowerDocument, readFlowerGraph } from './format.ts';
+import { FLOWER_NODE_TYPES, type MappedNode } from './node-types.ts';
+import { FLOWER_PALETTE_STEP, readFlowerPalette } from './palette.ts';
+import { flowerView } from './view.ts';
+
+export { isFlowerDocument } from './format.ts';
+
+/** Flower's picture: hue 0.01 + 0.05(n − 1) for n reflections, 50 iterations, 20 samples. */
+export const FLOWER_RENDER = { hueStart: 0.01, hueStep: 0.05, maxIterations: 50, samples: 20 } as const;
+/** Flower's node-graph pixels → Kleinflow editor units (Kleinflow's nodes are larger). */
+const GRAPH_SPREAD = 1.5;
+
+export type FlowerImportResult =
+  | { ok: true; doc: GraphDoc; notes: Diagnostic[] }
+  | { ok: false; diagnostics: Diagnostic[] };
+
+const note = (path: string, text: string): Diagnostic => diag('importNote', { path }, text);
+
+export function importFlower(json: unknown, registry: NodeRegistry = defaultRegistry): FlowerImportResult {
+  if (!isFlowerDocument(json)) {
+    return {
+      ok: false,
+      diagnostics: [
+        diag('importProblem', { path: '(document)' }, 'not a Flower graph (expected "nodes" with "name" and "sockets")'),
+      ],
+    };
+  }
+  const graph = readFlowerGraph(json as Record<string, unknown>);
+  const notes = [...graph.notes];
+  const mapped = mapNodes(graph, registry, notes);
+  const ids = assignIds(graph, mapped);
+  const nodes: GraphNode[] = [];
+  for (const fn of graph.nodes) {
+    const m = mapped.get(fn.id);
+    if (!m) continue;
+    const position: [number, number] = [Math.round(fn.x * GRAPH_SPREAD), Math.round(fn.y * GRAPH_SPREAD)];
+    nodes.push({ id: ids.get(fn.id)!, type: m.type, position, params: m.params });
+  }
+  const edges = wireEdges(graph, mapped, ids, notes);
+  addOutput(graph, mapped, ids, nodes, edges, notes);
+
+  const doc: GraphDoc = {
+    format: FORMAT,
+    version: DOC_VERSION,
+    meta: {
+      title: graph.name ?? 'Flower graph',
+      description: `Imported from a Flower graph (${graph.nodes.length} nodes, ${graph.links.length} edges).`,
+    },
+    nodes,
+    edges,
+    view: { ...DEFAULT_VIEW },
+  };
+  const view = flowerView(evaluateGraph(doc, registry).scene.overlays);
+  doc.view = { center: [view.center[0], view.center[1]], scale: view.scale };
+  const checked = loadDocument(doc);
+  if (!checked.ok) return checked;
+  return { ok: true, doc: checked.doc, notes };
+}
+
+function mapNodes(graph: FlowerGraph, registry: NodeRegistry, notes: Diagnostic[]): Map<string, MappedNode> {
+  const wired = new Map<string, Set<number>>();
+  for (const l of graph.links) {
+    const set = wired.get(l.to) ?? new Set<number>();
+    set.add(l.toInput);
+    wired.set(l.to, set);
+  }
+  const mapped = new Map<string, MappedNode>();
+  for (const node of graph.nodes) {
+    const path = `nodes[${node.index}]`;
+    const map = Object.hasOwn(FLOWER_NODE_TYPES, node.name) ? FLOWER_NODE_TYPES[node.name] : undefined;
+    if (!map) {
+      notes.push(note(path, `unknown Flower node type "${node.name}" ("${node.id}"); skipped`));
+      continue;
+    }
+    const m = map(node, { registry, wired: wired.get(node.id) ?? new Set() });
+    if ('skip' in m) {
+      notes.push(note(path, m.skip));
+      continue;
+    }
+    for (const text of m.notes) notes.push(note(path, text));
+    mapped.set(node.id, m);
+  }
+  return mapped;
+}
+
+/**
+ * Readable ids: P1, L1, C1, … for construction nodes and mirror-01, mirror-02, … for mirrors in
+ * Flower's order. Evaluation runs nodes in dependency order with ties broken by id, and the render
+ * tests its elements in that order; every upper-case id sorts before "mirror-", so the mirrors
+ * keep exactly this order.
+ */
+function assignIds(graph: FlowerGraph, mapped: ReadonlyMap<string, MappedNode>): Map<string, string> {
+  const ids = new Map<string, string>();
+  const counters = new Map<string, number>();
+  for (const fn of graph.nodes) {
+    const m = mapped.get(fn.id);
+    if (!m || m.mirror) continue;
+    const n = (counters.get(m.prefix) ?? 0) + 1;
+    counters.set(m.prefix, n);
+    ids.set(fn.id, `${m.prefix}${n}`);
+  }
+  const mirrors = mirrorOrder(graph, mapped);
+  const width = String(mirrors.length).length;
+  mirrors.forEach((fn, i) => ids.set(fn.id, `mirror-${String(i + 1).padStart(Math.max(2, width), '0')}`));
+  return ids;
+}
+
+/** Flower tests every circle mirror first, then reflects in the line mirrors, each in file order. */
+function mirrorOrder(graph: FlowerGraph, mapped: ReadonlyMap<string, MappedNode>): FlowerNode[] {
+  const of = (kind: 'circle' | 'line') => graph.nodes.filter((n) => mapped.get(n.id)?.mirror === kind);
+  return [...of('circle'), ...of('line')];
+}
+
+function wireEdges(
+  graph: FlowerGraph,
+  mapped: ReadonlyMap<string, MappedNode>,
+  ids: ReadonlyMap<string, string>,
+  notes: Diagnostic[],
+): GraphEdge[] {
+  const into = new Map(graph.links.map((l) => [`${l.to}:${l.toInput}`, l]));
+  /** The Kleinflow port that carries Flower output `ordinal` of `nodeId` (through pass-through mirrors). */
+  const source = (nodeId: string, ordinal: number, depth = 0): { node: string; port: string } | null => {
+    const out = mapped.get(nodeId)?.outputs[ordinal];
+    if (!out || depth > graph.nodes.length) return null;
+    if ('port' in out) return { node: ids.get(nodeId)!, port: out.port };
+    const upstream = into.get(`${nodeId}:${out.passthroughInput}`);
+    return upstream ? source(upstream.from, upstream.fromOutput, depth + 1) : null;
+  };
+  const edges: GraphEdge[] = [];
+  for (const link of graph.links) {
+    const target = mapped.get(link.to);
+    const from = source(link.from, link.fromOutput);
+    if (!target || !from) continue; // an end was skipped: its own note explains it
+    const port = target.inputs[link.toInput];
+    if (!port) {
+      notes.push(note(`edges[${link.index}]`, `input ${link.toInput + 1} of Flower node "${link.to}" has no Kleinflow twin; edge skipped`));
+      continue;
+    }
+    edges.push({ id: `e${edges.length + 1}`, from, to: { node: ids.get(link.to)!, port } });
+  }
+  return edges;
+}
+
+/** Adds the tile (Flower's colouring) and the render node with every mirror, in Flower's order. */
+function addOutput(
+  graph: FlowerGraph,
+  mapped: ReadonlyMap<string, MappedNode>,
+  ids: ReadonlyMap<string, string>,
+  nodes: GraphNode[],
+  edges: GraphEdge[],
+  notes: Diagnostic[],
+): void {
+  const taken = new Set(nodes.map((n) => n.id));
+  const fresh = (base: string) => {
+    let id = base;
+    for (let k = 2; taken.has(id); k++) id = `${base}-${k}`;
+    taken.add(id);
+    return id;
+  };
+  const right = Math.max(0, ...nodes.map((n) => n.position[0])) + 300;
+  const middle = nodes.length ? nodes.reduce((s, n) => s + n.position[1], 0) / nodes.length : 0;
+  const tileId = fresh('tile');
+  const renderId = fresh('render');
+  nodes.push({ id: tileId, type: 'tile', position: [right, Math.round(middle + 220)], params: tileParams(graph, notes) });
+  nodes.push({
+    id: renderId,
+    type: 'render',
+    position: [right + 300, Math.round(middle)],
+    params: { maxIterations: FLOWER_RENDER.maxIterations, samples: FLOWER_RENDER.samples },
+  });
+  edges.push({ id: `e${edges.length + 1}`, from: { node: tileId, port: 'tile' }, to: { node: renderId, port: 'tile' } });
+  for (const fn of mirrorOrder(graph, mapped)) {
+    edges.push({
+      id: `e${edges.length + 1}`,
+      from: { node: ids.get(fn.id)!, port: 'element' },
+      to: { node: renderId, port: 'elements' },
+    });
+  }
+}
+
+/** Depth-HSV with Flower's hues (hue 0.01 + 0.05(n − 1) = 0.96 + 0.05n mod 1), or its palette. */
+function tileParams(graph: FlowerGraph, notes: Diagnostic[]): Record<string, unknown> {
+  const hsv = {
+    mode: 'depth-hsv',
+    hueOffset: FLOWER_RENDER.hueStart - FLOWER_RENDER.hueStep + 1,
+    hueStep: FLOWER_RENDER.hueStep,
+    saturation: 1,
+    value: 1,
+  };
+  const paletteNode = graph.nodes.find((n) => n.name === 'ColorPalettes');
+  if (!paletteNode) return hsv;
+  const read = readFlowerPalette(paletteNode, graph);
+  if (!read.ok) {
+    notes.push(note(`nodes[${paletteNode.index}]`, `${read.message}; Flower's rainbow colouring is used instead`));
+    return hsv;
+  }
+  const { a, b, c, d } = read.palette;
+  if ([a, b, c].some((v) => v.some((x) => x < 0 || x > 1))) {
+    notes.push(
+      note(`nodes[${paletteNode.index}]`, 'palette values outside 0–1 were clamped (the tile stores its palette as colours)'),
+    );
+  }
+  return { mode: 'cosine', step: FLOWER_PALETTE_STEP, a: toHex(a), b: toHex(b), c: toHex(c), d: toHex(d) };
+}

@@ -1,0 +1,181 @@
+/**
+ * How each of Flower's 11 node types becomes a Kleinflow node. One entry per Flower type: the
+ * Kleinflow type, its params, which Kleinflow port each Flower input/output socket (by order among
+ * the node's inputs/outputs) corresponds to, and whether it is a mirror. Types whose Kleinflow twin
+ * is not registered fall back to a snapshot of their saved value or are skipped, with a note.
+ *
+ * Facts about Flower used here: a Point's first Float input drives y and its second drives x
+ * (posX/posY hold the position); LineTwoPoints runs from its first input point p1 to p2 and a
+ * LineMirror keeps the LEFT side of p1→p2 (`reverse` keeps the right: Kleinflow's `flip`);
+ * CircleMirror inverts in its circle; both mirrors pass their input through to their output.
+ */
+import type { NodeRegistry } from '../../../nodes/core/registry.ts';
+import type { FlowerNode } from './format.ts';
+
+/** Where a Flower output socket's value comes from in Kleinflow. */
+export type OutputSource = { readonly port: string } | { readonly passthroughInput: number } | null;
+
+export interface MappedNode {
+  readonly type: string;
+  /** Id prefix (upper case, so mirrors' lower-case ids sort after every node they depend on). */
+  readonly prefix: string;
+  readonly params: Record<string, unknown>;
+  /** Kleinflow input port per Flower input ordinal (null: that input has no twin). */
+  readonly inputs: readonly (string | null)[];
+  readonly outputs: readonly OutputSource[];
+  /** Mirrors are wired into the render: circles first, then lines (Flower's test order). */
+  readonly mirror?: 'circle' | 'line';
+  /** Warnings about what did not carry over. */
+  readonly notes: readonly string[];
+}
+
+export type Mapping = MappedNode | { readonly skip: string };
+
+export interface MapContext {
+  readonly registry: NodeRegistry;
+  /** Flower input ordinals of this node that have an edge. */
+  readonly wired: ReadonlySet<number>;
+}
+
+const finite = (v: unknown): v is number => typeof v === 'number' && Number.isFinite(v);
+const named = (node: FlowerNode) => `${node.name} "${node.id}"`;
+
+/** Inputs that Flower leaves at (0, 0) when unwired; Kleinflow uses its defaults and says so. */
+function unwiredPoints(node: FlowerNode, ctx: MapContext, ports: readonly string[]): string[] {
+  const missing = ports.filter((_, i) => !ctx.wired.has(i));
+  if (missing.length === 0) return [];
+  return [
+    `${named(node)} has no point wired into ${missing.map((p) => `"${p}"`).join(', ')}; Kleinflow's default is used and the node is hidden`,
+  ];
+}
+
+/** A constant stand-in for a Flower value node whose animated Kleinflow twin is missing. */
+function snapshot(node: FlowerNode, value: unknown, what: string): Mapping {
+  if (!finite(value)) return { skip: `${named(node)} cannot be mapped yet (Kleinflow has no ${what} node)` };
+  return {
+    type: 'number',
+    prefix: 'N',
+    params: { value },
+    inputs: [],
+    outputs: [{ port: 'value' }],
+    notes: [
+      `${named(node)} cannot be mapped yet (Kleinflow has no ${what} node): imported as a Number holding its saved value ${value}; the animation is lost`,
+    ],
+  };
+}
+
+type FlowerTypeMap = (node: FlowerNode, ctx: MapContext) => Mapping;
+
+export const FLOWER_NODE_TYPES: Readonly<Record<string, FlowerTypeMap>> = {
+  Constant: (node) => ({
+    type: 'number',
+    prefix: 'N',
+    params: { value: finite(node.raw.value) ? node.raw.value : 1 },
+    inputs: [],
+    outputs: [{ port: 'value' }],
+    notes: [],
+  }),
+  Point: (node) => {
+    const { posX, posY } = node.raw;
+    const known = finite(posX) && finite(posY);
+    return {
+      type: 'point',
+      prefix: 'P',
+      params: { x: known ? posX : 0, y: known ? posY : 0 },
+      inputs: ['y', 'x'],
+      outputs: [{ port: 'point' }],
+      notes: known ? [] : [`${named(node)} has no saved position (posX, posY); it is placed at (0, 0)`],
+    };
+  },
+  LineTwoPoints: (node, ctx) => {
+    const notes = unwiredPoints(node, ctx, ['a', 'b']);
+    return {
+      type: 'line',
+      prefix: 'L',
+      params: notes.length > 0 ? { visible: false } : {},
+      inputs: ['a', 'b'],
+      outputs: [{ port: 'line' }],
+      notes,
+    };
+  },
+  LineMirror: (node, ctx) =>
+    ctx.wired.has(0)
+      ? {
+          type: 'reflection',
+          prefix: 'M',
+          params: { flip: node.raw.reverse === true },
+          inputs: ['line'],
+          outputs: [{ passthroughInput: 0 }],
+          mirror: 'line',
+          notes: [],
+        }
+      : { skip: `${named(node)} has no line wired in, so it mirrors nothing; skipped` },
+  CircleThreePoints: (node, ctx) => {
+    const notes = unwiredPoints(node, ctx, ['a', 'b', 'c']);
+    return {
+      type: 'circle-3pt',
+      prefix: 'C',
+      params: notes.length > 0 ? { visible: false } : {},
+      inputs: ['a', 'b', 'c'],
+      outputs: [{ port: 'circle' }],
+      notes,
+    };
+  },
+  CircleMirror: (node, ctx) =>
+    ctx.wired.has(0)
+      ? {
+          type: 'inversion',
+          prefix: 'M',
+          params: {},
+          inputs: ['circle'],
+          outputs: [{ passthroughInput: 0 }],
+          mirror: 'circle',
+          notes: [],
+        }
+      : { skip: `${named(node)} has no circle wired in, so it inverts in nothing; skipped` },
+  SinWave: (node, ctx) =>
+    ctx.registry.get('sine') ? mapSine(node) : snapshot(node, node.raw.value, 'sine-wave'),
+  CircularMotion: (node, ctx) =>
+    ctx.registry.get('circular-motion')
+      ? mapCircularMotion(node)
+      : { skip: `${named(node)} cannot be mapped yet (Kleinflow has no circular-motion node); what it drives keeps Kleinflow's defaults` },
+  Vec3: (node) => ({
+    skip: `${named(node)} has no Kleinflow node of its own; its values are read where a ColorPalettes node uses them`,
+  }),
+  ColorPalettes: (node) => ({
+    skip: `${named(node)} becomes the colouring of the imported tile node`,
+  }),
+  OrbitSeed: (node) => ({
+    skip: `${named(node)} cannot be mapped yet (Kleinflow has no orbit-seed node); the picture shows no seed`,
+  }),
+};
+
+/** Kleinflow's `sine` node (value = offset + amplitude·sin(2π t / period + phase)); see nodes/types. */
+function mapSine(node: FlowerNode): Mapping {
+  const { period, amplitude, phaseShift, offset } = node.raw;
+  return {
+    type: 'sine',
+    prefix: 'S',
+    params: {
+      ...(finite(amplitude) ? { amplitude } : {}),
+      // Flower's period is in milliseconds.
+      ...(finite(period) && period > 0 ? { period: period / 1000 } : {}),
+      ...(finite(phaseShift) ? { phase: phaseShift } : {}),
+      ...(finite(offset) ? { offset } : {}),
+    },
+    inputs: [],
+    outputs: [{ port: 'value' }],
+    notes: [],
+  };
+}
+
+function mapCircularMotion(node: FlowerNode): Mapping {
+  return {
+    type: 'circular-motion',
+    prefix: 'R',
+    params: {},
+    inputs: [],
+    outputs: [{ port: 'point' }],
+    notes: [`${named(node)}: its radius and speed are not read yet (Kleinflow's defaults are used)`],
+  };
+}

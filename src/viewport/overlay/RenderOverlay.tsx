@@ -1,0 +1,99 @@
+/**
+ * Direct manipulation in the render: the construction (points, infinite lines, circles, labels)
+ * drawn over the picture, hover in both directions (pointer → onHoverNode, hoveredNodeId →
+ * highlight), and draggable handles whose moves become params patches (onPreview while dragging,
+ * onCommit once on release; Shift snaps, Escape cancels). Mounted by the editor over the canvas.
+ *
+ * The pan/zoom handler of the pane must listen on an ancestor of this overlay (events bubble up
+ * from it) and ignore a pointerdown whose `defaultPrevented` is set: that one grabbed a handle.
+ */
+import { type JSX, useMemo, useRef } from 'react';
+import type { View } from '../../../nodes/core/scene.ts';
+import type { GraphDoc } from '../../../nodes/graph/document.ts';
+import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
+import type { NodePatch } from './drag-patches.ts';
+import { OverlayShapes } from './OverlayShapes.tsx';
+import { SnapGuides } from './SnapGuides.tsx';
+import { placeHandles, placeOverlays, type Screen } from './screen.ts';
+import { useOverlayPointer } from './use-overlay-pointer.ts';
+
+export type { NodePatch } from './drag-patches.ts';
+
+export interface RenderOverlayProps {
+  doc: GraphDoc;
+  evaluation: Evaluation;
+  view: View;
+  width: number;
+  height: number;
+  hoveredNodeId: string | null;
+  onHoverNode(id: string | null): void;
+  /** Live while dragging (at most once per animation frame), no history. */
+  onPreview(patches: NodePatch[]): void;
+  /** On pointer-up after a drag: one undo step. */
+  onCommit(patches: NodePatch[]): void;
+  showLabels?: boolean;
+}
+
+const FALLBACK_COLOR = '#ffffff';
+
+export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
+  const { evaluation, view, width, height, hoveredNodeId, showLabels = true } = props;
+  const ref = useRef<SVGSVGElement>(null);
+  const screen = useMemo<Screen>(() => ({ view, width, height }), [view, width, height]);
+  // A pane not laid out yet (0 × 0) has no pixel mapping: draw nothing rather than NaNs.
+  const sized = width > 0 && height > 0;
+  const items = useMemo(
+    () => (sized ? placeOverlays(evaluation.scene.overlays, screen) : []),
+    [sized, evaluation, screen],
+  );
+  const handles = useMemo(
+    () =>
+      placeHandles(
+        sized ? evaluation.scene.handles : [],
+        (id) => evaluation.analysis.nodes.get(id)?.def?.color ?? FALLBACK_COLOR,
+        screen,
+      ),
+    [sized, evaluation, screen],
+  );
+  const { drag, hoverHandle } = useOverlayPointer(ref, {
+    evaluation,
+    screen,
+    items,
+    handles,
+    onHoverNode: props.onHoverNode,
+    onPreview: props.onPreview,
+    onCommit: props.onCommit,
+  });
+  const cursor = drag ? 'grabbing' : hoverHandle ? 'grab' : undefined;
+  return (
+    <svg
+      ref={ref}
+      className="kf-render-overlay"
+      width={width}
+      height={height}
+      viewBox={`0 0 ${width} ${height}`}
+      role="img"
+      aria-label="Construction overlay: drag the handles to move points and circles"
+      style={{
+        position: 'absolute',
+        inset: 0,
+        touchAction: 'none',
+        userSelect: 'none',
+        overflow: 'hidden',
+        cursor,
+      }}
+    >
+      <OverlayShapes
+        items={items}
+        handles={handles}
+        width={width}
+        height={height}
+        hoveredNodeId={drag ? drag.target.nodeId : hoveredNodeId}
+        hoverHandle={hoverHandle}
+        dragTarget={drag?.target ?? null}
+        showLabels={showLabels}
+      />
+      {drag?.snap && <SnapGuides screen={screen} guide={drag.snap.guide} at={drag.snap.at} />}
+    </svg>
+  );
+}

@@ -1,0 +1,97 @@
+/**
+ * A handle drag → params patches (pure). The node type's `drag` maps the new handle position to
+ * values of its inputs; a value aimed at a WIRED point input moves the upstream node that makes
+ * that point instead (through its first handle, recursively), so the construction stays wired.
+ * Other wired keys are dropped: their value comes from the wire.
+ */
+import { portValueToJson } from '../../../nodes/core/port-values.ts';
+import type { Vec2 } from '../../../nodes/core/values.ts';
+import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
+import { MAX_FORWARD_DEPTH } from './constants.ts';
+
+/** New values (document form) for some of a node's params, as the editor applies them. */
+export interface NodePatch {
+  nodeId: string;
+  params: Record<string, unknown>;
+}
+
+export interface HandleRef {
+  readonly nodeId: string;
+  readonly handle: string;
+}
+
+const isVec2 = (v: unknown): v is Vec2 =>
+  Array.isArray(v) && v.length === 2 && v.every((x) => typeof x === 'number' && Number.isFinite(x));
+
+/** The first handle a node offers (hidden nodes included), used when a drag is forwarded to it. */
+export function firstHandle(evaluation: Evaluation, nodeId: string): string | undefined {
+  const def = evaluation.analysis.nodes.get(nodeId)?.def;
+  const result = evaluation.nodes.get(nodeId);
+  if (!def?.handles || !result?.ctx || !result.outputs) return undefined;
+  try {
+    return def.handles(result.ctx, result.outputs)[0]?.handle;
+  } catch {
+    return undefined;
+  }
+}
+
+/**
+ * The patches that move `target` to world point `to`: the dragged node's own unconnected keys
+ * first, then upstream nodes in the order the drag reached them.
+ */
+export function dragPatches(
+  evaluation: Evaluation,
+  target: HandleRef,
+  to: Vec2,
+  maxDepth = MAX_FORWARD_DEPTH,
+): NodePatch[] {
+  const byNode = new Map<string, Record<string, unknown>>();
+  const visit = (nodeId: string, handle: string, at: Vec2, depth: number) => {
+    const def = evaluation.analysis.nodes.get(nodeId)?.def;
+    const ctx = evaluation.nodes.get(nodeId)?.ctx;
+    if (!def?.drag || !ctx) return;
+    let patch: Readonly<Record<string, unknown>>;
+    try {
+      patch = def.drag(handle, at, ctx);
+    } catch {
+      return; // a node that cannot follow this position keeps its params
+    }
+    const incoming = evaluation.analysis.incoming.get(nodeId);
+    for (const [key, value] of Object.entries(patch)) {
+      const edge = incoming?.get(key)?.[0];
+      if (!edge) {
+        const own = byNode.get(nodeId) ?? {};
+        own[key] = value;
+        byNode.set(nodeId, own);
+        continue;
+      }
+      if (def.inputs[key]?.type !== 'point' || depth >= maxDepth || !isVec2(value)) continue;
+      const upstream = firstHandle(evaluation, edge.from.node);
+      if (upstream !== undefined) visit(edge.from.node, upstream, value, depth + 1);
+    }
+  };
+  visit(target.nodeId, target.handle, to, 0);
+  return [...byNode].map(([nodeId, params]) => ({ nodeId, params }));
+}
+
+/**
+ * The values the patched keys had before the drag (document form), to put back on Escape. A key
+ * the document did not store yet gets the value it evaluated to (its default), which is the same.
+ */
+export function originalParams(evaluation: Evaluation, patches: readonly NodePatch[]): NodePatch[] {
+  return patches.map(({ nodeId, params }) => {
+    const entry = evaluation.analysis.nodes.get(nodeId);
+    const ctx = evaluation.nodes.get(nodeId)?.ctx;
+    const stored = entry?.node.params ?? {};
+    const original: Record<string, unknown> = {};
+    for (const key of Object.keys(params)) {
+      if (Object.hasOwn(stored, key)) original[key] = stored[key];
+      else {
+        const spec = entry?.def?.inputs[key];
+        const value = spec ? ctx?.inputs[key] : ctx?.params[key];
+        original[key] = spec && value !== undefined ? portValueToJson(spec.type, value) : value;
+      }
+    }
+    return { nodeId, params: original };
+  });
+}

@@ -1,0 +1,109 @@
+/**
+ * Every GL object of one context: the program cache, the resolve pass, an empty vertex array.
+ * The whole thing is dropped on context loss and rebuilt on restore. Draw calls set all the state
+ * they rely on, so the interactive loop and an export can interleave their draws.
+ */
+import type { UniformEntry } from '../../shader-gen/glsl/values.ts';
+import { ProgramCache } from './program-cache.ts';
+import { createTarget, type RenderTarget, readTopRowFirst } from './render-target.ts';
+import { ResolvePass } from './resolve-pass.ts';
+import { type FrameParams, type GpuProgram, setFrameUniforms, uploadUniforms } from './uniforms.ts';
+
+export class Renderer {
+  readonly programs: ProgramCache;
+  private readonly resolvePass: ResolvePass;
+  private readonly vao: WebGLVertexArrayObject | null;
+
+  constructor(readonly gl: WebGL2RenderingContext) {
+    this.programs = new ProgramCache(gl);
+    this.resolvePass = new ResolvePass(gl);
+    this.vao = gl.createVertexArray();
+    // Enable the extensions once (getExtension enables them for the context).
+    gl.getExtension('EXT_color_buffer_float');
+    gl.getExtension('EXT_float_blend');
+    gl.getExtension('KHR_parallel_shader_compile');
+  }
+
+  /** The largest square tile this context can render into. */
+  maxTile(): number {
+    const gl = this.gl;
+    return Math.min(gl.getParameter(gl.MAX_RENDERBUFFER_SIZE), gl.getParameter(gl.MAX_TEXTURE_SIZE));
+  }
+
+  /**
+   * Draws sample number `k` (0-based) of `frame` into `target`'s first width×height pixels and
+   * folds it in (render-target.ts AccumulationMode): `sum` adds (rgb·a, a) to a buffer cleared at
+   * k = 0; `mean` blends dst ← dst + (src − dst)/(k+1) (constant weight 1/(k+1); k = 0 replaces).
+   */
+  drawSample(
+    gp: GpuProgram,
+    uniforms: readonly UniformEntry[],
+    target: RenderTarget,
+    width: number,
+    height: number,
+    frame: FrameParams,
+    k: number,
+  ): void {
+    const gl = this.gl;
+    gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
+    gl.viewport(0, 0, width, height);
+    gl.useProgram(gp.program);
+    if (gp.uploaded !== uniforms) uploadUniforms(gl, gp, uniforms);
+    setFrameUniforms(gl, gp, frame);
+    gl.enable(gl.BLEND);
+    gl.blendEquation(gl.FUNC_ADD);
+    if (target.mode === 'sum') {
+      if (k === 0) {
+        gl.clearColor(0, 0, 0, 0);
+        gl.clear(gl.COLOR_BUFFER_BIT);
+      }
+      gl.blendFuncSeparate(gl.SRC_ALPHA, gl.ONE, gl.ONE, gl.ONE);
+    } else {
+      gl.blendColor(0, 0, 0, 1 / (k + 1));
+      gl.blendFunc(gl.CONSTANT_ALPHA, gl.ONE_MINUS_CONSTANT_ALPHA);
+    }
+    gl.bindVertexArray(this.vao);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+    gl.bindVertexArray(null);
+    gl.disable(gl.BLEND);
+  }
+
+  /** Resolves `samples` accumulated samples to sRGB on the canvas (its drawing buffer is width×height). */
+  present(target: RenderTarget, samples: number, width: number, height: number): void {
+    this.resolvePass.draw(target.texture, this.resolveCount(target, samples), null, width, height);
+  }
+
+  /** Resolves width×height of `target` into `scratch` (RGBA8) and reads it back, top row first. */
+  readResolved(
+    target: RenderTarget,
+    samples: number,
+    scratch: RenderTarget,
+    width: number,
+    height: number,
+  ): Uint8ClampedArray {
+    const gl = this.gl;
+    this.resolvePass.draw(target.texture, this.resolveCount(target, samples), scratch.framebuffer, width, height);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, scratch.framebuffer);
+    const pixels = readTopRowFirst(gl, width, height);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    return pixels;
+  }
+
+  private resolveCount(target: RenderTarget, samples: number): number {
+    return target.mode === 'sum' ? samples : 1;
+  }
+
+  /** A float accumulation target and its 8-bit readback twin. */
+  createTargets(width: number, height: number): { accum: RenderTarget; readback: RenderTarget } {
+    return {
+      accum: createTarget(this.gl, width, height, 'accumulation'),
+      readback: createTarget(this.gl, width, height, 'rgba8'),
+    };
+  }
+
+  dispose(): void {
+    this.programs.dispose();
+    this.resolvePass.dispose();
+    if (!this.gl.isContextLost()) this.gl.deleteVertexArray(this.vao);
+  }
+}

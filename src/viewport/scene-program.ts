@@ -1,0 +1,179 @@
+/**
+ * Which program draws the current scene: the uniform program of its structure (shared by every
+ * value edit), or, after a quiet spell, the baked program of its exact values. Reports the
+ * compiler's and the driver's diagnostics whenever they change, and keeps the compile counts
+ * across context losses.
+ */
+import { type Diagnostic, diag } from '../../nodes/core/diagnostics.ts';
+import type { Scene } from '../../nodes/core/scene.ts';
+import { type CompiledProgram, type CompileOptions, compile } from '../../shader-gen/compile.ts';
+import type { UniformEntry } from '../../shader-gen/glsl/values.ts';
+import { type PendingBuild, programKey } from './program-cache.ts';
+import type { Renderer } from './renderer.ts';
+import type { GpuProgram } from './uniforms.ts';
+
+export interface SceneProgram {
+  readonly gp: GpuProgram;
+  readonly uniforms: readonly UniformEntry[];
+  readonly baked: boolean;
+}
+
+/** What a new scene changed: nothing that shows, only values (same program), or the structure. */
+export type SceneChange = 'same' | 'values' | 'structure';
+
+const UNIFORM: CompileOptions = { variant: 'color' };
+const BAKED: CompileOptions = { variant: 'color', baked: true };
+
+function sameUniforms(a: readonly UniformEntry[], b: readonly UniformEntry[]): boolean {
+  if (a.length !== b.length) return false;
+  for (let i = 0; i < a.length; i++) {
+    const x = a[i];
+    const y = b[i];
+    if (x.name !== y.name || x.type !== y.type || x.value.length !== y.value.length) return false;
+    for (let j = 0; j < x.value.length; j++) if (!Object.is(x.value[j], y.value[j])) return false;
+  }
+  return true;
+}
+
+/** The shader generator threw (a bug, not a user error): report it like a compile failure. */
+function generate(scene: Scene, options: CompileOptions): CompiledProgram | Diagnostic[] {
+  try {
+    return compile(scene, options);
+  } catch (e) {
+    return [diag('shaderCompile', {}, `shader generator: ${(e as Error).message}`)];
+  }
+}
+
+export class SceneProgramBuilder {
+  private compiled: CompiledProgram | null = null;
+  private program: SceneProgram | null = null;
+  /** Bumped by every change that shows; the bake belongs to one version. */
+  private version = 0;
+  private changedAt = 0;
+  private bake: { version: number; compiled: CompiledProgram; build: PendingBuild | null; done: boolean } | null =
+    null;
+  private reported: string | null = null;
+  private compilesBefore = 0;
+  private bakedBefore = 0;
+
+  constructor(private readonly onDiagnostics: (d: Diagnostic[]) => void) {}
+
+  /** Takes `scene`: compiles only when its structure is new to the cache. */
+  apply(renderer: Renderer, scene: Scene, now: number): SceneChange {
+    const compiled = generate(scene, UNIFORM);
+    if (Array.isArray(compiled)) {
+      this.fail(compiled);
+      return 'structure';
+    }
+    const prev = this.compiled;
+    const sameStructure = prev !== null && prev.structureKey === compiled.structureKey;
+    if (sameStructure && this.program && sameUniforms(prev.uniforms, compiled.uniforms)) return 'same';
+    this.compiled = compiled;
+    this.version++;
+    this.changedAt = now;
+    this.bake = null;
+    const built = renderer.programs.obtain(compiled, UNIFORM);
+    if (built.ok) {
+      this.program = { gp: built.value, uniforms: compiled.uniforms, baked: false };
+      this.report(compiled.diagnostics);
+    } else {
+      this.program = null;
+      this.report([...compiled.diagnostics, ...built.error]);
+    }
+    return sameStructure ? 'values' : 'structure';
+  }
+
+  /** The uniform program of the last applied scene; null when it did not compile. */
+  current(): SceneProgram | null {
+    return this.program;
+  }
+
+  /**
+   * Idle bake, one step per frame: once the scene has been still for idleMs, generate and start
+   * compiling the baked program; in a later frame (when the driver is done) return it.
+   */
+  pollBake(renderer: Renderer, scene: Scene, now: number, idleMs: number): SceneProgram | null {
+    if (this.bakeDueIn(now, idleMs) !== 0) return null;
+    if (!this.bake || this.bake.version !== this.version) {
+      const compiled = generate(scene, BAKED);
+      if (Array.isArray(compiled)) {
+        this.bake = { version: this.version, compiled: this.compiled!, build: null, done: true };
+        return null;
+      }
+      const hit = renderer.programs.peek(programKey(compiled, BAKED));
+      this.bake = { version: this.version, compiled, build: null, done: hit !== undefined };
+      if (hit) return { gp: hit, uniforms: compiled.uniforms, baked: true };
+      this.bake.build = renderer.programs.begin(compiled, BAKED);
+      return null;
+    }
+    const result = this.bake.build ? renderer.programs.poll(this.bake.build) : undefined;
+    if (!result) return null;
+    this.bake.done = true;
+    if (!result.ok) {
+      // The uniform program works, so the picture is right; only the speed-up is lost.
+      console.warn('[kleinflow] baked shader failed; staying on the uniform one', result.error);
+      return null;
+    }
+    return { gp: result.value, uniforms: this.bake.compiled.uniforms, baked: true };
+  }
+
+  bakeInFlight(): boolean {
+    return this.bake !== null && !this.bake.done && this.bake.version === this.version;
+  }
+
+  /** Milliseconds until the bake is due (0: now), or null when there is nothing to bake. */
+  bakeDueIn(now: number, idleMs: number): number | null {
+    if (!this.program || !Number.isFinite(idleMs)) return null;
+    if (this.bake && this.bake.version === this.version && this.bake.done) return null;
+    if (this.bake && this.bake.version === this.version) return 0;
+    return Math.max(0, this.changedAt + idleMs - now);
+  }
+
+  /** For export: the baked program of `scene` (built now), else its uniform program. */
+  exportProgram(renderer: Renderer, scene: Scene): SceneProgram {
+    const problems: Diagnostic[] = [];
+    for (const options of [BAKED, UNIFORM]) {
+      const compiled = generate(scene, options);
+      if (Array.isArray(compiled)) {
+        problems.push(...compiled);
+        continue;
+      }
+      const built = renderer.programs.obtain(compiled, options);
+      if (built.ok) return { gp: built.value, uniforms: compiled.uniforms, baked: options.baked === true };
+      problems.push(...built.error);
+    }
+    throw new Error(`the scene does not compile: ${problems.map((d) => d.message).join('; ')}`);
+  }
+
+  /** The context is gone: keep the counts, forget every program (the next apply compiles afresh). */
+  forget(renderer: Renderer | null): void {
+    this.compilesBefore += renderer?.programs.compiles ?? 0;
+    this.bakedBefore += renderer?.programs.bakedCompiles ?? 0;
+    this.compiled = null;
+    this.program = null;
+    this.bake = null;
+  }
+
+  compiles(renderer: Renderer | null): number {
+    return this.compilesBefore + (renderer?.programs.compiles ?? 0);
+  }
+
+  bakedCompiles(renderer: Renderer | null): number {
+    return this.bakedBefore + (renderer?.programs.bakedCompiles ?? 0);
+  }
+
+  private fail(problems: Diagnostic[]): void {
+    this.compiled = null;
+    this.program = null;
+    this.bake = null;
+    this.version++;
+    this.report(problems);
+  }
+
+  private report(diagnostics: readonly Diagnostic[]): void {
+    const key = JSON.stringify(diagnostics);
+    if (key === this.reported) return;
+    this.reported = key;
+    this.onDiagnostics([...diagnostics]);
+  }
+}

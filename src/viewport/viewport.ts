@@ -1,0 +1,281 @@
+/**
+ * The live picture: a Scene drawn into a canvas with progressive accumulation. One jittered sample
+ * per animation frame while anything moves; once still, samples accumulate up to the scene's
+ * `samples` and drawing stops (an idle page costs no GPU). Value edits reuse the linked program
+ * (uniform upload only); after `idleBakeMs` without edits a baked program (values as literals,
+ * several times faster) takes over until the next edit. Compile errors keep the last good frame on
+ * screen and are reported with node ids. A lost WebGL context is rebuilt when the browser restores it.
+ */
+import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import type { Scene, View } from '../../nodes/core/scene.ts';
+import { sampleOffset } from '../../shader-gen/view.ts';
+import { type SceneProgram, SceneProgramBuilder } from './scene-program.ts';
+import { createTarget, disposeTarget, type RenderTarget } from './render-target.ts';
+import { Renderer } from './renderer.ts';
+import { renderTiled } from './tiled-render.ts';
+
+export interface ViewportOptions {
+  onDiagnostics?(d: Diagnostic[]): void;
+  onFrame?(info: { samples: number; target: number; ms: number }): void;
+  /** Stillness before the baked program is built (default 600; Infinity: never bake). */
+  idleBakeMs?: number;
+}
+
+export interface ViewportStats {
+  /** Uniform programs compiled (a value edit or a view change never adds one). */
+  readonly compiles: number;
+  /** Baked programs compiled (idle bake, export): extra, counted apart. */
+  readonly bakedCompiles: number;
+  /** Frames drawn (each one sample). */
+  readonly frames: number;
+  /** Samples accumulated in the picture now. */
+  readonly samples: number;
+  /** Whether the baked program draws now. */
+  readonly baked: boolean;
+}
+
+export interface RenderToPixelsOptions {
+  width: number;
+  height: number;
+  samples: number;
+  view?: View;
+  transparent?: boolean;
+  onProgress?(f: number): boolean | void;
+  tile?: number;
+}
+
+const CONTEXT_ATTRIBUTES: WebGLContextAttributes = {
+  alpha: false,
+  antialias: false,
+  depth: false,
+  stencil: false,
+  preserveDrawingBuffer: false,
+  powerPreference: 'high-performance',
+};
+
+export class Viewport {
+  private readonly gl: WebGL2RenderingContext;
+  private renderer: Renderer | null;
+  private readonly programs: SceneProgramBuilder;
+  private scene: Scene | null = null;
+  private explicitView: View | null = null;
+  private sceneDirty = false;
+  /** The program drawing now, or null while the scene does not compile (the last frame stays). */
+  private active: SceneProgram | null = null;
+  private accum: RenderTarget | null = null;
+  private samplesDone = 0;
+  /** The next frame starts the accumulation afresh (until then the old picture stays). */
+  private restartPending = true;
+  private framesDrawn = 0;
+  private raf = 0;
+  private wakeTimer: ReturnType<typeof setTimeout> | undefined;
+  private lost = false;
+  private disposed = false;
+  private readonly idleBakeMs: number;
+  private readonly detach: () => void;
+
+  constructor(
+    private readonly canvas: HTMLCanvasElement,
+    private readonly options: ViewportOptions = {},
+  ) {
+    const gl = canvas.getContext('webgl2', CONTEXT_ATTRIBUTES);
+    if (!gl) throw new Error('WebGL2 is not available in this browser');
+    this.gl = gl;
+    this.idleBakeMs = options.idleBakeMs ?? 600;
+    this.renderer = new Renderer(gl);
+    this.programs = new SceneProgramBuilder((d) => options.onDiagnostics?.(d));
+    const onLost = (e: Event) => {
+      e.preventDefault(); // tells the browser we want the context back
+      this.lost = true;
+      this.stopLoop();
+      this.programs.forget(this.renderer);
+      this.renderer = null; // every GL object died with the context
+      this.accum = null;
+      this.active = null;
+      this.restartPending = true;
+    };
+    const onRestored = () => {
+      this.lost = false;
+      this.renderer = new Renderer(gl);
+      this.sceneDirty = this.scene !== null;
+      this.requestFrame();
+    };
+    canvas.addEventListener('webglcontextlost', onLost);
+    canvas.addEventListener('webglcontextrestored', onRestored);
+    this.detach = () => {
+      canvas.removeEventListener('webglcontextlost', onLost);
+      canvas.removeEventListener('webglcontextrestored', onRestored);
+    };
+  }
+
+  get stats(): ViewportStats {
+    return {
+      compiles: this.programs.compiles(this.renderer),
+      bakedCompiles: this.programs.bakedCompiles(this.renderer),
+      frames: this.framesDrawn,
+      samples: this.samplesDone,
+      baked: this.active?.baked ?? false,
+    };
+  }
+
+  /** Recompiles only when the structure changes (else uploads uniforms); restarts accumulation. */
+  setScene(scene: Scene): void {
+    this.scene = scene;
+    this.sceneDirty = true;
+    this.requestFrame();
+  }
+
+  /** Restarts accumulation; never compiles. */
+  setView(view: View): void {
+    this.explicitView = view;
+    this.restart();
+  }
+
+  setSize(width: number, height: number, dpr = globalThis.devicePixelRatio || 1): void {
+    const w = Math.max(1, Math.round(width * dpr));
+    const h = Math.max(1, Math.round(height * dpr));
+    if (this.canvas.width !== w) this.canvas.width = w;
+    if (this.canvas.height !== h) this.canvas.height = h;
+    this.canvas.style.width = `${width}px`;
+    this.canvas.style.height = `${height}px`;
+    this.restart();
+  }
+
+  /**
+   * The picture at any size, offscreen and tiled, with the full sample count: RGBA 8-bit sRGB,
+   * top row first; null when onProgress returned false. Uses the baked program when it builds.
+   */
+  async renderToPixels(opts: RenderToPixelsOptions): Promise<Uint8ClampedArray | null> {
+    const scene = this.scene;
+    if (!scene) throw new Error('renderToPixels: no scene was set');
+    const renderer = this.requireRenderer();
+    const program = this.programs.exportProgram(renderer, scene);
+    return renderTiled(() => this.requireRenderer(), () => program, {
+      width: opts.width,
+      height: opts.height,
+      samples: opts.samples,
+      view: opts.view ?? this.view(scene),
+      transparent: opts.transparent ?? false,
+      tile: opts.tile,
+      onProgress: opts.onProgress,
+    });
+  }
+
+  /** The picture on the canvas now (resolved from the accumulation buffer), top row first; null before the first frame. */
+  snapshot(): Uint8ClampedArray | null {
+    const r = this.renderer;
+    if (!r || !this.accum || this.samplesDone === 0) return null;
+    const { width, height } = this.accum;
+    const scratch = createTarget(r.gl, width, height, 'rgba8');
+    try {
+      return r.readResolved(this.accum, this.samplesDone, scratch, width, height);
+    } finally {
+      disposeTarget(r.gl, scratch);
+    }
+  }
+
+  dispose(): void {
+    this.disposed = true;
+    this.stopLoop();
+    this.detach();
+    if (this.renderer) {
+      disposeTarget(this.gl, this.accum);
+      this.renderer.dispose();
+    }
+    this.renderer = null;
+    this.accum = null;
+    this.active = null;
+  }
+
+  private view(scene: Scene): View {
+    return this.explicitView ?? scene.view;
+  }
+
+  private requireRenderer(): Renderer {
+    if (this.disposed) throw new Error('the viewport was disposed');
+    if (!this.renderer) throw new Error('the WebGL context is lost');
+    return this.renderer;
+  }
+
+  private restart(): void {
+    this.restartPending = true;
+    this.requestFrame();
+  }
+
+  private requestFrame(): void {
+    if (this.raf !== 0 || this.lost || this.disposed) return;
+    clearTimeout(this.wakeTimer);
+    this.wakeTimer = undefined;
+    this.raf = requestAnimationFrame((now) => this.tick(now));
+  }
+
+  private stopLoop(): void {
+    if (this.raf !== 0) cancelAnimationFrame(this.raf);
+    this.raf = 0;
+    clearTimeout(this.wakeTimer);
+    this.wakeTimer = undefined;
+  }
+
+  private tick(now: number): void {
+    this.raf = 0;
+    const renderer = this.renderer;
+    const scene = this.scene;
+    if (!renderer || !scene || this.lost || this.disposed) return;
+    if (this.sceneDirty) {
+      this.sceneDirty = false;
+      const change = this.programs.apply(renderer, scene, now);
+      if (change !== 'same' || !this.active) {
+        // A scene that does not compile leaves active null: nothing is drawn, the last frame stays.
+        this.active = this.programs.current();
+        this.restartPending = true;
+      }
+    }
+    const baked = this.programs.pollBake(renderer, scene, now, this.idleBakeMs);
+    if (baked) this.active = baked;
+    const target = Math.max(1, scene.samples);
+    if (this.active && (this.restartPending || this.samplesDone < target)) {
+      this.drawFrame(renderer, this.active, scene, target);
+    }
+    this.schedule(now, target);
+  }
+
+  private drawFrame(renderer: Renderer, program: SceneProgram, scene: Scene, target: number): void {
+    const t0 = performance.now();
+    const width = this.canvas.width;
+    const height = this.canvas.height;
+    if (!this.accum || this.accum.width !== width || this.accum.height !== height) {
+      disposeTarget(this.gl, this.accum);
+      this.accum = createTarget(this.gl, width, height, 'accumulation');
+      this.restartPending = true;
+    }
+    const k = this.restartPending ? 0 : this.samplesDone;
+    this.restartPending = false;
+    const frame = {
+      width,
+      height,
+      offsetX: 0,
+      offsetY: 0,
+      view: this.view(scene),
+      jitter: sampleOffset(k),
+      bgAlpha: 1,
+    };
+    renderer.drawSample(program.gp, program.uniforms, this.accum, width, height, frame, k);
+    this.samplesDone = k + 1;
+    renderer.present(this.accum, this.samplesDone, width, height);
+    this.framesDrawn++;
+    this.options.onFrame?.({ samples: this.samplesDone, target, ms: performance.now() - t0 });
+  }
+
+  /** Keeps the loop running while there is work; sleeps (no frames at all) until the bake is due. */
+  private schedule(now: number, target: number): void {
+    const drawing = this.active !== null && (this.restartPending || this.samplesDone < target);
+    if (this.sceneDirty || drawing || this.programs.bakeInFlight()) {
+      this.requestFrame();
+      return;
+    }
+    const due = this.programs.bakeDueIn(now, this.idleBakeMs);
+    if (due !== null) this.wakeTimer = setTimeout(() => this.requestFrame(), due);
+  }
+}
+
+export { attachPanZoom } from './pan-zoom.ts';

@@ -1,0 +1,138 @@
+/**
+ * The browser side of the GPU benchmark (bundled by tests/support/bundle.ts): compile/link times,
+ * frame times at 512² and edit latencies, measured with the runtime's own helpers. Every frame ends
+ * with a readPixels, the only reliable wait in Chrome (gl.finish returns at once).
+ */
+import type { Scene } from '../../nodes/core/scene.ts';
+import { type CompileOptions, compile } from '../../shader-gen/compile.ts';
+import { sampleOffset } from '../../shader-gen/view.ts';
+import { buildProgram } from '../../src/viewport/gl-program.ts';
+import { createTarget } from '../../src/viewport/render-target.ts';
+import { type GpuProgram, locateUniforms, setFrameUniforms, uploadUniforms } from '../../src/viewport/uniforms.ts';
+import type { UniformEntry } from '../../shader-gen/glsl/values.ts';
+
+export const SIZE = 512;
+
+const canvas = document.querySelector('canvas') as HTMLCanvasElement;
+const gl = canvas.getContext('webgl2') as WebGL2RenderingContext;
+gl.getExtension('EXT_color_buffer_float');
+gl.getExtension('EXT_float_blend');
+/** RGBA32F: the colour variant's accumulation format and the probe variant's output. */
+const target = createTarget(gl, SIZE, SIZE, 'accumulation');
+const vao = gl.createVertexArray();
+const pixel = new Float32Array(4);
+/** Makes every source unique, so Chrome's program cache never answers for the driver. */
+let nonce = 0;
+
+interface Built {
+  readonly gp: GpuProgram;
+  readonly uniforms: readonly UniformEntry[];
+  readonly ms: number;
+}
+
+function build(vertex: string, fragment: string, uniforms: readonly UniformEntry[], view: Scene['view']): Built {
+  const t0 = performance.now();
+  const linked = buildProgram(gl, vertex, `${fragment}\n// bench ${nonce++}\n`);
+  if (!linked.ok) throw new Error(linked.error.map((d) => d.message).join('; '));
+  const gp = locateUniforms(gl, linked.value, uniforms);
+  // The first draw finishes the driver's lazy work: count it as part of getting the program ready.
+  drawFrame({ gp, uniforms, ms: 0 }, 0, view);
+  return { gp, uniforms, ms: performance.now() - t0 };
+}
+
+/** Draws sample k into the 512² target and waits for it (1-pixel readPixels); returns ms. */
+function drawFrame(b: Built, k: number, view: Scene['view']): number {
+  const t0 = performance.now();
+  gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
+  gl.viewport(0, 0, SIZE, SIZE);
+  gl.useProgram(b.gp.program);
+  if (b.gp.uploaded !== b.uniforms) uploadUniforms(gl, b.gp, b.uniforms);
+  const frame = { width: SIZE, height: SIZE, offsetX: 0, offsetY: 0, view, jitter: sampleOffset(k), bgAlpha: 1 };
+  setFrameUniforms(gl, b.gp, frame);
+  gl.bindVertexArray(vao);
+  gl.drawArrays(gl.TRIANGLES, 0, 3);
+  gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.FLOAT, pixel);
+  return performance.now() - t0;
+}
+
+const median = (xs: number[]) => {
+  const s = [...xs].sort((a, b) => a - b);
+  return s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+};
+
+/** Median frame time over `frames` frames (after one warm-up). */
+function frameTime(b: Built, view: Scene['view'], frames: number): number {
+  drawFrame(b, 0, view);
+  return median(Array.from({ length: frames }, (_, k) => drawFrame(b, k + 1, view)));
+}
+
+function buildScene(scene: Scene, options: CompileOptions): Built {
+  const c = compile(scene, options);
+  return build(c.vertexSource, c.source, c.uniforms, scene.view);
+}
+
+export interface GpuBenchResult {
+  compileUniformMs: number;
+  compileBakedMs: number;
+  frameUniformMs: number;
+  frameBakedMs: number;
+  /** Probe variant (the hand-written shaders' output) when a hand-written shader exists. */
+  probe: { uniformMs: number; bakedMs: number; handMs: number } | null;
+  structuralEditMs: number;
+  valueEditMs: number;
+}
+
+function measure(scene: Scene, hand: string | null, frames: number): GpuBenchResult {
+  const view = scene.view;
+  const uniform = buildScene(scene, { variant: 'color' });
+  const baked = buildScene(scene, { variant: 'color', baked: true });
+  const frameUniformMs = frameTime(uniform, view, frames);
+  const frameBakedMs = frameTime(baked, view, frames);
+  let probe: GpuBenchResult['probe'] = null;
+  if (hand !== null) {
+    const vertex = compile(scene, { variant: 'probe' }).vertexSource;
+    probe = {
+      uniformMs: frameTime(buildScene(scene, { variant: 'probe' }), view, frames),
+      bakedMs: frameTime(buildScene(scene, { variant: 'probe', baked: true }), view, frames),
+      handMs: frameTime(build(vertex, hand, [], view), view, frames),
+    };
+  }
+  // Structural edit (an element fewer, or one more): generate, compile, link, first frame.
+  const edited: Scene = {
+    ...scene,
+    elements: scene.elements.length > 1 ? scene.elements.slice(0, -1) : [...scene.elements, ...scene.elements],
+  };
+  let t0 = performance.now();
+  buildScene(edited, { variant: 'color' });
+  const structuralEditMs = performance.now() - t0;
+  // Value edit (what a drag does per frame): generate (the viewport compares uniforms), upload, frame.
+  t0 = performance.now();
+  const moved = compile(structuredClone(scene), { variant: 'color' });
+  const nudged = moved.uniforms.map((u) =>
+    u.type === 'int' ? u : { ...u, value: u.value.map((v) => v * (1 + 1e-4)) },
+  );
+  drawFrame({ gp: uniform.gp, uniforms: nudged, ms: 0 }, 0, view);
+  const valueEditMs = performance.now() - t0;
+  return {
+    compileUniformMs: uniform.ms,
+    compileBakedMs: baked.ms,
+    frameUniformMs,
+    frameBakedMs,
+    probe,
+    structuralEditMs,
+    valueEditMs,
+  };
+}
+
+function renderer(): string {
+  const info = gl.getExtension('WEBGL_debug_renderer_info');
+  return String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+}
+
+const bench = { measure, renderer };
+declare global {
+  interface Window {
+    kfBench: typeof bench;
+  }
+}
+window.kfBench = bench;

@@ -1,0 +1,112 @@
+/**
+ * GPU benchmark (part of `npm run bench`; tests/bench/run.ts imports this and calls run()): per
+ * example, in one Chromium session, compile+link time, frame time at 512² of the uniform and the
+ * baked program (and of the hand-written shader where one exists, against the generated probe
+ * variant it mirrors), and the latency of a structural and of a value edit. Prints a table; never
+ * fails on a time. Compare ratios within one run, never absolute times across runs or machines.
+ */
+import { readdirSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { launchChromium } from '../support/browser.ts';
+import { bundle } from '../support/bundle.ts';
+import { exampleScene } from '../src/viewport/fixtures.ts';
+import type { GpuBenchResult } from './gpu-page.ts';
+
+/** Frames per median (the brief asks for at least 5). */
+const FRAMES = 5;
+
+async function handWritten(): Promise<Map<string, string>> {
+  try {
+    const { HAND_WRITTEN } = await import('./hand-written/index.ts');
+    return new Map(HAND_WRITTEN.map((h) => [h.example, h.source]));
+  } catch (e) {
+    console.log(`(no hand-written shaders: ${(e as Error).message})`);
+    return new Map();
+  }
+}
+
+const ms = (x: number) => (x >= 100 ? x.toFixed(0) : x >= 10 ? x.toFixed(1) : x.toFixed(2));
+const ratio = (a: number, b: number) => `${(a / b).toFixed(2)}×`;
+
+function row(name: string, elements: number, r: GpuBenchResult): string[] {
+  return [
+    name,
+    String(elements),
+    ms(r.compileUniformMs),
+    ms(r.compileBakedMs),
+    ms(r.frameUniformMs),
+    ms(r.frameBakedMs),
+    ratio(r.frameUniformMs, r.frameBakedMs),
+    r.probe ? `${ratio(r.probe.bakedMs, r.probe.handMs)} / ${ratio(r.probe.uniformMs, r.probe.handMs)}` : '–',
+    ms(r.structuralEditMs),
+    ms(r.valueEditMs),
+  ];
+}
+
+const HEADER = [
+  'example',
+  'elems',
+  'compile ms',
+  'baked compile',
+  'frame ms',
+  'baked frame',
+  'baked speed-up',
+  'vs hand (baked / uniform)',
+  'struct edit ms',
+  'value edit ms',
+];
+
+function printTable(rows: string[][]): void {
+  const widths = HEADER.map((h, i) => Math.max(h.length, ...rows.map((r) => r[i].length)));
+  const line = (cells: string[]) => cells.map((c, i) => (i === 0 ? c.padEnd(widths[i]) : c.padStart(widths[i]))).join('  ');
+  console.log(line(HEADER));
+  console.log(widths.map((w) => '-'.repeat(w)).join('  '));
+  for (const r of rows) console.log(line(r));
+}
+
+export async function run(): Promise<void> {
+  const examplesDir = fileURLToPath(new URL('../../examples/', import.meta.url));
+  const names = readdirSync(examplesDir)
+    .filter((f) => f.endsWith('.kleinflow.json'))
+    .map((f) => f.slice(0, -'.kleinflow.json'.length))
+    .sort();
+  const hand = await handWritten();
+  const script = await bundle(fileURLToPath(new URL('./gpu-page.ts', import.meta.url)));
+  const browser = await launchChromium();
+  try {
+    const page = await browser.newPage();
+    await page.setContent('<!doctype html><canvas width="1" height="1"></canvas>');
+    await page.addScriptTag({ content: script });
+    console.log(`\nGPU (WebGL2): ${await page.evaluate(() => window.kfBench.renderer())}`);
+    console.log(
+      `512² frames, median of ${FRAMES} (each ended by readPixels); "vs hand" = generated probe ÷ hand-written probe frame time\n`,
+    );
+    const rows: string[][] = [];
+    for (const name of names) {
+      try {
+        const scene = exampleScene(name);
+        const r = await page.evaluate(([s, h, n]) => window.kfBench.measure(s, h, n), [
+          scene,
+          hand.get(name) ?? null,
+          FRAMES,
+        ] as const);
+        rows.push(row(name, scene.elements.length, r));
+      } catch (e) {
+        rows.push([name, '?', `failed: ${(e as Error).message.split('\n')[0]}`, ...HEADER.slice(3).map(() => '')]);
+      }
+    }
+    printTable(rows);
+    for (const name of hand.keys()) {
+      if (!names.includes(name)) console.log(`(hand-written shader for ${name}: no such example, skipped)`);
+    }
+    if (hand.size === 0) console.log('(hand-written comparison skipped: tests/bench/hand-written/ is absent)');
+  } finally {
+    await browser.close();
+  }
+}
+
+if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {
+  run().catch((e) => {
+    console.error(e);
+  });
+}

@@ -1,0 +1,150 @@
+/**
+ * GPU = CPU in real Chromium (WebGL2 through SwiftShader): every example's probe program, rendered
+ * at 256², agrees with the float64 interpreter at the pixel centres — same depth and escaped flag,
+ * final point within the float32 error model — on every pixel whose path stays ε away from the
+ * element boundaries (see compare.ts). Plus: new uniform values re-render without a new program,
+ * the baked program equals the uniform one, and the hand-written bench shaders draw the same picture.
+ */
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import type { Scene } from '../../nodes/core/scene.ts';
+import type { GraphDoc } from '../../nodes/graph/document.ts';
+import { compile } from '../../shader-gen/compile.ts';
+import { HAND_WRITTEN } from '../bench/hand-written/index.ts';
+import { exampleNames, loadExample, sceneOf } from '../support/examples.ts';
+import { compareColourWithCpu, compareImages, compareWithCpu, type ParityStats } from './compare.ts';
+import { GpuProbe, type ProbeImage } from './gpu-probe.ts';
+
+const SIZE = 256;
+const MIN_AGREEMENT = 0.995;
+
+let gpu: GpuProbe;
+const report: Record<string, Record<string, string | number>> = {};
+
+beforeAll(async () => {
+  gpu = await GpuProbe.open(SIZE, SIZE);
+});
+
+afterAll(async () => {
+  if (Object.keys(report).length > 0) console.table(report);
+  await gpu?.close();
+});
+
+async function renderProbe(scene: Scene, baked = false): Promise<ProbeImage> {
+  const program = compile(scene, { variant: 'probe', baked });
+  const index = await gpu.program(program.vertexSource, program.source);
+  return gpu.render(index, program.uniforms, scene.view);
+}
+
+const percent = (x: number) => `${(100 * x).toFixed(3)} %`;
+
+function record(name: string, stats: ParityStats, image: ProbeImage) {
+  report[name] = {
+    ...report[name],
+    agreement: percent(stats.agreement),
+    'raw (all px)': percent(stats.rawAgreement),
+    compared: stats.compared,
+    'excluded (near boundary)': stats.excluded,
+    'depth ≠': stats.depthMismatch,
+    'escaped ≠': stats.escapedMismatch,
+    'final ≠': stats.finalMismatch,
+    'GPU ms': Math.round(image.ms),
+  };
+}
+
+describe('GPU probe program = CPU interpreter (256², pixel centres)', () => {
+  const names = exampleNames();
+  it('has examples to compare', () => expect(names.length).toBeGreaterThan(0));
+
+  for (const name of names) {
+    it(`${name}: ≥ ${100 * MIN_AGREEMENT} % of pixels agree`, async () => {
+      const { scene } = loadExample(name);
+      const image = await renderProbe(scene);
+      const stats = compareWithCpu(scene, image);
+      record(name, stats, image);
+      expect(stats.compared).toBeGreaterThan(0.9 * stats.pixels);
+      expect(stats.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
+    });
+  }
+});
+
+describe('GPU colour program = CPU colouring (one sample per pixel centre, 8-bit sRGB)', () => {
+  for (const name of exampleNames()) {
+    it(`${name}: ≥ ${100 * MIN_AGREEMENT} % of pixels within ±2 levels`, async () => {
+      const { scene } = loadExample(name);
+      const program = compile(scene);
+      const index = await gpu.program(program.vertexSource, program.source);
+      const image = await gpu.render(index, program.uniforms, scene.view);
+      const stats = compareColourWithCpu(scene, image);
+      Object.assign((report[name] ??= {}), {
+        colour: percent(stats.agreement),
+        'colour worst (levels)': stats.worstLevels,
+      });
+      expect(stats.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
+    });
+  }
+});
+
+/** The document with one point node moved by (dx, dy). */
+function movePoint(doc: GraphDoc, id: string, dx: number, dy: number): GraphDoc {
+  return {
+    ...doc,
+    nodes: doc.nodes.map((n) =>
+      n.id === id ? { ...n, params: { ...n.params, x: Number(n.params.x) + dx, y: Number(n.params.y) + dy } } : n,
+    ),
+  };
+}
+
+describe('values are uniforms', () => {
+  it('a moved point re-renders with new uniforms and the same program: no compileShader call', async () => {
+    const { doc, scene } = loadExample('apollonian-gasket');
+    const before = compile(scene, { variant: 'probe' });
+    const moved = sceneOf(movePoint(doc, 'tAB', 0.03, -0.02));
+    const after = compile(moved, { variant: 'probe' });
+    expect(after.structureKey).toBe(before.structureKey);
+    expect(after.source).toBe(before.source);
+    expect(after.uniforms).not.toEqual(before.uniforms);
+
+    const index = await gpu.program(before.vertexSource, before.source);
+    const first = await gpu.render(index, before.uniforms, scene.view);
+    const compiles = await gpu.compileCount();
+    const second = await gpu.render(index, after.uniforms, moved.view);
+    expect(await gpu.compileCount()).toBe(compiles);
+
+    const changed = 1 - compareImages(first, second).agreement;
+    expect(changed).toBeGreaterThan(0.01); // the picture really changed…
+    const stats = compareWithCpu(moved, second);
+    expect(stats.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT); // …into the moved scene's picture
+  });
+});
+
+describe('baked program = uniform program', () => {
+  for (const name of ['hyperbolic-237', 'six-disks']) {
+    it(`${name}: the literal and the uniform program give the same depths`, async ({ skip }) => {
+      if (!exampleNames().includes(name)) skip();
+      const { scene } = loadExample(name);
+      const same = compareImages(await renderProbe(scene, false), await renderProbe(scene, true));
+      expect(same.agreement).toBeGreaterThanOrEqual(0.999);
+    });
+  }
+});
+
+describe('hand-written bench shaders draw the same picture as the generated ones', () => {
+  for (const shader of HAND_WRITTEN) {
+    it(`${shader.example}`, async () => {
+      const { scene } = loadExample(shader.example);
+      const generated = await renderProbe(scene);
+      const index = await gpu.program(compile(scene).vertexSource, shader.source);
+      const hand = await gpu.render(index, [], scene.view);
+      const same = compareImages(generated, hand);
+      const vsCpu = compareWithCpu(scene, hand);
+      report[`hand-written ${shader.example}`] = {
+        'same as generated': percent(same.agreement),
+        agreement: percent(vsCpu.agreement),
+        'GPU ms': Math.round(hand.ms),
+        'generated GPU ms': Math.round(generated.ms),
+      };
+      expect(same.agreement).toBeGreaterThanOrEqual(0.999);
+      expect(vsCpu.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
+    });
+  }
+});

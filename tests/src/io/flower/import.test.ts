@@ -1,0 +1,233 @@
+import { describe, expect, it } from 'vitest';
+import type { Diagnostic } from '../../../../nodes/core/diagnostics.ts';
+import type { ReflectionElement, InversionElement, TileSpec } from '../../../../nodes/core/scene.ts';
+import type { GraphDoc } from '../../../../nodes/graph/document.ts';
+import { evaluateGraph } from '../../../../nodes/graph/evaluate.ts';
+import { registry } from '../../../../nodes/types/index.ts';
+import { depthColour, hsvToRgb } from '../../../../shader-gen/colour.ts';
+import { interpret } from '../../../../shader-gen/interpret.ts';
+import { FLOWER_RENDER, importFlower, isFlowerDocument } from '../../../../src/io/flower/import.ts';
+import { circleMirror, fedge, fnode, fpoint, graph, lineMirror } from './support/flower-fixture.ts';
+
+function imported(json: unknown): { doc: GraphDoc; notes: Diagnostic[]; scene: ReturnType<typeof evaluateGraph>['scene']; errors: string[] } {
+  const r = importFlower(json);
+  if (!r.ok) throw new Error(r.diagnostics.map((d) => d.message).join('\n'));
+  const ev = evaluateGraph(r.doc, registry);
+  const errors = ev.diagnostics.filter((d) => d.severity === 'error').map((d) => `${d.nodeId}: ${d.message}`);
+  return { doc: r.doc, notes: r.notes, scene: ev.scene, errors };
+}
+const messages = (notes: Diagnostic[]) => notes.map((n) => n.message);
+
+describe('Flower import: recognising the format', () => {
+  it('recognises Flower graphs by shape and nothing else', () => {
+    expect(isFlowerDocument(graph(lineMirror('m', [0, 0], [1, 0], false)))).toBe(true);
+    expect(isFlowerDocument({ format: 'kleinflow', nodes: [], edges: [] })).toBe(false);
+    expect(isFlowerDocument({ nodes: [{ name: 'Point' }] })).toBe(false);
+    expect(isFlowerDocument([])).toBe(false);
+    const r = importFlower({ hello: 'world' });
+    expect(r.ok).toBe(false);
+    if (!r.ok) expect(r.diagnostics[0].code).toBe('KF501');
+  });
+});
+
+describe('Flower import: node types', () => {
+  it('Point: position from posX/posY; its first Float input drives y, the second x', () => {
+    const json = graph({
+      nodes: [fnode('Constant', 'k', { value: 3 }), fnode('Constant', 'j', { value: -2 }), fpoint('p', 1.5, -2.5)],
+      edges: [fedge('Float', 'k', 'p', 0), fedge('Float', 'j', 'p', 1, true)],
+    });
+    const { doc, errors, scene } = imported(json);
+    expect(errors).toEqual([]);
+    const point = doc.nodes.find((n) => n.type === 'point')!;
+    expect(point.params).toEqual({ x: 1.5, y: -2.5 });
+    const numbers = doc.nodes.filter((n) => n.type === 'number');
+    expect(numbers.map((n) => n.params.value)).toEqual([3, -2]);
+    const intoPoint = doc.edges.filter((e) => e.to.node === point.id).map((e) => [e.from.node, e.to.port]);
+    expect(intoPoint).toEqual([
+      [numbers[0].id, 'y'],
+      [numbers[1].id, 'x'],
+    ]);
+    expect(scene.handles.find((h) => h.nodeId === point.id)?.at).toEqual([-2, 3]);
+  });
+
+  it('Point without a saved position is placed at the origin with a note', () => {
+    const { doc, notes } = imported(graph({ nodes: [fnode('Point', 'p')], edges: [] }));
+    expect(doc.nodes[0].params).toEqual({ x: 0, y: 0 });
+    expect(messages(notes)).toEqual([expect.stringMatching(/no saved position/)]);
+  });
+
+  for (const reverse of [false, true]) {
+    it(`LineTwoPoints + LineMirror (reverse ${reverse}): same line, kept side ${reverse ? 'right' : 'left'} of p1 → p2`, () => {
+      const { doc, scene, errors, notes } = imported(graph(lineMirror('m', [1, 1], [3, 2], reverse)));
+      expect(errors).toEqual([]);
+      expect(notes).toEqual([]);
+      const line = doc.nodes.find((n) => n.type === 'line')!;
+      const [a, b] = ['a', 'b'].map((port) => doc.edges.find((e) => e.to.node === line.id && e.to.port === port)!.from.node);
+      expect(doc.nodes.find((n) => n.id === a)!.params).toEqual({ x: 1, y: 1 });
+      expect(doc.nodes.find((n) => n.id === b)!.params).toEqual({ x: 3, y: 2 });
+      expect(doc.nodes.find((n) => n.type === 'reflection')!.params).toEqual({ flip: reverse });
+      const [el] = scene.elements as ReflectionElement[];
+      expect(el.q).toEqual([1, 1]);
+      // Left of (1,1) → (3,2) is up-left, e.g. (1, 3); right is (3, 0).
+      const left = interpret(scene, [1, 3]);
+      const right = interpret(scene, [3, 0]);
+      expect([left.depth, right.depth]).toEqual(reverse ? [1, 0] : [0, 1]);
+    });
+  }
+
+  it('CircleThreePoints + CircleMirror: inversion in the circle through the three points', () => {
+    const { scene, errors } = imported(graph(circleMirror('c', [[2, 0], [0, 2], [-2, 0]])));
+    expect(errors).toEqual([]);
+    const [el] = scene.elements as InversionElement[];
+    expect(el.kind).toBe('inversion');
+    expect(el.c[0]).toBeCloseTo(0, 12);
+    expect(el.c[1]).toBeCloseTo(0, 12);
+    expect(el.r).toBeCloseTo(2, 12);
+  });
+
+  it('mirrors are wired into the render in Flower order: every circle first, then the lines', () => {
+    const json = graph(
+      lineMirror('l1', [0, -5], [0, 5], false),
+      circleMirror('c1', [[10, 1], [11, 0], [10, -1]]),
+      lineMirror('l2', [5, 5], [-5, 5], true),
+      circleMirror('c2', [[-10, 1], [-11, 0], [-10, -1]]),
+    );
+    const { doc, scene } = imported(json);
+    expect(scene.elements.map((e) => `${e.kind}:${e.nodeId}`)).toEqual([
+      'inversion:mirror-01',
+      'inversion:mirror-02',
+      'reflection:mirror-03',
+      'reflection:mirror-04',
+    ]);
+    const inv = scene.elements as InversionElement[];
+    expect(inv[0].c[0]).toBeCloseTo(10, 9);
+    expect(inv[1].c[0]).toBeCloseTo(-10, 9);
+    const render = doc.nodes.find((n) => n.type === 'render')!;
+    expect(render.params).toEqual({ maxIterations: 50, samples: 20 });
+  });
+
+  it('mirrors pass their input through: a line taken from a LineMirror output is the same line', () => {
+    const base = lineMirror('m', [0, 0], [1, 0], false);
+    const json = graph(base, {
+      nodes: [fnode('LineMirror', 'm2', { reverse: true })],
+      edges: [fedge('Line', 'm', 'm2', 0)],
+    });
+    const { scene } = imported(json);
+    const [a, b] = scene.elements as ReflectionElement[];
+    expect(b.q).toEqual(a.q);
+    expect(b.n[1]).toBeCloseTo(-a.n[1], 12);
+  });
+
+  it('SinWave: animated when Kleinflow has a sine node, else its saved value with a note', () => {
+    const json = graph({
+      nodes: [fnode('SinWave', 's', { period: 1000, amplitude: 10, phaseShift: 0, offset: 0, value: -8.5 }), fpoint('p', 1, -8.5)],
+      edges: [fedge('Float', 's', 'p', 0)],
+    });
+    const { doc, notes, errors } = imported(json);
+    expect(errors).toEqual([]);
+    if (registry.get('sine')) {
+      expect(doc.nodes.some((n) => n.type === 'sine')).toBe(true);
+    } else {
+      expect(doc.nodes.find((n) => n.type === 'number')?.params).toEqual({ value: -8.5 });
+      expect(messages(notes)).toEqual([expect.stringMatching(/SinWave "s" cannot be mapped yet.*-8\.5/)]);
+    }
+  });
+
+  it('CircularMotion and OrbitSeed are reported, never dropped silently', () => {
+    const json = graph({
+      nodes: [fnode('CircularMotion', 'cm'), fpoint('p', 2, 3), fnode('OrbitSeed', 'os', { posX: 0, posY: 0, width: 1, height: 1 })],
+      edges: [fedge('Point', 'cm', 'p', 0)],
+    });
+    const { notes } = imported(json);
+    const text = messages(notes).join('\n');
+    if (!registry.get('circular-motion')) expect(text).toMatch(/CircularMotion "cm" cannot be mapped yet/);
+    expect(text).toMatch(/OrbitSeed "os"/);
+  });
+
+  it("tile reproduces Flower's colours: hue 0.01 + 0.05(n − 1) after n reflections", () => {
+    const { scene } = imported(graph(lineMirror('m', [0, 0], [1, 0], false)));
+    const tile = scene.tile as TileSpec;
+    expect(tile.coloring.mode).toBe('depth-hsv');
+    for (let n = 1; n <= FLOWER_RENDER.maxIterations; n++) {
+      const flower = hsvToRgb(0.01 + 0.05 * (n - 1), 1, 1);
+      const ours = depthColour(tile.coloring, n);
+      for (let k = 0; k < 3; k++) expect(ours[k]).toBeCloseTo(flower[k], 9);
+    }
+    expect(scene.maxIterations).toBe(50);
+    expect(scene.samples).toBe(20);
+  });
+
+  it('ColorPalettes with Vec3 inputs becomes the tile palette, matching Flower at every depth', () => {
+    const vec = (id: string, v: number[]) => fnode('Vec3', id, { valueX: v[0], valueY: v[1], valueZ: v[2] });
+    const [a, b, c, d] = [
+      [0.5, 0.5, 0.5],
+      [0.5, 0.5, 0.5],
+      [1, 1, 1],
+      [0, 0.33, 0.67],
+    ];
+    const json = graph(lineMirror('m', [0, 0], [1, 0], false), {
+      nodes: [vec('va', a), vec('vb', b), vec('vc', c), vec('vd', d), fnode('ColorPalettes', 'pal')],
+      edges: ['va', 'vb', 'vc', 'vd'].map((v, i) => fedge('Vec3', v, 'pal', i)),
+    });
+    const { scene, notes } = imported(json);
+    expect(messages(notes).join('\n')).not.toMatch(/could not be read/);
+    expect(scene.tile.coloring.mode).toBe('cosine');
+    for (let n = 1; n <= 20; n++) {
+      const ours = depthColour(scene.tile.coloring, n);
+      for (let k = 0; k < 3; k++) {
+        const flower = a[k] + b[k] * Math.cos(2 * Math.PI * (c[k] * 0.05 * (n - 1) + d[k]));
+        expect(Math.abs(ours[k] - Math.min(1, Math.max(0, flower)))).toBeLessThan(0.02); // colours are stored as 8-bit
+      }
+    }
+  });
+
+  it('tolerates duplicated node entries; a duplicate with different data gets a note', () => {
+    const base = lineMirror('m', [0, 0], [1, 0], false);
+    const same = graph({ nodes: [...base.nodes, base.nodes[2], base.nodes[3]], edges: base.edges });
+    const r1 = imported(same);
+    expect(r1.notes).toEqual([]);
+    expect(r1.doc.nodes.filter((n) => n.type === 'line')).toHaveLength(1);
+    const different = graph({ nodes: [...base.nodes, { ...base.nodes[0], posX: 99 }], edges: base.edges });
+    const r2 = imported(different);
+    expect(messages(r2.notes)).toEqual([expect.stringMatching(/node "ma" appears again with different data/)]);
+    expect(r2.doc.nodes.find((n) => n.type === 'point')!.params).toEqual({ x: 0, y: 0 });
+  });
+
+  it('reports what cannot be mapped: unknown types, broken and mistyped edges, mirrors with nothing wired', () => {
+    const json = graph(lineMirror('m', [0, 0], [1, 0], false), {
+      nodes: [fnode('Spiral', 'sp'), fnode('LineMirror', 'lonely', { reverse: false }), fnode('CircleMirror', 'lonelyC'), fpoint('q', 0, 0)],
+      edges: [
+        { id: 'x1', name: 'Point', s1Id: 'nowhere', s2Id: 'm-in0' },
+        { id: 'x2', name: 'Point', s1Id: 'ma-out0', s2Id: 'q-out0' },
+        { id: 'x3', name: 'Point', s1Id: 'q-out0', s2Id: 'lonelyC-in0' },
+      ],
+    });
+    const { notes, scene, errors } = imported(json);
+    expect(errors).toEqual([]);
+    const text = messages(notes);
+    expect(text).toEqual(
+      expect.arrayContaining([
+        expect.stringMatching(/unknown Flower node type "Spiral"/),
+        expect.stringMatching(/names socket "nowhere", which no node has/),
+        expect.stringMatching(/joins two outputs/),
+        expect.stringMatching(/joins a Point output to a Circle input/),
+        expect.stringMatching(/LineMirror "lonely" has no line wired in/),
+        expect.stringMatching(/CircleMirror "lonelyC" has no circle wired in/),
+      ]),
+    );
+    for (const n of notes) expect(n.code).toBe('KF502');
+    expect(scene.elements).toHaveLength(1);
+  });
+
+  it('unwired construction inputs use Kleinflow defaults, hidden, with a note', () => {
+    const { doc, notes, errors } = imported(graph({ nodes: [fnode('CircleThreePoints', 'c')], edges: [] }));
+    expect(errors).toEqual([]);
+    expect(doc.nodes.find((n) => n.type === 'circle-3pt')!.params).toEqual({ visible: false });
+    expect(messages(notes)).toEqual([expect.stringMatching(/no point wired into "a", "b", "c"/)]);
+  });
+
+  it("opens on Flower's view (origin, 100 units tall), larger when the construction reaches further", () => {
+    expect(imported(graph(lineMirror('m', [0, 0], [1, 0], false))).doc.view).toEqual({ center: [0, 0], scale: 100 });
+    expect(imported(graph(lineMirror('m', [0, 0], [80, 0], false))).doc.view).toEqual({ center: [0, 0], scale: 176 });
+  });
+});

@@ -1,0 +1,156 @@
+/**
+ * The browser side of the viewport tests, bundled by tests/support/bundle.ts and loaded into a
+ * blank page with a <canvas>. The Node side drives it through `window.kfViewport`; images travel
+ * back as base64 RGBA, top row first.
+ */
+import type { Diagnostic } from '../../../../nodes/core/diagnostics.ts';
+import type { Scene, View } from '../../../../nodes/core/scene.ts';
+import { attachPanZoom, type RenderToPixelsOptions, Viewport } from '../../../../src/viewport/viewport.ts';
+
+function toBase64(a: Uint8ClampedArray | null): string | null {
+  if (!a) return null;
+  let s = '';
+  for (let i = 0; i < a.length; i += 0x8000) s += String.fromCharCode(...a.subarray(i, i + 0x8000));
+  return btoa(s);
+}
+
+const nextFrame = () => new Promise<number>((r) => requestAnimationFrame(r));
+
+/** Makes every shader whose text has `#line 1 N` fail to compile inside that block (source string N). */
+let injectInto: number | null = null;
+const originalShaderSource = WebGL2RenderingContext.prototype.shaderSource;
+WebGL2RenderingContext.prototype.shaderSource = function (shader: WebGLShader, source: string) {
+  const marker = `#line 1 ${injectInto}\n`;
+  const patched =
+    injectInto !== null && source.includes(marker)
+      ? source.replace(marker, `${marker}kf_injected_error = 1.0;\n`)
+      : source;
+  originalShaderSource.call(this, shader, patched);
+};
+
+const canvas = document.querySelector('canvas') as HTMLCanvasElement;
+let vp: Viewport | null = null;
+let view: View = { center: [0, 0], scale: 1 };
+const diagnostics: Diagnostic[][] = [];
+/** base64 snapshots taken after every frame while recording. */
+let recorded: string[] = [];
+let recording = false;
+
+const harness = {
+  diagnostics,
+  create(width: number, height: number, idleBakeMs = 600): void {
+    vp?.dispose();
+    diagnostics.length = 0;
+    vp = new Viewport(canvas, {
+      idleBakeMs,
+      onDiagnostics: (d) => diagnostics.push(d),
+      onFrame: () => {
+        if (recording) recorded.push(toBase64(vp!.snapshot())!);
+      },
+    });
+    vp.setSize(width, height, 1);
+  },
+  setScene(scene: Scene): void {
+    view = scene.view;
+    vp!.setScene(scene);
+  },
+  setView(v: View): void {
+    view = v;
+    vp!.setView(v);
+  },
+  view: () => view,
+  stats: () => vp!.stats,
+  snapshot: () => toBase64(vp!.snapshot()),
+  record(on: boolean): string[] {
+    recording = on;
+    const out = recorded;
+    if (on) recorded = [];
+    return out;
+  },
+  /** Resolves once `samples` samples are on screen (or rejects after timeoutMs). */
+  async waitSamples(samples: number, timeoutMs = 20_000): Promise<void> {
+    const end = performance.now() + timeoutMs;
+    while (vp!.stats.samples < samples || vp!.stats.frames === 0) {
+      if (performance.now() > end) throw new Error(`timed out at ${JSON.stringify(vp!.stats)}`);
+      await nextFrame();
+    }
+  },
+  /** Resolves once `frames` frames have been drawn in all. */
+  async waitFrames(frames: number, timeoutMs = 20_000): Promise<void> {
+    const end = performance.now() + timeoutMs;
+    while (vp!.stats.frames < frames) {
+      if (performance.now() > end) throw new Error(`timed out at ${JSON.stringify(vp!.stats)}`);
+      await nextFrame();
+    }
+  },
+  /** Resolves once no frame has been drawn for `quietMs`. */
+  async waitStill(quietMs = 300): Promise<void> {
+    let frames = vp!.stats.frames;
+    let since = performance.now();
+    while (performance.now() - since < quietMs) {
+      await nextFrame();
+      if (vp!.stats.frames !== frames) {
+        frames = vp!.stats.frames;
+        since = performance.now();
+      }
+    }
+  },
+  async waitBaked(timeoutMs = 20_000): Promise<void> {
+    const end = performance.now() + timeoutMs;
+    while (!vp!.stats.baked) {
+      if (performance.now() > end) throw new Error('the baked program never took over');
+      await nextFrame();
+    }
+  },
+  injectError(sourceNumber: number | null): void {
+    injectInto = sourceNumber;
+  },
+  async loseAndRestoreContext(): Promise<void> {
+    const gl = canvas.getContext('webgl2')!;
+    const ext = gl.getExtension('WEBGL_lose_context')!;
+    const lost = new Promise((r) => canvas.addEventListener('webglcontextlost', r, { once: true }));
+    ext.loseContext();
+    await lost;
+    await nextFrame();
+    const restored = new Promise((r) => canvas.addEventListener('webglcontextrestored', r, { once: true }));
+    ext.restoreContext();
+    await restored;
+  },
+  async renderToPixels(opts: Omit<RenderToPixelsOptions, 'onProgress'>, cancelAt?: number) {
+    const progress: number[] = [];
+    const pixels = await vp!.renderToPixels({
+      ...opts,
+      onProgress: (f) => {
+        progress.push(f);
+        return cancelAt === undefined || f < cancelAt;
+      },
+    });
+    return { pixels: toBase64(pixels), progress };
+  },
+  detachPanZoom: null as (() => void) | null,
+  attachPanZoom(): void {
+    const host = canvas.parentElement as HTMLElement;
+    harness.detachPanZoom = attachPanZoom(
+      host,
+      () => view,
+      (v) => harness.setView(v),
+    );
+  },
+  /** The overlay's way of claiming a drag: preventDefault on pointerdown before it bubbles up. */
+  claimPointerDowns(on: boolean): void {
+    canvas.onpointerdown = on ? (e) => e.preventDefault() : null;
+  },
+  /** Dispatches a synthetic touch pointer event on the canvas (two-finger gestures). */
+  touch(type: 'pointerdown' | 'pointermove' | 'pointerup', pointerId: number, x: number, y: number): void {
+    const r = canvas.getBoundingClientRect();
+    const init = { pointerId, pointerType: 'touch', clientX: r.left + x, clientY: r.top + y, bubbles: true, cancelable: true };
+    canvas.dispatchEvent(new PointerEvent(type, init));
+  },
+};
+
+declare global {
+  interface Window {
+    kfViewport: typeof harness;
+  }
+}
+window.kfViewport = harness;

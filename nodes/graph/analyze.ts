@@ -83,7 +83,7 @@ export function analyzeGraph(doc: GraphDoc, registry: NodeRegistry): Analysis {
 }
 
 /**
- * An edge's problem, null when it is usable, or undefined when it touches a placeholder node
+ * An edge's problem, null when it is usable, or undefined when it leads into a placeholder node
  * (kept in the document, unused by evaluation, not reported twice).
  */
 function checkEdge(
@@ -96,10 +96,10 @@ function checkEdge(
   if (!src) return diag('danglingEdge', { path: `${path}.from.node` }, 'source', edge.from.node);
   if (!dst) return diag('danglingEdge', { path: `${path}.to.node` }, 'target', edge.to.node);
   if (edge.from.node === edge.to.node) return diag('selfEdge', { path, nodeId: edge.to.node }, edge.to.node);
-  if (!src.def || !dst.def) return undefined;
-  const out = src.def.outputs[edge.from.port];
+  if (!dst.def) return undefined;
+  const out = src.def?.outputs[edge.from.port];
   const inp = dst.def.inputs[edge.to.port];
-  if (!out)
+  if (src.def && !out)
     return diag(
       'unknownPort',
       { path: `${path}.from.port`, nodeId: src.node.id },
@@ -115,6 +115,9 @@ function checkEdge(
       edge.to.port,
       dst.node.id,
     );
+  // From a placeholder the edge is kept (its output type is unknown): the target then reports the
+  // missing value instead of silently falling back to its inline default.
+  if (!out) return null;
   if (!canConnect(out.type, inp.type)) {
     return diag('typeMismatch', { path, nodeId: dst.node.id, port: edge.to.port }, out.type, inp.type);
   }

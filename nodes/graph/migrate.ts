@@ -67,7 +67,10 @@ export function migrateNodeParams(
     try {
       current = step({ ...current });
     } catch (e) {
-      return { ok: false, message: `migrating "${def.type}" from version ${v} failed: ${(e as Error)?.message}` };
+      return {
+        ok: false,
+        message: `migrating "${def.type}" from version ${v} failed: ${(e as Error)?.message}`,
+      };
     }
   }
   return { ok: true, params: current };

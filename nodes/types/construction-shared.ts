@@ -4,7 +4,7 @@
  */
 import type { EvalContext, InputSpec, NodeDef } from '../core/define-node.ts';
 import type { Line, Vec2 } from '../core/values.ts';
-import { add, sub } from '../geometry/vec.ts';
+import { add } from '../geometry/vec.ts';
 
 /** A direction input in degrees, counter-clockwise from +x. */
 export const angleInput = (label: string, dflt: number, doc: string): InputSpec => ({
@@ -26,9 +26,6 @@ export const degreesOf = (v: Vec2): number => Math.round((Math.atan2(v[1], v[0])
 
 /** The line through p with direction d (for overlays): a = p, b = p + d. */
 export const lineAlong = (p: Vec2, d: Vec2): Line => ({ a: p, b: add(p, d) });
-
-/** The vector from a to b. */
-export const from = (a: Vec2, b: Vec2): Vec2 => sub(b, a);
 
 /**
  * Handles on a node's point inputs: each sits at the input's value and a drag writes the new

@@ -87,7 +87,7 @@ function stripNode(kind: StripKind, label: string, doc: string, what: string): N
 export const translationNode = stripNode(
   'translation',
   'Translation strip',
-  'A translation by a period, folded in one step: tiles the plane with copies of a strip (a frieze).',
+  'A translation by a period, folded in one step: copies of a strip (a frieze); two strips at right angles tile the plane (a wallpaper).',
   'translation',
 );
 

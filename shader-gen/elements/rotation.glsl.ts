@@ -1,12 +1,15 @@
 /**
- * GLSL twin of rotation.ts. Packing (2 vec4): d0 = (c.x, c.y, b1.x, b1.y), d1 = (order k, 0, 0, 0).
- * atan/cos/sin are approximate on GPUs (errors ~1e-4 in SwiftShader): the wedge edges are where
- * the GPU and the CPU may disagree, which boundaryDistance reports.
+ * GLSL twin of rotation.ts. Packing (2 vec4): d0 = (c.x, c.y, b1.x, b1.y),
+ * d1 = (order k, cos θ, sin θ, 0) with θ = 2π/k computed on the CPU. atan is approximate on GPUs
+ * (errors ~1e-4 in SwiftShader): the wedge edges are where the GPU and the CPU may disagree, which
+ * boundaryDistance reports. The turn by −mθ is the m-th power of e^(−iθ) (complex-power.glsl.ts),
+ * not cos/sin of mθ, so the final point keeps float32 accuracy.
  */
 import type { RotationElement } from '../../nodes/core/scene.ts';
 import type { GlslElementTwin } from '../glsl/element-twin.ts';
 import { floatLiteral } from '../glsl/literal.ts';
 import { glslFunction } from '../glsl/snippet.ts';
+import { complexPowerGlsl } from './complex-power.glsl.ts';
 
 const TWO_PI = floatLiteral(2 * Math.PI);
 
@@ -37,7 +40,10 @@ float rayDistance(float dx, float dy, float ux, float uy) {
 export const rotationGlsl: GlslElementTwin<RotationElement> = {
   kind: 'rotation',
   vec4s: 2,
-  pack: (e) => [e.c[0], e.c[1], e.b1[0], e.b1[1], e.order, 0, 0, 0],
+  pack: (e) => {
+    const t = (2 * Math.PI) / e.order;
+    return [e.c[0], e.c[1], e.b1[0], e.b1[1], e.order, Math.cos(t), Math.sin(t), 0];
+  },
   step: glslFunction(
     'rotationStep',
     `
@@ -46,14 +52,12 @@ bool rotationStep(inout vec2 p, inout float s, inout int depth, vec4 d0, vec4 d1
   float dy = p.y - d0.y;
   float m = wedgeIndex(d0, d1, dx, dy);
   if (m <= 0.0) return false;
-  float t = (-${TWO_PI} * m) / d1.x;
-  float c = cos(t);
-  float sn = sin(t);
-  p = vec2(d0.x + c * dx - sn * dy, d0.y + sn * dx + c * dy);
+  vec2 w = complexPower(vec2(d1.y, -d1.z), int(m));
+  p = vec2(d0.x + w.x * dx - w.y * dy, d0.y + w.y * dx + w.x * dy);
   depth += int(m);
   return true;
 }`,
-    [wedgeIndexGlsl],
+    [wedgeIndexGlsl, complexPowerGlsl],
   ),
   inside: glslFunction(
     'rotationInside',
@@ -69,9 +73,8 @@ bool rotationInside(vec2 p, vec4 d0, vec4 d1) {
 float rotationBoundaryDistance(vec2 p, vec4 d0, vec4 d1) {
   float dx = p.x - d0.x;
   float dy = p.y - d0.y;
-  float t = ${TWO_PI} / d1.x;
-  float vx = cos(t) * d0.z - sin(t) * d0.w;
-  float vy = sin(t) * d0.z + cos(t) * d0.w;
+  float vx = d1.y * d0.z - d1.z * d0.w;
+  float vy = d1.z * d0.z + d1.y * d0.w;
   return min(rayDistance(dx, dy, d0.z, d0.w), rayDistance(dx, dy, vx, vy));
 }`,
     [rayDistanceGlsl],

@@ -1,11 +1,15 @@
 /**
  * GLSL twin of spiral-similarity.ts. Packing (2 vec4): d0 = (c.x, c.y, r1, r2),
- * d1 = (angle φ, 0, 0, 0). log/pow/cos/sin are approximate on GPUs: the annulus circles are where
- * the GPU and the CPU may disagree, which boundaryDistance reports.
+ * d1 = (angle φ, cos 2φ, sin 2φ, 0). log is approximate on GPUs: the annulus circles are where the
+ * GPU and the CPU may disagree, which boundaryDistance reports. The fold g^(−m) multiplies p − c by
+ * w^|m| with the one-step multiplier w = e^(−2iφ)/λ (m > 0) or λe^(2iφ) (m < 0), by
+ * complex-power.glsl.ts rather than pow/cos/sin, so the final point keeps float32 accuracy; the
+ * scale λ^(−m) is |w^|m||.
  */
 import type { SpiralSimilarityElement } from '../../nodes/core/scene.ts';
 import type { GlslElementTwin } from '../glsl/element-twin.ts';
 import { glslFunction } from '../glsl/snippet.ts';
+import { complexPowerGlsl } from './complex-power.glsl.ts';
 import { foldCountGlsl } from './strip-fold.glsl.ts';
 
 /** λ = (r2/r1)². */
@@ -32,7 +36,7 @@ float annulusIndex(vec4 d0, float rho) {
 export const spiralSimilarityGlsl: GlslElementTwin<SpiralSimilarityElement> = {
   kind: 'spiral-similarity',
   vec4s: 2,
-  pack: (e) => [e.c[0], e.c[1], e.r1, e.r2, e.angle, 0, 0, 0],
+  pack: (e) => [e.c[0], e.c[1], e.r1, e.r2, e.angle, Math.cos(2 * e.angle), Math.sin(2 * e.angle), 0],
   step: glslFunction(
     'spiralSimilarityStep',
     `
@@ -46,16 +50,15 @@ bool spiralSimilarityStep(inout vec2 p, inout float s, inout int depth, vec4 d0,
   }
   float m = annulusIndex(d0, rho);
   if (m == 0.0) return false;
-  float k = pow(spiralRatio(d0), -m);
-  float t = -2.0 * m * d1.x;
-  float c = cos(t) * k;
-  float sn = sin(t) * k;
-  p = vec2(d0.x + c * dx - sn * dy, d0.y + sn * dx + c * dy);
-  s *= k;
+  float lambda = spiralRatio(d0);
+  vec2 w = m > 0.0 ? vec2(d1.y, -d1.z) / lambda : vec2(d1.y, d1.z) * lambda;
+  vec2 wm = complexPower(w, foldCount(m));
+  p = vec2(d0.x + wm.x * dx - wm.y * dy, d0.y + wm.y * dx + wm.x * dy);
+  s *= length(wm);
   depth += foldCount(m);
   return true;
 }`,
-    [annulusIndexGlsl, spiralRatioGlsl, foldCountGlsl],
+    [annulusIndexGlsl, spiralRatioGlsl, foldCountGlsl, complexPowerGlsl],
   ),
   inside: glslFunction(
     'spiralSimilarityInside',

@@ -48,7 +48,8 @@ export function parseArgs(args: readonly string[], specs: readonly OptionSpec[])
       continue;
     }
     const value = eq > 0 ? arg.slice(eq + 1) : args[++i];
-    if (value === undefined || value === '') throw usageError(`option ${token} needs a value (${spec.value})`);
+    if (value === undefined || value === '')
+      throw usageError(`option ${token} needs a value (${spec.value})`);
     options[spec.long] = value;
   }
   return { positionals, options };
@@ -56,7 +57,9 @@ export function parseArgs(args: readonly string[], specs: readonly OptionSpec[])
 
 /** The "Options:" block of a usage text, aligned in two columns. */
 export function formatOptions(specs: readonly OptionSpec[]): string {
-  const heads = specs.map((s) => `${s.short ? `-${s.short}, ` : '    '}--${s.long}${s.value ? ` ${s.value}` : ''}`);
+  const heads = specs.map(
+    (s) => `${s.short ? `-${s.short}, ` : '    '}--${s.long}${s.value ? ` ${s.value}` : ''}`,
+  );
   const width = Math.max(...heads.map((h) => h.length));
   return ['Options:', ...specs.map((s, i) => `  ${heads[i].padEnd(width)}  ${s.doc}`)].join('\n');
 }

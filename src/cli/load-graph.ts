@@ -1,6 +1,7 @@
 /**
- * The one way every CLI command gets a graph: read the file (a .json document, or a PNG that
- * Kleinflow exported with its graph embedded), load it (parse → migrate → validate), evaluate it
+ * The one way every CLI command gets a graph: read the file (a .json document, a Flower graph —
+ * imported on the fly — or a PNG that Kleinflow exported with its graph embedded), load it
+ * (parse → migrate → validate, through src/io/document-io.ts), evaluate it
  * into a Scene, and collect every diagnostic. File problems become one-line CliErrors.
  */
 import type { Diagnostic, Severity } from '../../nodes/core/diagnostics.ts';
@@ -96,7 +97,8 @@ export function formatDiagnostic(d: Diagnostic, doc?: GraphDoc): string {
   if (d.port !== undefined && !d.path) who.push(`port "${d.port}"`);
   const location = [where, who.length ? `(${who.join(', ')})` : ''].filter(Boolean).join(' ') || '(document)';
   // Schema messages already start with their path; do not say it twice.
-  const message = d.path && d.message.startsWith(`${d.path}: `) ? d.message.slice(d.path.length + 2) : d.message;
+  const message =
+    d.path && d.message.startsWith(`${d.path}: `) ? d.message.slice(d.path.length + 2) : d.message;
   return `${d.severity} ${d.code} ${location}: ${message}`;
 }
 

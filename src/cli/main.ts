@@ -3,7 +3,7 @@
  * readable text and an exit status, never a stack trace: CliErrors print their one line (plus
  * the command's usage for usage errors), anything unexpected prints `kleinflow: internal error: …`.
  */
-import { CliError, type CliCommand, type CliIo, EXIT } from './command.ts';
+import { type CliCommand, CliError, type CliIo, EXIT } from './command.ts';
 import { COMMANDS } from './commands/index.ts';
 
 const HELP_FLAGS = new Set(['--help', '-h', 'help']);

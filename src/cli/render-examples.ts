@@ -35,7 +35,11 @@ export const examplePath = (name: string, dir = EXAMPLES_DIR): string => join(di
 const WORKER_BOOTSTRAP = `import(${JSON.stringify(import.meta.resolve('tsx/esm/api'))})
   .then((tsx) => { tsx.register(); return import(${JSON.stringify(new URL('./render-job.ts', import.meta.url).href)}); });`;
 
-function runPool(jobs: readonly RenderJob[], size: number, report: (r: RenderJobResult) => void): Promise<void> {
+function runPool(
+  jobs: readonly RenderJob[],
+  size: number,
+  report: (r: RenderJobResult) => void,
+): Promise<void> {
   const queue = [...jobs];
   const worker = () =>
     new Promise<void>((done, fail) => {
@@ -80,7 +84,9 @@ async function main(argv: readonly string[]): Promise<number> {
     } else process.stdout.write(`${r.name.padEnd(28)} ${String(Math.round(r.ms)).padStart(6)} ms\n`);
   });
   const total = ((performance.now() - started) / 1000).toFixed(1);
-  process.stdout.write(`${jobs.length - failed} of ${jobs.length} examples → ${EXAMPLES_PNG_DIR} (${width}×${height}, ${total} s)\n`);
+  process.stdout.write(
+    `${jobs.length - failed} of ${jobs.length} examples → ${EXAMPLES_PNG_DIR} (${width}×${height}, ${total} s)\n`,
+  );
   return failed ? 1 : 0;
 }
 

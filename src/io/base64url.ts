@@ -19,7 +19,8 @@ export function encodeBase64Url(bytes: Uint8Array): string {
 export type Base64Result = { ok: true; bytes: Uint8Array } | { ok: false; message: string };
 
 export function decodeBase64Url(text: string): Base64Result {
-  if (text.length % 4 === 1) return { ok: false, message: `its length (${text.length}) is not a valid base64url length` };
+  if (text.length % 4 === 1)
+    return { ok: false, message: `its length (${text.length}) is not a valid base64url length` };
   const out = new Uint8Array(Math.floor((text.length * 6) / 8));
   let acc = 0;
   let bits = 0;
@@ -27,7 +28,8 @@ export function decodeBase64Url(text: string): Base64Result {
   for (let i = 0; i < text.length; i++) {
     const code = text.charCodeAt(i);
     const v = code < 128 ? VALUE[code] : -1;
-    if (v < 0) return { ok: false, message: `character ${JSON.stringify(text[i])} at position ${i} is not base64url` };
+    if (v < 0)
+      return { ok: false, message: `character ${JSON.stringify(text[i])} at position ${i} is not base64url` };
     acc = ((acc << 6) | v) & 0xffffff;
     bits += 6;
     if (bits >= 8) {

@@ -43,7 +43,8 @@ function canonical(value: unknown, order: string | null): unknown {
   if (value === null || typeof value !== 'object') return value;
   const obj = value as Record<string, unknown>;
   const out: Record<string, unknown> = {};
-  for (const k of orderKeys(obj, (order ? KEY_ORDER[order] : undefined) ?? [])) out[k] = canonical(obj[k], childOrder(order, k));
+  for (const k of orderKeys(obj, (order ? KEY_ORDER[order] : undefined) ?? []))
+    out[k] = canonical(obj[k], childOrder(order, k));
   return out;
 }
 
@@ -63,7 +64,9 @@ function oneLine(v: unknown, loose = true): string {
   const comma = loose ? ', ' : ',';
   if (Array.isArray(v)) return `[${v.map((x) => oneLine(x, loose)).join(comma)}]`;
   if (v !== null && typeof v === 'object') {
-    const entries = Object.entries(v).map(([k, x]) => `${JSON.stringify(k)}:${loose ? ' ' : ''}${oneLine(x, loose)}`);
+    const entries = Object.entries(v).map(
+      ([k, x]) => `${JSON.stringify(k)}:${loose ? ' ' : ''}${oneLine(x, loose)}`,
+    );
     if (entries.length === 0) return '{}';
     return loose ? `{ ${entries.join(comma)} }` : `{${entries.join(comma)}}`;
   }

@@ -28,7 +28,9 @@ export function extractGraph(bytes: Uint8Array): OpenResult {
   if (!isPng(bytes)) return openProblem('this file is not a PNG image');
   const text = readPngText(bytes)?.[PNG_GRAPH_KEY];
   if (text === undefined) {
-    return openProblem('this PNG has no Kleinflow graph inside (only images exported by Kleinflow carry one)');
+    return openProblem(
+      'this PNG has no Kleinflow graph inside (only images exported by Kleinflow carry one)',
+    );
   }
   return fromLoad(parseDocumentText(text), 'png');
 }

@@ -143,7 +143,8 @@ export function setPngText(bytes: Uint8Array, text: Readonly<Record<string, stri
       parts.push(...fresh);
       inserted = true;
     }
-    if (!(isText && Object.hasOwn(text, chunkKeyword(bytes.subarray(o + 8, end))))) parts.push(bytes.subarray(o, end));
+    if (!(isText && Object.hasOwn(text, chunkKeyword(bytes.subarray(o + 8, end)))))
+      parts.push(bytes.subarray(o, end));
     if (type === 'IEND') break;
     o += 12 + len;
   }
@@ -171,7 +172,8 @@ export function decodePng(bytes: Uint8Array): PngImage {
     if (type === 'IHDR') {
       width = view.getUint32(o + 8);
       height = view.getUint32(o + 12);
-      if (data[8] !== 8 || data[9] !== 6 || data[12] !== 0) throw new Error('only 8-bit RGBA non-interlaced PNGs are supported');
+      if (data[8] !== 8 || data[9] !== 6 || data[12] !== 0)
+        throw new Error('only 8-bit RGBA non-interlaced PNGs are supported');
     } else if (type === 'IDAT') idat.push(data);
     else if (type === 'IEND') break;
     o += 12 + len;

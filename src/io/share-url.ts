@@ -46,7 +46,10 @@ export function sharePayload(text: string): string | null {
 /** Compressed input is fed this many bytes at a time (DEFLATE expands a byte to at most ~1 KB). */
 const INFLATE_PIECE = 1024;
 
-type InflateResult = { ok: true; bytes: Uint8Array } | { ok: false; message: string };
+type InflateResult =
+  | { ok: true; bytes: Uint8Array }
+  /** `inflated`: bytes produced before stopping (at most maxBytes plus one piece's output). */
+  | { ok: false; message: string; inflated: number };
 
 /** Raw-DEFLATE inflation that stops once the output exceeds `maxBytes`. */
 export function boundedInflate(data: Uint8Array, maxBytes: number): InflateResult {
@@ -65,15 +68,26 @@ export function boundedInflate(data: Uint8Array, maxBytes: number): InflateResul
     }
   } catch (e) {
     const detail = (e as Error).message ?? String(e);
-    return { ok: false, message: `the link's data is damaged (${detail}); was it cut off when copied?` };
+    return {
+      ok: false,
+      message: `the link's data is damaged (${detail}); was it cut off when copied?`,
+      inflated: total,
+    };
   }
   if (total > maxBytes) {
     return {
       ok: false,
       message: `the link's graph unpacks to more than ${maxBytes} bytes, larger than any graph Kleinflow opens from a link`,
+      inflated: total,
     };
   }
-  if (!finished) return { ok: false, message: 'the link is incomplete (its data ends early); was it cut off when copied?' };
+  if (!finished) {
+    return {
+      ok: false,
+      message: 'the link is incomplete (its data ends early); was it cut off when copied?',
+      inflated: total,
+    };
+  }
   const out = new Uint8Array(total);
   let p = 0;
   for (const part of parts) {
@@ -86,7 +100,8 @@ export function boundedInflate(data: Uint8Array, maxBytes: number): InflateResul
 /** Reads a graph from `#g=…` (or a whole URL with that fragment). Every failure is a message. */
 export function decodeShareFragment(fragment: string): ShareDecodeResult {
   const payload = sharePayload(fragment.trim());
-  if (payload === null) return { ok: false, message: 'this is not a Kleinflow share link (it has no "#g=" part)' };
+  if (payload === null)
+    return { ok: false, message: 'this is not a Kleinflow share link (it has no "#g=" part)' };
   if (payload.length === 0) return { ok: false, message: 'the share link is empty (nothing after "#g=")' };
   if (payload.length > LIMITS.shareFragmentMaxChars) {
     return {
@@ -97,7 +112,7 @@ export function decodeShareFragment(fragment: string): ShareDecodeResult {
   const decoded = decodeBase64Url(payload);
   if (!decoded.ok) return { ok: false, message: `the share link is damaged: ${decoded.message}` };
   const inflated = boundedInflate(decoded.bytes, LIMITS.shareInflatedMaxBytes);
-  if (!inflated.ok) return inflated;
+  if (!inflated.ok) return { ok: false, message: inflated.message };
   let value: unknown;
   try {
     value = JSON.parse(new TextDecoder('utf-8', { fatal: true }).decode(inflated.bytes));

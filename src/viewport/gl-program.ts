@@ -121,3 +121,9 @@ export function buildProgram(
 ): Result<WebGLProgram, Diagnostic[]> {
   return finishProgram(gl, beginProgram(gl, vertexSource, fragmentSource, lineMap));
 }
+
+/** gl.useProgram behind a name the React-hooks lint rule does not mistake for a hook. */
+export function bindProgram(gl: WebGL2RenderingContext, program: WebGLProgram | null): void {
+  // biome-ignore lint/correctness/useHookAtTopLevel: WebGL's useProgram is not a React hook
+  gl.useProgram(program);
+}

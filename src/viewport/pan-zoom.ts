@@ -60,8 +60,7 @@ export function attachPanZoom(
       gesture = null;
       return;
     }
-    const mid: Vec2 =
-      pts.length === 1 ? pts[0] : [(pts[0][0] + pts[1][0]) / 2, (pts[0][1] + pts[1][1]) / 2];
+    const mid: Vec2 = pts.length === 1 ? pts[0] : [(pts[0][0] + pts[1][0]) / 2, (pts[0][1] + pts[1][1]) / 2];
     const distance = pts.length >= 2 ? Math.hypot(pts[0][0] - pts[1][0], pts[0][1] - pts[1][1]) : 0;
     gesture = { view, anchor: worldAt(view, width(), height(), mid[0], mid[1]), distance };
   };

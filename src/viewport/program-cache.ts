@@ -55,7 +55,11 @@ export class ProgramCache {
     const key = programKey(compiled, options);
     if (options.baked) this.bakedCompiles++;
     else this.compiles++;
-    return { key, compiled, pending: beginProgram(this.gl, compiled.vertexSource, compiled.source, compiled.lineMap) };
+    return {
+      key,
+      compiled,
+      pending: beginProgram(this.gl, compiled.vertexSource, compiled.source, compiled.lineMap),
+    };
   }
 
   /** undefined while the driver is still busy; then the program (now cached) or the diagnostics. */

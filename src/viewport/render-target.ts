@@ -25,7 +25,11 @@ export type TargetKind = 'accumulation' | 'rgba8';
  * The accumulation format: RGBA32F when float targets can be blended (EXT_float_blend), else
  * RGBA16F (blendable wherever EXT_color_buffer_float is); without float targets, RGBA8.
  */
-function accumulationFormat(gl: WebGL2RenderingContext): { internal: number; type: number; mode: AccumulationMode } {
+function accumulationFormat(gl: WebGL2RenderingContext): {
+  internal: number;
+  type: number;
+  mode: AccumulationMode;
+} {
   if (gl.getExtension('EXT_color_buffer_float')) {
     if (gl.getExtension('EXT_float_blend')) return { internal: gl.RGBA32F, type: gl.FLOAT, mode: 'sum' };
     return { internal: gl.RGBA16F, type: gl.HALF_FLOAT, mode: 'mean' };
@@ -71,7 +75,11 @@ export function disposeTarget(gl: WebGL2RenderingContext, t: RenderTarget | null
 }
 
 /** Reads a width×height RGBA8 region of the bound read framebuffer, flipped to top-row-first. */
-export function readTopRowFirst(gl: WebGL2RenderingContext, width: number, height: number): Uint8ClampedArray {
+export function readTopRowFirst(
+  gl: WebGL2RenderingContext,
+  width: number,
+  height: number,
+): Uint8ClampedArray {
   const raw = new Uint8Array(width * height * 4);
   gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, raw);
   const out = new Uint8ClampedArray(raw.length);

@@ -4,6 +4,7 @@
  * they rely on, so the interactive loop and an export can interleave their draws.
  */
 import type { UniformEntry } from '../../shader-gen/glsl/values.ts';
+import { bindProgram } from './gl-program.ts';
 import { ProgramCache } from './program-cache.ts';
 import { createTarget, type RenderTarget, readTopRowFirst } from './render-target.ts';
 import { ResolvePass } from './resolve-pass.ts';
@@ -47,7 +48,7 @@ export class Renderer {
     const gl = this.gl;
     gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
     gl.viewport(0, 0, width, height);
-    gl.useProgram(gp.program);
+    bindProgram(gl, gp.program);
     if (gp.uploaded !== uniforms) uploadUniforms(gl, gp, uniforms);
     setFrameUniforms(gl, gp, frame);
     gl.enable(gl.BLEND);
@@ -82,7 +83,13 @@ export class Renderer {
     height: number,
   ): Uint8ClampedArray {
     const gl = this.gl;
-    this.resolvePass.draw(target.texture, this.resolveCount(target, samples), scratch.framebuffer, width, height);
+    this.resolvePass.draw(
+      target.texture,
+      this.resolveCount(target, samples),
+      scratch.framebuffer,
+      width,
+      height,
+    );
     gl.bindFramebuffer(gl.FRAMEBUFFER, scratch.framebuffer);
     const pixels = readTopRowFirst(gl, width, height);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);

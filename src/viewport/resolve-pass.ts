@@ -6,9 +6,9 @@
  * c ≤ 0.0031308 ? 12.92c : 1.055c^(1/2.4) − 0.055.
  */
 import { toSrgbGlsl } from '../../shader-gen/glsl/colour.glsl.ts';
-import { VERTEX_SOURCE } from '../../shader-gen/glsl/template.ts';
 import { collectFunctions } from '../../shader-gen/glsl/snippet.ts';
-import { buildProgram } from './gl-program.ts';
+import { VERTEX_SOURCE } from '../../shader-gen/glsl/template.ts';
+import { bindProgram, buildProgram } from './gl-program.ts';
 
 const RESOLVE_FRAGMENT = `#version 300 es
 precision highp float;
@@ -48,7 +48,7 @@ export class ResolvePass {
     gl.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
     gl.viewport(0, 0, width, height);
     gl.disable(gl.BLEND);
-    gl.useProgram(this.program);
+    bindProgram(gl, this.program);
     gl.activeTexture(gl.TEXTURE0);
     gl.bindTexture(gl.TEXTURE_2D, source);
     gl.uniform1i(this.accum, 0);

@@ -50,8 +50,12 @@ export class SceneProgramBuilder {
   /** Bumped by every change that shows; the bake belongs to one version. */
   private version = 0;
   private changedAt = 0;
-  private bake: { version: number; compiled: CompiledProgram; build: PendingBuild | null; done: boolean } | null =
-    null;
+  private bake: {
+    version: number;
+    compiled: CompiledProgram;
+    build: PendingBuild | null;
+    done: boolean;
+  } | null = null;
   private reported: string | null = null;
   private compilesBefore = 0;
   private bakedBefore = 0;

@@ -21,7 +21,8 @@ export interface TiledRenderOptions {
   readonly transparent: boolean;
   readonly tile?: number;
   /** Fraction done in [0, 1]; return false to cancel. */
-  readonly onProgress?: (fraction: number) => boolean | undefined | void;
+  // biome-ignore lint/suspicious/noConfusingVoidType: callbacks that return nothing must fit
+  readonly onProgress?: (fraction: number) => boolean | void;
 }
 
 /** Lets the browser run a frame (and other tasks) between two chunks of GPU work. */

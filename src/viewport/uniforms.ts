@@ -39,7 +39,11 @@ function finite(u: UniformEntry): boolean {
 }
 
 /** Uploads the scene's uniforms; the program must be in use. Never uploads NaN or ∞. */
-export function uploadUniforms(gl: WebGL2RenderingContext, gp: GpuProgram, entries: readonly UniformEntry[]): void {
+export function uploadUniforms(
+  gl: WebGL2RenderingContext,
+  gp: GpuProgram,
+  entries: readonly UniformEntry[],
+): void {
   for (const u of entries) {
     if (!finite(u)) {
       const message = `uniform ${u.name} has a non-finite value [${u.value.join(', ')}]`;

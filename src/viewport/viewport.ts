@@ -9,13 +9,15 @@
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import type { Scene, View } from '../../nodes/core/scene.ts';
 import { sampleOffset } from '../../shader-gen/view.ts';
-import { type SceneProgram, SceneProgramBuilder } from './scene-program.ts';
 import { createTarget, disposeTarget, type RenderTarget } from './render-target.ts';
 import { Renderer } from './renderer.ts';
+import { type SceneProgram, SceneProgramBuilder } from './scene-program.ts';
 import { renderTiled } from './tiled-render.ts';
 
 export interface ViewportOptions {
+  /** The compiler's and the driver's diagnostics (KF403 with node ids), whenever they change; [] when clean. */
   onDiagnostics?(d: Diagnostic[]): void;
+  /** After each drawn frame: samples on screen, the scene's target, CPU ms spent issuing the frame. */
   onFrame?(info: { samples: number; target: number; ms: number }): void;
   /** Stillness before the baked program is built (default 600; Infinity: never bake). */
   idleBakeMs?: number;
@@ -40,6 +42,8 @@ export interface RenderToPixelsOptions {
   samples: number;
   view?: View;
   transparent?: boolean;
+  /** Fraction done in [0, 1]; return false to cancel. */
+  // biome-ignore lint/suspicious/noConfusingVoidType: the editor's API (a callback may return nothing)
   onProgress?(f: number): boolean | void;
   tile?: number;
 }
@@ -95,8 +99,14 @@ export class Viewport {
       this.restartPending = true;
     };
     const onRestored = () => {
+      try {
+        this.renderer = new Renderer(gl);
+      } catch (e) {
+        // Lost again while rebuilding: the next 'webglcontextrestored' tries once more.
+        console.warn('[kleinflow] could not rebuild the WebGL renderer', e);
+        return;
+      }
       this.lost = false;
-      this.renderer = new Renderer(gl);
       this.sceneDirty = this.scene !== null;
       this.requestFrame();
     };
@@ -118,7 +128,10 @@ export class Viewport {
     };
   }
 
-  /** Recompiles only when the structure changes (else uploads uniforms); restarts accumulation. */
+  /**
+   * Recompiles only when the structure changes (else uploads uniforms) and restarts accumulation;
+   * a scene with the same structure and values as the current one changes nothing.
+   */
   setScene(scene: Scene): void {
     this.scene = scene;
     this.sceneDirty = true;
@@ -150,15 +163,19 @@ export class Viewport {
     if (!scene) throw new Error('renderToPixels: no scene was set');
     const renderer = this.requireRenderer();
     const program = this.programs.exportProgram(renderer, scene);
-    return renderTiled(() => this.requireRenderer(), () => program, {
-      width: opts.width,
-      height: opts.height,
-      samples: opts.samples,
-      view: opts.view ?? this.view(scene),
-      transparent: opts.transparent ?? false,
-      tile: opts.tile,
-      onProgress: opts.onProgress,
-    });
+    return renderTiled(
+      () => this.requireRenderer(),
+      () => program,
+      {
+        width: opts.width,
+        height: opts.height,
+        samples: opts.samples,
+        view: opts.view ?? this.view(scene),
+        transparent: opts.transparent ?? false,
+        tile: opts.tile,
+        onProgress: opts.onProgress,
+      },
+    );
   }
 
   /** The picture on the canvas now (resolved from the accumulation buffer), top row first; null before the first frame. */
@@ -241,8 +258,9 @@ export class Viewport {
 
   private drawFrame(renderer: Renderer, program: SceneProgram, scene: Scene, target: number): void {
     const t0 = performance.now();
-    const width = this.canvas.width;
-    const height = this.canvas.height;
+    // The drawing buffer can be smaller than canvas.width × height (browsers cap its size).
+    const width = this.gl.drawingBufferWidth;
+    const height = this.gl.drawingBufferHeight;
     if (!this.accum || this.accum.width !== width || this.accum.height !== height) {
       disposeTarget(this.gl, this.accum);
       this.accum = createTarget(this.gl, width, height, 'accumulation');

@@ -61,8 +61,19 @@ export function samplesAgree(w: readonly [number, number], viewScale: number, re
   return { depth, escaped, final };
 }
 
-/** Compares `img` (rendered with `scene.view` at jitter 0.5) with the CPU, pixel by pixel. */
-export function compareWithCpu(scene: Scene, img: ProbeImage): ParityStats {
+/** Where the compared image lies: the part at `offset` of an image of `resolution` pixels. */
+export interface ImageFrame {
+  readonly resolution: readonly [number, number];
+  readonly offset: readonly [number, number];
+}
+
+/**
+ * Compares `img` (rendered with `scene.view` at jitter 0.5, by default as the whole image) with
+ * the CPU, pixel by pixel.
+ */
+export function compareWithCpu(scene: Scene, img: ProbeImage, frame?: ImageFrame): ParityStats {
+  const [W, H] = frame?.resolution ?? [img.width, img.height];
+  const [ox, oy] = frame?.offset ?? [0, 0];
   const prepared = prepare(scene.elements);
   const eps = MARGIN_FRACTION * scene.view.scale;
   let excluded = 0;
@@ -73,7 +84,7 @@ export function compareWithCpu(scene: Scene, img: ProbeImage): ParityStats {
   let rawAgree = 0;
   for (let py = 0; py < img.height; py++) {
     for (let px = 0; px < img.width; px++) {
-      const w = pixelToWorld(scene.view, img.width, img.height, px, py);
+      const w = pixelToWorld(scene.view, W, H, px + ox, py + oy);
       const ref = pathMargin(prepared, scene.maxIterations, w);
       const ok = samplesAgree(w, scene.view.scale, ref, probeAt(img, px, py));
       if (ok.depth && ok.escaped) rawAgree++;

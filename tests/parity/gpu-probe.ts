@@ -20,6 +20,14 @@ export interface ProbeImage {
   readonly ms: number;
 }
 
+export interface FrameOptions {
+  /** Size of the whole image (default: the canvas). */
+  readonly resolution?: readonly [number, number];
+  /** Pixel offset of the canvas within the whole image (default 0, 0). */
+  readonly offset?: readonly [number, number];
+  readonly bgAlpha?: number;
+}
+
 export class GpuProbe {
   private constructor(
     private readonly browser: Browser,
@@ -53,9 +61,24 @@ export class GpuProbe {
     return this.page.evaluate(() => window.kfHarness.compileCount);
   }
 
-  /** Renders at the pixel centres (jitter 0.5, 0.5) with the given view and scene uniforms. */
-  async render(program: number, uniforms: readonly UniformEntry[], view: View): Promise<ProbeImage> {
-    const frame = { view: [view.center[0], view.center[1], view.scale], jitter: [0.5, 0.5] };
+  /**
+   * Renders with the given view and scene uniforms at the pixel centres (jitter 0.5, 0.5). By
+   * default the canvas is the whole image; `tile` renders the canvas as the part at `offset` of an
+   * image of `resolution` pixels (tiled export), `bgAlpha` sets u_bgAlpha.
+   */
+  async render(
+    program: number,
+    uniforms: readonly UniformEntry[],
+    view: View,
+    tile: FrameOptions = {},
+  ): Promise<ProbeImage> {
+    const frame = {
+      view: [view.center[0], view.center[1], view.scale],
+      jitter: [0.5, 0.5],
+      resolution: tile.resolution,
+      pixelOffset: tile.offset,
+      bgAlpha: tile.bgAlpha,
+    };
     const out = await this.page.evaluate(
       ([index, u, f]) => window.kfHarness.render(index, u, f),
       [program, uniforms, frame] as const,
@@ -76,7 +99,13 @@ interface Harness {
   render(
     index: number,
     uniforms: readonly UniformEntry[],
-    frame: { view: number[]; jitter: number[] },
+    frame: {
+      view: number[];
+      jitter: number[];
+      resolution?: readonly number[];
+      pixelOffset?: readonly number[];
+      bgAlpha?: number;
+    },
   ): { data: string; ms: number };
   compileCount: number;
 }

@@ -85,11 +85,12 @@
       gl.useProgram(p);
       harness.setUniforms(p, [
         ...uniforms,
-        { name: 'u_resolution', type: 'vec2', value: [harness.width, harness.height] },
-        { name: 'u_pixelOffset', type: 'vec2', value: [0, 0] },
+        { name: 'u_resolution', type: 'vec2', value: frame.resolution ?? [harness.width, harness.height] },
+        { name: 'u_pixelOffset', type: 'vec2', value: frame.pixelOffset ?? [0, 0] },
         { name: 'u_view', type: 'vec3', value: frame.view },
         { name: 'u_jitter', type: 'vec2', value: frame.jitter },
-        { name: 'u_bgAlpha', type: 'float', value: [1] },
+        { name: 'u_bgAlpha', type: 'float', value: [frame.bgAlpha ?? 1] },
+        { name: 'iResolution', type: 'vec3', value: [harness.width, harness.height, 1] },
       ]);
       const t0 = performance.now();
       gl.drawArrays(gl.TRIANGLES, 0, 3);

@@ -11,7 +11,7 @@ import { ELEMENT_KINDS } from '../../shader-gen/elements/index.ts';
 import { invertState } from '../../shader-gen/elements/inversion.ts';
 import { reflectState } from '../../shader-gen/elements/reflection.ts';
 
-const SEED = { seed: 42, numRuns: 300 } as const;
+const SEED = { seed: 42, numRuns: 200 } as const;
 const coord = fc.double({ min: -4, max: 4, noNaN: true });
 const point = fc.tuple(coord, coord) as fc.Arbitrary<Vec2>;
 const circle = fc.record({

@@ -237,6 +237,8 @@ describe('invariants on every example graph', () => {
     const ev = evaluateGraph(loaded.doc, registry);
     const s = ev.scene;
     expect(s.renderNodeId, `${file} has no render node`).not.toBeNull();
+    expect(ev.diagnostics.filter((d) => d.severity === 'error')).toEqual([]);
+    expect(s.elements.length).toBeGreaterThan(0);
     const { center, scale } = s.view;
     const half = scale * 0.75; // a 3:2 canvas and a little more vertically
     fc.assert(

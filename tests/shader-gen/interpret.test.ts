@@ -23,7 +23,6 @@ describe('interpret', () => {
     // p = (0.5, 0): A → (2, 0), factor 4; B: |(2,0)−(3,0)| = 1, on the circle: not inside → stop
     const r = interpret(scene([A, B]), [0.5, 0]);
     expect(r).toMatchObject({ depth: 1, final: [2, 0], scale: 4, escaped: true });
-    // p = (0.25, 0): A → (4, 0) factor 16; stop
     // p = (2.5, 0): B → 3 + 1/(−0.5) = (1, 0) factor 4; A: on circle, stop
     expect(interpret(scene([A, B]), [2.5, 0])).toMatchObject({ depth: 1, final: [1, 0], scale: 4 });
     // p = (2.75, 0): B → 3 − 4 = (−1, 0), on A: stop, factor 16

@@ -5,7 +5,7 @@
  */
 import { hasErrors } from '../../../nodes/core/diagnostics.ts';
 import { parseArgs } from '../args.ts';
-import { CliError, type CliCommand, EXIT, usageError } from '../command.ts';
+import { type CliCommand, CliError, EXIT, usageError } from '../command.ts';
 import { countBySeverity, formatDiagnostic, loadGraph } from '../load-graph.ts';
 
 const plural = (n: number, word: string) => `${n} ${word}${n === 1 ? '' : 's'}`;
@@ -33,7 +33,8 @@ export const checkCommand: CliCommand = {
           io.stdout.write(`${prefix ? `${path}: ` : ''}${formatDiagnostic(d, load.doc)}\n`);
         }
         const n = countBySeverity(load.diagnostics);
-        const summary = n.error + n.warning === 0 ? 'ok' : `${plural(n.error, 'error')}, ${plural(n.warning, 'warning')}`;
+        const summary =
+          n.error + n.warning === 0 ? 'ok' : `${plural(n.error, 'error')}, ${plural(n.warning, 'warning')}`;
         io.stderr.write(`${path}: ${summary}\n`);
         if (hasErrors(load.diagnostics)) status = EXIT.failed;
       } catch (e) {

@@ -4,7 +4,9 @@
  */
 import type { CliCommand } from '../command.ts';
 import { checkCommand } from './check.ts';
+import { convertCommand } from './convert.ts';
+import { glslCommand } from './glsl.ts';
 import { renderCommand } from './render.ts';
 import { sampleCommand } from './sample.ts';
 
-export const COMMANDS: readonly CliCommand[] = [renderCommand, sampleCommand, checkCommand];
+export const COMMANDS: readonly CliCommand[] = [renderCommand, sampleCommand, glslCommand, checkCommand, convertCommand];

@@ -9,14 +9,14 @@ import {
   parseSizeOption,
   stringOption,
 } from '../args.ts';
-import { CliError, type CliCommand, EXIT, usageError } from '../command.ts';
+import { type CliCommand, CliError, EXIT, usageError } from '../command.ts';
 import { fileErrorMessage, loadScene } from '../load-graph.ts';
 import { progressLine } from '../progress.ts';
 import { renderScenePng } from '../render-png.ts';
 
 export const DEFAULT_RENDER_SIZE = { width: 1024, height: 1024 } as const;
-/** Sample count × pixels above which a progress line is worth showing (about a second of work). */
-const PROGRESS_WORK = 1 << 20;
+/** Sample count × pixels above which a progress line is worth showing (a few seconds of work). */
+const PROGRESS_WORK = 1 << 22;
 
 const OPTIONS: readonly OptionSpec[] = [
   { long: 'output', short: 'o', value: 'FILE', doc: 'the PNG to write (required)' },
@@ -51,7 +51,9 @@ export const renderCommand: CliCommand = {
       ? parseSizeOption('size', sizeText, LIMITS.maxImageSide)
       : DEFAULT_RENDER_SIZE;
     const samplesText = stringOption(parsed, 'samples');
-    const samples = samplesText ? parseIntegerOption('samples', samplesText, 1, LIMITS.maxSamples) : undefined;
+    const samples = samplesText
+      ? parseIntegerOption('samples', samplesText, 1, LIMITS.maxSamples)
+      : undefined;
 
     const load = await loadScene(io, graphPath);
     const used = samples ?? load.scene.samples;

@@ -6,7 +6,7 @@
 import type { Vec2 } from '../../../nodes/core/values.ts';
 import { interpret } from '../../../shader-gen/interpret.ts';
 import { expectPositionals, formatOptions, type OptionSpec, parseArgs, stringOption } from '../args.ts';
-import { CliError, type CliCommand, EXIT, usageError } from '../command.ts';
+import { type CliCommand, CliError, EXIT, usageError } from '../command.ts';
 import { documentText, loadScene, readInput } from '../load-graph.ts';
 
 const OPTIONS: readonly OptionSpec[] = [
@@ -33,8 +33,10 @@ export function parsePoints(path: string, text: string): Vec2[] {
     throw new CliError(`"${path}": expected an array of [x, y] points, got ${describe(value)}`);
   }
   value.forEach((p, i) => {
-    const ok = Array.isArray(p) && p.length === 2 && p.every((c) => typeof c === 'number' && Number.isFinite(c));
-    if (!ok) throw new CliError(`"${path}"[${i}]: expected [x, y] with two finite numbers, got ${describe(p)}`);
+    const ok =
+      Array.isArray(p) && p.length === 2 && p.every((c) => typeof c === 'number' && Number.isFinite(c));
+    if (!ok)
+      throw new CliError(`"${path}"[${i}]: expected [x, y] with two finite numbers, got ${describe(p)}`);
   });
   return value as Vec2[];
 }

@@ -64,7 +64,12 @@ const num = (v: unknown, fallback: number) => (typeof v === 'number' && Number.i
 function readSockets(raw: unknown[], path: string, notes: Diagnostic[]): FlowerSocket[] {
   const out: FlowerSocket[] = [];
   raw.forEach((s, i) => {
-    if (isObject(s) && typeof s.id === 'string' && typeof s.name === 'string' && typeof s.isOutput === 'boolean')
+    if (
+      isObject(s) &&
+      typeof s.id === 'string' &&
+      typeof s.name === 'string' &&
+      typeof s.isOutput === 'boolean'
+    )
       out.push({ id: s.id, name: s.name, isOutput: s.isOutput });
     else notes.push(note(`${path}.sockets[${i}]`, 'a socket without id, name or isOutput was ignored'));
   });
@@ -87,7 +92,12 @@ export function readFlowerGraph(json: Record<string, unknown>): FlowerGraph {
     if (seen) {
       // Flower's exporter repeats nodes; identical copies are harmless, different ones are not.
       if (JSON.stringify(rawNodes[seen.index]) !== JSON.stringify(n)) {
-        notes.push(note(path, `node "${id}" appears again with different data; the first entry (nodes[${seen.index}]) is used`));
+        notes.push(
+          note(
+            path,
+            `node "${id}" appears again with different data; the first entry (nodes[${seen.index}]) is used`,
+          ),
+        );
       }
       return;
     }
@@ -107,38 +117,37 @@ export function readFlowerGraph(json: Record<string, unknown>): FlowerGraph {
 
   const links: FlowerLink[] = [];
   const takenInputs = new Set<string>();
-  const rawEdges = Array.isArray(json.edges) ? json.edges : [];
-  rawEdges.forEach((e, index) => {
-    const path = `edges[${index}]`;
-    if (!isObject(e)) return notes.push(note(path, 'an edge entry that is not an object was skipped'));
+  /** The edge as output → input, or why it cannot be used. */
+  const resolve = (e: unknown, index: number): FlowerLink | string => {
+    if (!isObject(e)) return 'an edge entry that is not an object was skipped';
     const a = socketOwner.get(String(e.s1Id));
     const b = socketOwner.get(String(e.s2Id));
-    if (!a || !b) {
-      const missing = !a ? e.s1Id : e.s2Id;
-      return notes.push(note(path, `edge names socket "${String(missing)}", which no node has; skipped`));
-    }
+    if (!a || !b) return `edge names socket "${String(!a ? e.s1Id : e.s2Id)}", which no node has; skipped`;
     if (a.socket.isOutput === b.socket.isOutput) {
       const kind = a.socket.isOutput ? 'outputs' : 'inputs';
-      return notes.push(note(path, `edge joins two ${kind} (${a.node.name} and ${b.node.name}); skipped`));
+      return `edge joins two ${kind} (${a.node.name} and ${b.node.name}); skipped`;
     }
     const [out, inp] = a.socket.isOutput ? [a, b] : [b, a];
     if (out.socket.name !== inp.socket.name) {
-      return notes.push(
-        note(path, `edge joins a ${out.socket.name} output to a ${inp.socket.name} input; skipped`),
-      );
+      return `edge joins a ${out.socket.name} output to a ${inp.socket.name} input; skipped`;
     }
     if (takenInputs.has(inp.socket.id)) {
-      return notes.push(note(path, `input ${inp.ordinal + 1} of ${inp.node.name} "${inp.node.id}" has several edges; the first is used`));
+      return `input ${inp.ordinal + 1} of ${inp.node.name} "${inp.node.id}" has several edges; the first is used`;
     }
     takenInputs.add(inp.socket.id);
-    links.push({
-      from: out.node.id,
-      fromOutput: out.ordinal,
-      to: inp.node.id,
-      toInput: inp.ordinal,
-      name: out.socket.name,
-      index,
-    });
+    const name = out.socket.name;
+    return { from: out.node.id, fromOutput: out.ordinal, to: inp.node.id, toInput: inp.ordinal, name, index };
+  };
+  const rawEdges = Array.isArray(json.edges) ? json.edges : [];
+  rawEdges.forEach((e, index) => {
+    const link = resolve(e, index);
+    if (typeof link === 'string') notes.push(note(`edges[${index}]`, link));
+    else links.push(link);
   });
-  return { name: typeof json.name === 'string' ? json.name : undefined, nodes: [...nodes.values()], links, notes };
+  return {
+    name: typeof json.name === 'string' ? json.name : undefined,
+    nodes: [...nodes.values()],
+    links,
+    notes,
+  };
 }

@@ -6,8 +6,16 @@
  */
 import { type Diagnostic, diag } from '../../../nodes/core/diagnostics.ts';
 import { toHex } from '../../../nodes/core/port-values.ts';
+import { canConnect } from '../../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../../nodes/core/registry.ts';
-import { DEFAULT_VIEW, DOC_VERSION, FORMAT, type GraphDoc, type GraphEdge, type GraphNode } from '../../../nodes/graph/document.ts';
+import {
+  DEFAULT_VIEW,
+  DOC_VERSION,
+  FORMAT,
+  type GraphDoc,
+  type GraphEdge,
+  type GraphNode,
+} from '../../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
 import { loadDocument } from '../../../nodes/graph/load.ts';
 import { registry as defaultRegistry } from '../../../nodes/types/index.ts';
@@ -34,7 +42,11 @@ export function importFlower(json: unknown, registry: NodeRegistry = defaultRegi
     return {
       ok: false,
       diagnostics: [
-        diag('importProblem', { path: '(document)' }, 'not a Flower graph (expected "nodes" with "name" and "sockets")'),
+        diag(
+          'importProblem',
+          { path: '(document)' },
+          'not a Flower graph (expected "nodes" with "name" and "sockets")',
+        ),
       ],
     };
   }
@@ -49,7 +61,8 @@ export function importFlower(json: unknown, registry: NodeRegistry = defaultRegi
     const position: [number, number] = [Math.round(fn.x * GRAPH_SPREAD), Math.round(fn.y * GRAPH_SPREAD)];
     nodes.push({ id: ids.get(fn.id)!, type: m.type, position, params: m.params });
   }
-  const edges = wireEdges(graph, mapped, ids, notes);
+  const edges = wireEdges(graph, mapped, ids, registry, notes);
+  addTime(graph, mapped, ids, nodes, edges);
   addOutput(graph, mapped, ids, nodes, edges, notes);
 
   const doc: GraphDoc = {
@@ -72,10 +85,13 @@ export function importFlower(json: unknown, registry: NodeRegistry = defaultRegi
 
 function mapNodes(graph: FlowerGraph, registry: NodeRegistry, notes: Diagnostic[]): Map<string, MappedNode> {
   const wired = new Map<string, Set<number>>();
+  const consumers = new Map<string, string[]>();
+  const nameOf = new Map(graph.nodes.map((n) => [n.id, n.name]));
   for (const l of graph.links) {
     const set = wired.get(l.to) ?? new Set<number>();
     set.add(l.toInput);
     wired.set(l.to, set);
+    consumers.set(l.from, [...(consumers.get(l.from) ?? []), nameOf.get(l.to) ?? '']);
   }
   const mapped = new Map<string, MappedNode>();
   for (const node of graph.nodes) {
@@ -85,9 +101,13 @@ function mapNodes(graph: FlowerGraph, registry: NodeRegistry, notes: Diagnostic[
       notes.push(note(path, `unknown Flower node type "${node.name}" ("${node.id}"); skipped`));
       continue;
     }
-    const m = map(node, { registry, wired: wired.get(node.id) ?? new Set() });
+    const m = map(node, {
+      registry,
+      wired: wired.get(node.id) ?? new Set(),
+      consumers: consumers.get(node.id) ?? [],
+    });
     if ('skip' in m) {
-      notes.push(note(path, m.skip));
+      if (m.skip !== null) notes.push(note(path, m.skip));
       continue;
     }
     for (const text of m.notes) notes.push(note(path, text));
@@ -114,7 +134,9 @@ function assignIds(graph: FlowerGraph, mapped: ReadonlyMap<string, MappedNode>):
   }
   const mirrors = mirrorOrder(graph, mapped);
   const width = String(mirrors.length).length;
-  mirrors.forEach((fn, i) => ids.set(fn.id, `mirror-${String(i + 1).padStart(Math.max(2, width), '0')}`));
+  mirrors.forEach((fn, i) => {
+    ids.set(fn.id, `mirror-${String(i + 1).padStart(Math.max(2, width), '0')}`);
+  });
   return ids;
 }
 
@@ -128,8 +150,10 @@ function wireEdges(
   graph: FlowerGraph,
   mapped: ReadonlyMap<string, MappedNode>,
   ids: ReadonlyMap<string, string>,
+  registry: NodeRegistry,
   notes: Diagnostic[],
 ): GraphEdge[] {
+  const typeOfId = new Map([...mapped].map(([flowerId, m]) => [ids.get(flowerId)!, m.type]));
   const into = new Map(graph.links.map((l) => [`${l.to}:${l.toInput}`, l]));
   /** The Kleinflow port that carries Flower output `ordinal` of `nodeId` (through pass-through mirrors). */
   const source = (nodeId: string, ordinal: number, depth = 0): { node: string; port: string } | null => {
@@ -146,12 +170,49 @@ function wireEdges(
     if (!target || !from) continue; // an end was skipped: its own note explains it
     const port = target.inputs[link.toInput];
     if (!port) {
-      notes.push(note(`edges[${link.index}]`, `input ${link.toInput + 1} of Flower node "${link.to}" has no Kleinflow twin; edge skipped`));
+      notes.push(
+        note(
+          `edges[${link.index}]`,
+          `input ${link.toInput + 1} of Flower node "${link.to}" has no Kleinflow twin; edge skipped`,
+        ),
+      );
+      continue;
+    }
+    const out = registry.get(typeOfId.get(from.node)!)?.outputs[from.port]?.type;
+    const inp = registry.get(target.type)?.inputs[port]?.type;
+    if (!out || !inp || !canConnect(out, inp)) {
+      notes.push(
+        note(
+          `edges[${link.index}]`,
+          `a ${out ?? '?'} cannot feed the ${inp ?? '?'} input "${port}" in Kleinflow; edge skipped`,
+        ),
+      );
       continue;
     }
     edges.push({ id: `e${edges.length + 1}`, from, to: { node: ids.get(link.to)!, port } });
   }
   return edges;
+}
+
+/** One Time node drives every animated node (Flower's SinWave, CircularMotion) through its `t`. */
+function addTime(
+  graph: FlowerGraph,
+  mapped: ReadonlyMap<string, MappedNode>,
+  ids: ReadonlyMap<string, string>,
+  nodes: GraphNode[],
+  edges: GraphEdge[],
+): void {
+  const animated = graph.nodes.filter((n) => mapped.get(n.id)?.timeInput);
+  if (animated.length === 0) return;
+  let id = 'T1';
+  for (let k = 2; nodes.some((n) => n.id === id); k++) id = `T${k}`;
+  const left = Math.min(...nodes.map((n) => n.position[0])) - 300;
+  const top = Math.min(...animated.map((n) => n.y * GRAPH_SPREAD));
+  nodes.push({ id, type: 'time', position: [left, Math.round(top)], params: {} });
+  for (const fn of animated) {
+    const to = { node: ids.get(fn.id)!, port: mapped.get(fn.id)!.timeInput! };
+    edges.push({ id: `e${edges.length + 1}`, from: { node: id, port: 'time' }, to });
+  }
 }
 
 /** Adds the tile (Flower's colouring) and the render node with every mirror, in Flower's order. */
@@ -174,14 +235,23 @@ function addOutput(
   const middle = nodes.length ? nodes.reduce((s, n) => s + n.position[1], 0) / nodes.length : 0;
   const tileId = fresh('tile');
   const renderId = fresh('render');
-  nodes.push({ id: tileId, type: 'tile', position: [right, Math.round(middle + 220)], params: tileParams(graph, notes) });
+  nodes.push({
+    id: tileId,
+    type: 'tile',
+    position: [right, Math.round(middle + 220)],
+    params: tileParams(graph, notes),
+  });
   nodes.push({
     id: renderId,
     type: 'render',
     position: [right + 300, Math.round(middle)],
     params: { maxIterations: FLOWER_RENDER.maxIterations, samples: FLOWER_RENDER.samples },
   });
-  edges.push({ id: `e${edges.length + 1}`, from: { node: tileId, port: 'tile' }, to: { node: renderId, port: 'tile' } });
+  edges.push({
+    id: `e${edges.length + 1}`,
+    from: { node: tileId, port: 'tile' },
+    to: { node: renderId, port: 'tile' },
+  });
   for (const fn of mirrorOrder(graph, mapped)) {
     edges.push({
       id: `e${edges.length + 1}`,
@@ -204,13 +274,18 @@ function tileParams(graph: FlowerGraph, notes: Diagnostic[]): Record<string, unk
   if (!paletteNode) return hsv;
   const read = readFlowerPalette(paletteNode, graph);
   if (!read.ok) {
-    notes.push(note(`nodes[${paletteNode.index}]`, `${read.message}; Flower's rainbow colouring is used instead`));
+    notes.push(
+      note(`nodes[${paletteNode.index}]`, `${read.message}; Flower's rainbow colouring is used instead`),
+    );
     return hsv;
   }
   const { a, b, c, d } = read.palette;
   if ([a, b, c].some((v) => v.some((x) => x < 0 || x > 1))) {
     notes.push(
-      note(`nodes[${paletteNode.index}]`, 'palette values outside 0–1 were clamped (the tile stores its palette as colours)'),
+      note(
+        `nodes[${paletteNode.index}]`,
+        'palette values outside 0–1 were clamped (the tile stores its palette as colours)',
+      ),
     );
   }
   return { mode: 'cosine', step: FLOWER_PALETTE_STEP, a: toHex(a), b: toHex(b), c: toHex(c), d: toHex(d) };

@@ -25,16 +25,21 @@ export interface MappedNode {
   readonly outputs: readonly OutputSource[];
   /** Mirrors are wired into the render: circles first, then lines (Flower's test order). */
   readonly mirror?: 'circle' | 'line';
+  /** The input that the import's shared Time node drives (animated nodes). */
+  readonly timeInput?: string;
   /** Warnings about what did not carry over. */
   readonly notes: readonly string[];
 }
 
-export type Mapping = MappedNode | { readonly skip: string };
+/** No Kleinflow node: `skip` says why (a warning), or null when nothing is lost (values read elsewhere). */
+export type Mapping = MappedNode | { readonly skip: string | null };
 
 export interface MapContext {
   readonly registry: NodeRegistry;
   /** Flower input ordinals of this node that have an edge. */
   readonly wired: ReadonlySet<number>;
+  /** Flower type names of the nodes this node's outputs feed. */
+  readonly consumers: readonly string[];
 }
 
 const finite = (v: unknown): v is number => typeof v === 'number' && Number.isFinite(v);
@@ -138,44 +143,86 @@ export const FLOWER_NODE_TYPES: Readonly<Record<string, FlowerTypeMap>> = {
   CircularMotion: (node, ctx) =>
     ctx.registry.get('circular-motion')
       ? mapCircularMotion(node)
-      : { skip: `${named(node)} cannot be mapped yet (Kleinflow has no circular-motion node); what it drives keeps Kleinflow's defaults` },
-  Vec3: (node) => ({
-    skip: `${named(node)} has no Kleinflow node of its own; its values are read where a ColorPalettes node uses them`,
-  }),
-  ColorPalettes: (node) => ({
-    skip: `${named(node)} becomes the colouring of the imported tile node`,
-  }),
+      : {
+          skip: `${named(node)} cannot be mapped yet (Kleinflow has no circular-motion node); what it drives keeps its saved values`,
+        },
+  Vec3: (node, ctx) => {
+    if (ctx.consumers.length > 0 && ctx.consumers.every((c) => c === 'ColorPalettes')) {
+      return ctx.wired.size === 0
+        ? { skip: null }
+        : {
+            skip: `${named(node)} has wired inputs; the palette uses its saved values (the animation is lost)`,
+          };
+    }
+    return { skip: `${named(node)} cannot be mapped (Kleinflow uses Vec3 values only as palette colours)` };
+  },
+  // Its palette becomes the imported tile's colouring (import.ts, palette.ts).
+  ColorPalettes: () => ({ skip: null }),
   OrbitSeed: (node) => ({
     skip: `${named(node)} cannot be mapped yet (Kleinflow has no orbit-seed node); the picture shows no seed`,
   }),
 };
 
-/** Kleinflow's `sine` node (value = offset + amplitude·sin(2π t / period + phase)); see nodes/types. */
+/** The first of `keys` saved on the node as a finite number. */
+const pick = (node: FlowerNode, ...keys: string[]): number | undefined => {
+  for (const k of keys) if (finite(node.raw[k])) return node.raw[k] as number;
+  return undefined;
+};
+
+/** Flower's periods are in milliseconds (its presets use 1000); Kleinflow's in seconds. */
+const MS = 1000;
+
+/**
+ * SinWave (amplitude, period, phaseShift, offset) → Kleinflow's `sine` node, whose inputs have
+ * the same meaning (offset + amplitude·sin(2π t/period + phase)), driven by the shared Time node.
+ */
 function mapSine(node: FlowerNode): Mapping {
-  const { period, amplitude, phaseShift, offset } = node.raw;
+  const amplitude = pick(node, 'amplitude');
+  const period = pick(node, 'period');
+  const phase = pick(node, 'phaseShift', 'phase');
+  const offset = pick(node, 'offset');
   return {
     type: 'sine',
     prefix: 'S',
     params: {
-      ...(finite(amplitude) ? { amplitude } : {}),
-      // Flower's period is in milliseconds.
-      ...(finite(period) && period > 0 ? { period: period / 1000 } : {}),
-      ...(finite(phaseShift) ? { phase: phaseShift } : {}),
-      ...(finite(offset) ? { offset } : {}),
+      ...(amplitude !== undefined ? { amplitude } : {}),
+      ...(period !== undefined && period > 0 ? { period: period / MS } : {}),
+      ...(phase !== undefined ? { phase } : {}),
+      ...(offset !== undefined ? { offset } : {}),
     },
     inputs: [],
     outputs: [{ port: 'value' }],
+    timeInput: 't',
     notes: [],
   };
 }
 
+/** CircularMotion → Kleinflow's `circular-motion` (centre, radius, period, phase), driven by Time. */
 function mapCircularMotion(node: FlowerNode): Mapping {
+  const cx = pick(node, 'centerX', 'posX', 'x0');
+  const cy = pick(node, 'centerY', 'posY', 'y0');
+  const radius = pick(node, 'radius', 'r');
+  const period = pick(node, 'period');
+  const phase = pick(node, 'phaseShift', 'phase');
+  const missing = [
+    cx === undefined || cy === undefined ? 'centre' : '',
+    radius === undefined ? 'radius' : '',
+    period === undefined ? 'period' : '',
+  ].filter(Boolean);
   return {
     type: 'circular-motion',
     prefix: 'R',
-    params: {},
+    params: {
+      ...(cx !== undefined && cy !== undefined ? { center: [cx, cy] } : {}),
+      ...(radius !== undefined && radius >= 0 ? { radius } : {}),
+      ...(period !== undefined && period > 0 ? { period: period / MS } : {}),
+      ...(phase !== undefined ? { phase } : {}),
+    },
     inputs: [],
     outputs: [{ port: 'point' }],
-    notes: [`${named(node)}: its radius and speed are not read yet (Kleinflow's defaults are used)`],
+    timeInput: 't',
+    notes: missing.length
+      ? [`${named(node)}: no saved ${missing.join(', ')} found; Kleinflow's defaults are used`]
+      : [],
   };
 }

@@ -50,8 +50,11 @@ export function readFlowerPalette(
   for (const [i, key] of ['a', 'b', 'c', 'd'].entries()) {
     const link = graph.links.find((l) => l.to === node.id && l.toInput === i);
     const source = link && byId.get(link.from);
-    const v = source ? readVec3(source.raw) : (readVec3(node.raw, key) ?? readVec3(node.raw, `colorPalettes${key.toUpperCase()}`));
-    if (!v) return { ok: false, message: `ColorPalettes "${node.id}": palette vector ${key} could not be read` };
+    const v = source
+      ? readVec3(source.raw)
+      : (readVec3(node.raw, key) ?? readVec3(node.raw, `colorPalettes${key.toUpperCase()}`));
+    if (!v)
+      return { ok: false, message: `ColorPalettes "${node.id}": palette vector ${key} could not be read` };
     out.push(v);
   }
   const [a, b, c, d] = out;

@@ -56,6 +56,28 @@ function labelAnchor(item: ScreenItem): [number, number] | null {
   return null;
 }
 
+/**
+ * Keeps a label whose anchor is on the pane fully inside it (a point near the right edge gets its
+ * label pulled left); a label whose anchor is off the pane is not drawn. Width is estimated from
+ * the character count (about 0.62 em per character).
+ */
+function placeLabel(
+  anchor: [number, number],
+  text: string,
+  width: number,
+  height: number,
+): [number, number] | null {
+  const font = OVERLAY_PX.labelFont;
+  const textWidth = 0.62 * font * text.length;
+  const [x, y] = anchor;
+  if (x < -textWidth || x > width || y < 0 || y > height + font) return null;
+  const pad = 4;
+  return [
+    Math.max(pad, Math.min(x, width - pad - textWidth)),
+    Math.max(font + pad, Math.min(y, height - pad)),
+  ];
+}
+
 export function OverlayShapes(props: OverlayShapesProps): JSX.Element {
   const { items, handles, width, height, hoveredNodeId, hoverHandle, dragTarget, showLabels } = props;
   const strokes: JSX.Element[] = [];
@@ -96,10 +118,11 @@ export function OverlayShapes(props: OverlayShapesProps): JSX.Element {
       );
     }
     const anchor = showLabels && item.label && !labelled.has(item.nodeId) ? labelAnchor(item) : null;
-    if (anchor && item.label) {
+    const at = anchor && item.label ? placeLabel(anchor, item.label, width, height) : null;
+    if (at) {
       labelled.add(item.nodeId);
       labels.push(
-        <text key={`label:${key}`} x={anchor[0]} y={anchor[1]} className="kf-overlay-label">
+        <text key={`label:${key}`} x={at[0]} y={at[1]} className="kf-overlay-label">
           {item.label}
         </text>,
       );
@@ -110,7 +133,7 @@ export function OverlayShapes(props: OverlayShapesProps): JSX.Element {
       <g>{strokes}</g>
       <g>{dots}</g>
       <g
-        fontSize={13}
+        fontSize={OVERLAY_PX.labelFont}
         fontFamily="system-ui, sans-serif"
         fontWeight={600}
         // White on a dark halo reads on any picture; the label sits right next to its shape.

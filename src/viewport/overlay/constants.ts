@@ -24,6 +24,8 @@ export const OVERLAY_PX = {
   lineMargin: 16,
   /** Labels sit this far from their point or circle. */
   labelOffset: 8,
+  /** Font size of node labels. */
+  labelFont: 13,
 } as const;
 
 /** Angle snapping steps in multiples of π / ANGLE_SNAP_DIVISIONS (15°). */

@@ -2,7 +2,7 @@ import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import type { Circle, Vec2 } from '../../../nodes/core/values.ts';
 import { invertPoint } from '../../../nodes/geometry/circle.ts';
-import { type Complex, cabs, cmul, csqrt, csub } from '../../../nodes/geometry/complex.ts';
+import { type Complex, cabs, cmul } from '../../../nodes/geometry/complex.ts';
 import {
   applyMatrix,
   classifyMatrix,

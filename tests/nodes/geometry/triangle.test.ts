@@ -135,6 +135,10 @@ describe('triangleMirrors', () => {
     [3, 3, 3],
     [4, 2, 4],
     [2, 3, 6],
+    [2, 2, 2],
+    [2, 3, 3],
+    [2, 3, 5],
+    [3, 3, 5],
   ])('(%i, %i, %i): the mirrors meet at angles π/p, π/q, π/r', (p, q, r) => {
     checkAngles(p, q, r);
   });

@@ -80,6 +80,24 @@ describe('analyzeGraph', () => {
     expect(ev.nodes.get('w')).toEqual({ diagnostics: [] });
     expect(ev.scene.elements).toEqual([]);
     expect(d.nodes).toHaveLength(3); // never silently dropped
+    // the render says which source is missing
+    expect(ev.diagnostics.find((x) => x.nodeId === 'out')).toMatchObject({
+      code: 'KF302',
+      severity: 'warning',
+    });
+  });
+
+  it('a node fed by a placeholder reports it instead of using its inline default', () => {
+    const d = doc(
+      [node('w', 'warp-drive'), node('i', 'inversion'), node('out', 'render')],
+      [edge('e1', 'w.circle', 'i.circle'), edge('e2', 'i.element', 'out.elements')],
+    );
+    const ev = evaluateGraph(d, registry);
+    const [d302] = ev.diagnostics.filter((x) => x.nodeId === 'i');
+    expect(d302).toMatchObject({ code: 'KF302', severity: 'error', port: 'circle' });
+    expect(d302.message).toContain('"w"');
+    expect(ev.scene.elements).toEqual([]); // not a unit-circle inversion from the default
+    expect(ev.analysis.order.indexOf('w')).toBeLessThan(ev.analysis.order.indexOf('i'));
   });
 
   it('KF204: dangling edges name the missing end', () => {
@@ -112,6 +130,17 @@ describe('analyzeGraph', () => {
     ]);
     expect(ds[0].message).toContain('"pointy"');
     expect(ds[1].message).toContain('"centre"');
+  });
+
+  it('KF205: an edge from a placeholder into a port that does not exist', () => {
+    const a = analyzeGraph(
+      doc([node('w', 'warp-drive'), node('c', 'circle')], [edge('e1', 'w.out', 'c.rim')]),
+      registry,
+    );
+    expect(a.diagnostics.map((d) => [d.code, d.path])).toEqual([
+      ['KF203', 'nodes[0].type'],
+      ['KF205', 'edges[0].to.port'],
+    ]);
   });
 
   it('KF206: a point cannot feed a circle input', () => {

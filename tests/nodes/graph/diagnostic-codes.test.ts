@@ -93,6 +93,7 @@ const SCENARIOS: Partial<Record<DiagnosticKey, () => readonly Diagnostic[]>> = {
       ),
       registry,
     ).diagnostics,
+  nodeVersion: () => evaluateGraph(doc([{ ...node('p', 'point'), version: 99 }]), registry).diagnostics,
   nodeThrew: () => evaluateGraph(doc([node('t', 'test-throws')]), testRegistry).diagnostics,
   nonFinite: () => evaluateGraph(doc([node('t', 'test-nan')]), testRegistry).diagnostics,
 };

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
 import { registry } from '../../../nodes/types/index.ts';
+import { compile } from '../../../shader-gen/compile.ts';
 import { doc, edge, node } from '../support/doc.ts';
 import { checkDefaults, codes, defOf, evalNode } from '../support/eval-node.ts';
 
@@ -50,5 +51,34 @@ describe('animation nodes', () => {
       evaluateGraph(g, registry, { time }).nodes.get('s')!.outputs!.value as number;
     expect(at(0)).toBeCloseTo(0, 14);
     expect(at(1)).toBeCloseTo(1, 14);
+  });
+
+  it('animating moves values only: same structure key, new uniforms, no recompilation', () => {
+    const g = doc(
+      [
+        node('t', 'time'),
+        node('orbit', 'circular-motion', { radius: 0.4, period: 3 }),
+        node('c', 'circle', { radius: 0.5 }),
+        node('inv', 'inversion'),
+        node('w', 'sine', { period: 5, amplitude: 10, offset: 15 }),
+        node('sp', 'spiral-similarity', { r1: 0.3, r2: 0.45 }),
+        node('out', 'render'),
+      ],
+      [
+        edge('e1', 't.time', 'orbit.t'),
+        edge('e2', 'orbit.point', 'c.center'),
+        edge('e3', 'c.circle', 'inv.circle'),
+        edge('e4', 't.time', 'w.t'),
+        edge('e5', 'w.value', 'sp.angle'),
+        edge('e6', 'inv.element', 'out.elements'),
+        edge('e7', 'sp.element', 'out.elements'),
+      ],
+    );
+    const at = (time: number) => compile(evaluateGraph(g, registry, { time }).scene);
+    const a = at(0);
+    const b = at(1.3);
+    expect(b.structureKey).toBe(a.structureKey);
+    expect(b.source).toBe(a.source);
+    expect(JSON.stringify(b.uniforms)).not.toBe(JSON.stringify(a.uniforms));
   });
 });

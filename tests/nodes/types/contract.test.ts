@@ -75,6 +75,14 @@ describe.each(registry.all.map((def) => [def.type, def] as const))('node type "%
   it('has a migration for every version below its own', () => {
     for (let v = 1; v < def.version; v++)
       expect(typeof def.migrations?.[v], `migration ${v} → ${v + 1}`).toBe('function');
+    // and a node written for any older version (no version = 1) still evaluates with its defaults
+    for (let v = 1; v <= def.version; v++) {
+      const ev = evaluateGraph(doc([{ ...node('n', def.type), version: v }]), registry);
+      expect(
+        ev.diagnostics.filter((d) => d.severity === 'error'),
+        `from version ${v}`,
+      ).toEqual([]);
+    }
   });
 
   it('evaluates alone, with its defaults, without errors and deterministically', () => {

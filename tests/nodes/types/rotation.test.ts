@@ -20,7 +20,7 @@ describe('rotation node', () => {
     const r = evalNode('rotation', { center: [1, 1], order: 4, angle: 0 });
     const shapes = def.overlay!(r.ctx!, r.outputs!);
     expect(shapes.map((s) => s.shape)).toEqual(['point', 'line', 'line']);
-    const second = shapes[2] as { line: { a: number[]; b: number[] } };
+    const second = shapes[2] as unknown as { line: { a: number[]; b: number[] } };
     expect(second.line.b[0]).toBeCloseTo(1, 12); // the ray at 90°
     expect(second.line.b[1]).toBeCloseTo(2, 12);
     expect(def.drag!('direction', [1, 3], r.ctx!)).toEqual({ angle: 90 });

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { parseDocumentText } from '../../../nodes/graph/load.ts';
 import type { GraphDoc } from '../../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
+import { parseDocumentText } from '../../../nodes/graph/load.ts';
 import { registry } from '../../../nodes/types/index.ts';
 import { openBytes, openDocumentText, serializeDocument } from '../../../src/io/document-io.ts';
 import { encodeShareFragment } from '../../../src/io/share-url.ts';
@@ -26,7 +26,15 @@ const WITH_UNKNOWN = {
       version: 3,
       label: 'Warp',
       position: [200, 0],
-      params: { strength: 2.5, mode: 'swirl', curve: [[0, 1], [1, 0]], nested: { deep: { ok: true } } },
+      params: {
+        strength: 2.5,
+        mode: 'swirl',
+        curve: [
+          [0, 1],
+          [1, 0],
+        ],
+        nested: { deep: { ok: true } },
+      },
     },
     { id: 'r', type: 'render', position: [400, 0], params: {} },
   ],

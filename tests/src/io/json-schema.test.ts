@@ -22,7 +22,14 @@ describe('published JSON Schema', () => {
   it('names the same top-level fields and required keys as the document format', () => {
     const schema = documentJsonSchema();
     expect(Object.keys(schema.properties as object).sort()).toEqual(Object.keys(docSchema.shape).sort());
-    expect([...(schema.required as string[])].sort()).toEqual(['edges', 'format', 'meta', 'nodes', 'version', 'view']);
+    expect([...(schema.required as string[])].sort()).toEqual([
+      'edges',
+      'format',
+      'meta',
+      'nodes',
+      'version',
+      'view',
+    ]);
     expect(schema.additionalProperties).toBe(false);
     const node = (schema.properties as Record<string, { items: { required: string[] } }>).nodes.items;
     expect(node.required.sort()).toEqual(['id', 'params', 'position', 'type']);
@@ -45,6 +52,8 @@ describe('published JSON Schema', () => {
     expect(checkSchema(schema, { ...good, format: 'flower' })).toEqual(['$.format: expected "kleinflow"']);
     const badNode = { ...good, nodes: [{ id: 'a', type: 'point', position: [0], params: {} }] };
     expect(checkSchema(schema, badNode)).toContain('$.nodes[0].position: too few items');
-    expect(checkSchema(schema, { ...good, view: { center: [0, 0], scale: 0 } })).toContain('$.view.scale: too small');
+    expect(checkSchema(schema, { ...good, view: { center: [0, 0], scale: 0 } })).toContain(
+      '$.view.scale: too small',
+    );
   });
 });

@@ -53,7 +53,10 @@ describe('graphs inside PNGs', () => {
   });
 
   it('reports a damaged embedded graph with its paths', () => {
-    const png = encodePng(image, { [PNG_GRAPH_KEY]: '{"format":"kleinflow","version":1,"meta":{},"nodes":[{}],"edges":[],"view":{"center":[0,0],"scale":1}}' });
+    const png = encodePng(image, {
+      [PNG_GRAPH_KEY]:
+        '{"format":"kleinflow","version":1,"meta":{},"nodes":[{}],"edges":[],"view":{"center":[0,0],"scale":1}}',
+    });
     const r = extractGraph(png);
     expect(r.ok).toBe(false);
     if (!r.ok) expect(r.diagnostics.map((d) => d.path)).toContain('nodes[0].id');

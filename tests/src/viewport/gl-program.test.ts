@@ -15,7 +15,7 @@ describe('parseInfoLog', () => {
     const ds = parseInfoLog(log, lineMap, 'fragment');
     expect(ds).toHaveLength(3);
     expect(ds[0]).toMatchObject({ code: 'KF403', severity: 'error', nodeId: 'mirrorB' });
-    expect(ds[0].message).toContain("node \"mirrorB\", line 3: 'kf_injected_error' : undeclared identifier");
+    expect(ds[0].message).toContain('node "mirrorB", line 3: \'kf_injected_error\' : undeclared identifier');
     // Source string 0 is the template: no node, the real line number.
     expect(ds[1].nodeId).toBeUndefined();
     expect(ds[1].message).toContain('fragment shader line 41');

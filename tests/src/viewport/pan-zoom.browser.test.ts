@@ -17,7 +17,10 @@ let page: Page;
 beforeAll(async () => {
   h = await openHarness(W, H);
   page = h.page;
-  await page.evaluate(([w, ht]) => window.kfViewport.create(w, ht, Number.POSITIVE_INFINITY), [W, H] as const);
+  await page.evaluate(([w, ht]) => window.kfViewport.create(w, ht, Number.POSITIVE_INFINITY), [
+    W,
+    H,
+  ] as const);
   await page.evaluate((s) => window.kfViewport.setScene(s), circlesScene());
   await page.evaluate(() => window.kfViewport.attachPanZoom());
 });

@@ -8,6 +8,7 @@ import type { Scene, View } from '../../../nodes/core/scene.ts';
 import { rasterize } from '../../../shader-gen/raster.ts';
 import { circlesScene, colourCount, compareImages, exampleScene } from './fixtures.ts';
 import { decode, type HarnessPage, openHarness } from './page/open-page.ts';
+import type { Quirks } from './page/viewport-page.ts';
 
 let h: HarnessPage;
 let page: Page;
@@ -22,8 +23,13 @@ afterAll(async () => {
 });
 
 const NO_BAKE = Number.POSITIVE_INFINITY;
-const create = (w: number, ht: number, idleBakeMs = NO_BAKE) =>
-  page.evaluate(([w, ht, idle]) => window.kfViewport.create(w, ht, idle), [w, ht, idleBakeMs] as const);
+const create = (w: number, ht: number, idleBakeMs = NO_BAKE, quirks: Partial<Quirks> = {}) =>
+  page.evaluate(([w, ht, idle, q]) => window.kfViewport.create(w, ht, idle, q), [
+    w,
+    ht,
+    idleBakeMs,
+    quirks,
+  ] as const);
 const setScene = (s: Scene) => page.evaluate((s) => window.kfViewport.setScene(s), s);
 const setView = (v: View) => page.evaluate((v) => window.kfViewport.setView(v), v);
 const stats = () => page.evaluate(() => window.kfViewport.stats());
@@ -122,10 +128,14 @@ describe('Viewport', () => {
     const s = await stats();
     expect(s).toMatchObject({ compiles: 1, bakedCompiles: 1, baked: true });
     expect(compareImages(uniform, await snapshot(), 2).offShare).toBeLessThan(0.01);
+    const framesBefore = s.frames;
     await setScene(circlesScene([-0.5, -0.3]));
-    await page.evaluate(() => new Promise((r) => requestAnimationFrame(r)));
-    await page.evaluate(() => new Promise((r) => requestAnimationFrame(r)));
-    expect(await stats()).toMatchObject({ compiles: 1, baked: false });
+    await settle(8);
+    // The first frame after the edit already comes from the uniform program (no compile); the
+    // baked one for the new values may take over later.
+    const log = await page.evaluate(() => window.kfViewport.frameLog);
+    expect(log[framesBefore]).toMatchObject({ samples: 1, baked: false });
+    expect((await stats()).compiles).toBe(1);
   });
 
   it('survives a lost WebGL context: the same picture comes back by itself', async () => {
@@ -167,6 +177,48 @@ describe('Viewport', () => {
     await settle(8);
     expect((await diagnostics()).at(-1)).toEqual([]);
     expect(compareImages(good, await snapshot(), 8).offShare).toBeGreaterThan(0.005);
+    expect(h.errors).toEqual([]);
+  });
+
+  it('refuses to upload a NaN (dev builds throw) and draws again once the values are finite', async () => {
+    await create(64, 64);
+    await setScene(circlesScene());
+    await settle(8);
+    const good = await snapshot();
+    const bad = circlesScene([Number.NaN, 0]);
+    const errorsBefore = h.errors.length;
+    await setScene(bad);
+    await page.evaluate(() => window.kfViewport.waitStill(200));
+    expect(h.errors.slice(errorsBefore).join('\n')).toMatch(/non-finite value/);
+    expect(compareImages(good, await snapshot()).offShare).toBe(0);
+    h.errors.length = errorsBefore;
+    await setScene(circlesScene([-0.5, -0.3]));
+    await settle(8);
+    expect(compareImages(good, await snapshot(), 8).offShare).toBeGreaterThan(0.01);
+    expect(h.errors).toEqual([]);
+  });
+
+  it('draws the same picture without EXT_float_blend (half-float running mean)', async () => {
+    await create(96, 96);
+    await setScene(circlesScene(undefined, 16));
+    await settle(16);
+    const sum = await snapshot();
+    await create(96, 96, NO_BAKE, { noFloatBlend: true });
+    await setScene(circlesScene(undefined, 16));
+    await settle(16);
+    expect(compareImages(sum, await snapshot(), 1).offShare).toBeLessThan(0.002);
+  });
+
+  it('with KHR_parallel_shader_compile, polls the bake over frames instead of waiting', async () => {
+    await create(96, 96, 30, { parallelCompile: true });
+    const queriesBefore = await page.evaluate(() => window.kfViewport.completionQueries());
+    await setScene(circlesScene());
+    await page.evaluate(() => window.kfViewport.waitBaked());
+    // Two "still compiling" answers, then ready: at least three queries, one per frame.
+    expect(
+      (await page.evaluate(() => window.kfViewport.completionQueries())) - queriesBefore,
+    ).toBeGreaterThanOrEqual(3);
+    expect(await stats()).toMatchObject({ compiles: 1, bakedCompiles: 1, baked: true });
     expect(h.errors).toEqual([]);
   });
 });

@@ -1,15 +1,21 @@
 import { describe, expect, it } from 'vitest';
 import type { Diagnostic } from '../../../../nodes/core/diagnostics.ts';
-import type { ReflectionElement, InversionElement, TileSpec } from '../../../../nodes/core/scene.ts';
+import { createRegistry } from '../../../../nodes/core/registry.ts';
+import type { InversionElement, ReflectionElement, TileSpec } from '../../../../nodes/core/scene.ts';
 import type { GraphDoc } from '../../../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../../../nodes/graph/evaluate.ts';
-import { registry } from '../../../../nodes/types/index.ts';
+import { NODE_TYPES, registry } from '../../../../nodes/types/index.ts';
 import { depthColour, hsvToRgb } from '../../../../shader-gen/colour.ts';
 import { interpret } from '../../../../shader-gen/interpret.ts';
 import { FLOWER_RENDER, importFlower, isFlowerDocument } from '../../../../src/io/flower/import.ts';
 import { circleMirror, fedge, fnode, fpoint, graph, lineMirror } from './support/flower-fixture.ts';
 
-function imported(json: unknown): { doc: GraphDoc; notes: Diagnostic[]; scene: ReturnType<typeof evaluateGraph>['scene']; errors: string[] } {
+function imported(json: unknown): {
+  doc: GraphDoc;
+  notes: Diagnostic[];
+  scene: ReturnType<typeof evaluateGraph>['scene'];
+  errors: string[];
+} {
   const r = importFlower(json);
   if (!r.ok) throw new Error(r.diagnostics.map((d) => d.message).join('\n'));
   const ev = evaluateGraph(r.doc, registry);
@@ -33,7 +39,11 @@ describe('Flower import: recognising the format', () => {
 describe('Flower import: node types', () => {
   it('Point: position from posX/posY; its first Float input drives y, the second x', () => {
     const json = graph({
-      nodes: [fnode('Constant', 'k', { value: 3 }), fnode('Constant', 'j', { value: -2 }), fpoint('p', 1.5, -2.5)],
+      nodes: [
+        fnode('Constant', 'k', { value: 3 }),
+        fnode('Constant', 'j', { value: -2 }),
+        fpoint('p', 1.5, -2.5),
+      ],
       edges: [fedge('Float', 'k', 'p', 0), fedge('Float', 'j', 'p', 1, true)],
     });
     const { doc, errors, scene } = imported(json);
@@ -62,7 +72,9 @@ describe('Flower import: node types', () => {
       expect(errors).toEqual([]);
       expect(notes).toEqual([]);
       const line = doc.nodes.find((n) => n.type === 'line')!;
-      const [a, b] = ['a', 'b'].map((port) => doc.edges.find((e) => e.to.node === line.id && e.to.port === port)!.from.node);
+      const [a, b] = ['a', 'b'].map(
+        (port) => doc.edges.find((e) => e.to.node === line.id && e.to.port === port)!.from.node,
+      );
       expect(doc.nodes.find((n) => n.id === a)!.params).toEqual({ x: 1, y: 1 });
       expect(doc.nodes.find((n) => n.id === b)!.params).toEqual({ x: 3, y: 2 });
       expect(doc.nodes.find((n) => n.type === 'reflection')!.params).toEqual({ flip: reverse });
@@ -76,7 +88,15 @@ describe('Flower import: node types', () => {
   }
 
   it('CircleThreePoints + CircleMirror: inversion in the circle through the three points', () => {
-    const { scene, errors } = imported(graph(circleMirror('c', [[2, 0], [0, 2], [-2, 0]])));
+    const { scene, errors } = imported(
+      graph(
+        circleMirror('c', [
+          [2, 0],
+          [0, 2],
+          [-2, 0],
+        ]),
+      ),
+    );
     expect(errors).toEqual([]);
     const [el] = scene.elements as InversionElement[];
     expect(el.kind).toBe('inversion');
@@ -88,9 +108,17 @@ describe('Flower import: node types', () => {
   it('mirrors are wired into the render in Flower order: every circle first, then the lines', () => {
     const json = graph(
       lineMirror('l1', [0, -5], [0, 5], false),
-      circleMirror('c1', [[10, 1], [11, 0], [10, -1]]),
+      circleMirror('c1', [
+        [10, 1],
+        [11, 0],
+        [10, -1],
+      ]),
       lineMirror('l2', [5, 5], [-5, 5], true),
-      circleMirror('c2', [[-10, 1], [-11, 0], [-10, -1]]),
+      circleMirror('c2', [
+        [-10, 1],
+        [-11, 0],
+        [-10, -1],
+      ]),
     );
     const { doc, scene } = imported(json);
     expect(scene.elements.map((e) => `${e.kind}:${e.nodeId}`)).toEqual([
@@ -118,30 +146,61 @@ describe('Flower import: node types', () => {
     expect(b.n[1]).toBeCloseTo(-a.n[1], 12);
   });
 
-  it('SinWave: animated when Kleinflow has a sine node, else its saved value with a note', () => {
-    const json = graph({
-      nodes: [fnode('SinWave', 's', { period: 1000, amplitude: 10, phaseShift: 0, offset: 0, value: -8.5 }), fpoint('p', 1, -8.5)],
+  const sinWaveGraph = () =>
+    graph({
+      nodes: [
+        fnode('SinWave', 's', { period: 2000, amplitude: 10, phaseShift: 0.5, offset: 1, value: -8.5 }),
+        fpoint('p', 1, -8.5),
+      ],
       edges: [fedge('Float', 's', 'p', 0)],
+    });
+
+  it('SinWave becomes a sine node driven by a Time node (Flower periods are milliseconds)', () => {
+    const { doc, notes, errors } = imported(sinWaveGraph());
+    expect(errors).toEqual([]);
+    expect(notes).toEqual([]);
+    const sine = doc.nodes.find((n) => n.type === 'sine')!;
+    expect(sine.params).toEqual({ amplitude: 10, period: 2, phase: 0.5, offset: 1 });
+    const time = doc.nodes.find((n) => n.type === 'time')!;
+    expect(doc.edges).toContainEqual(
+      expect.objectContaining({ from: { node: time.id, port: 'time' }, to: { node: sine.id, port: 't' } }),
+    );
+    // At t = 0.5 s the point's y is 1 + 10·sin(2π·0.5/2 + 0.5).
+    const point = doc.nodes.find((n) => n.type === 'point')!;
+    const at = evaluateGraph(doc, registry, { time: 0.5 }).scene.handles.find(
+      (h) => h.nodeId === point.id,
+    )!.at;
+    expect(at[1]).toBeCloseTo(1 + 10 * Math.sin(Math.PI / 2 + 0.5), 12);
+  });
+
+  it('SinWave without a Kleinflow sine node: its saved value as a Number, with a note', () => {
+    const withoutSine = createRegistry(NODE_TYPES.filter((t) => t.type !== 'sine'));
+    const r = importFlower(sinWaveGraph(), withoutSine);
+    if (!r.ok) throw new Error('import failed');
+    expect(r.doc.nodes.find((n) => n.type === 'number')?.params).toEqual({ value: -8.5 });
+    expect(messages(r.notes)).toEqual([
+      expect.stringMatching(/SinWave "s" cannot be mapped yet.*-8\.5.*animation is lost/),
+    ]);
+  });
+
+  it('CircularMotion becomes circular-motion driven by Time; OrbitSeed is reported, never dropped silently', () => {
+    const json = graph({
+      nodes: [
+        fnode('CircularMotion', 'cm', { centerX: 1, centerY: 2, radius: 3, period: 4000, phaseShift: 0 }),
+        fnode('LineTwoPoints', 'L'),
+        fpoint('q', 5, 5),
+        fnode('OrbitSeed', 'os', { posX: 0, posY: 0, width: 1, height: 1 }),
+      ],
+      edges: [fedge('Point', 'cm', 'L', 0), fedge('Point', 'q', 'L', 1)],
     });
     const { doc, notes, errors } = imported(json);
     expect(errors).toEqual([]);
-    if (registry.get('sine')) {
-      expect(doc.nodes.some((n) => n.type === 'sine')).toBe(true);
-    } else {
-      expect(doc.nodes.find((n) => n.type === 'number')?.params).toEqual({ value: -8.5 });
-      expect(messages(notes)).toEqual([expect.stringMatching(/SinWave "s" cannot be mapped yet.*-8\.5/)]);
-    }
-  });
-
-  it('CircularMotion and OrbitSeed are reported, never dropped silently', () => {
-    const json = graph({
-      nodes: [fnode('CircularMotion', 'cm'), fpoint('p', 2, 3), fnode('OrbitSeed', 'os', { posX: 0, posY: 0, width: 1, height: 1 })],
-      edges: [fedge('Point', 'cm', 'p', 0)],
-    });
-    const { notes } = imported(json);
-    const text = messages(notes).join('\n');
-    if (!registry.get('circular-motion')) expect(text).toMatch(/CircularMotion "cm" cannot be mapped yet/);
-    expect(text).toMatch(/OrbitSeed "os"/);
+    const motion = doc.nodes.find((n) => n.type === 'circular-motion')!;
+    expect(motion.params).toEqual({ center: [1, 2], radius: 3, period: 4, phase: 0 });
+    expect(doc.edges.some((e) => e.from.node === motion.id && e.to.port === 'a')).toBe(true);
+    expect(messages(notes)).toEqual([expect.stringMatching(/OrbitSeed "os" cannot be mapped yet/)]);
+    const bare = imported(graph({ nodes: [fnode('CircularMotion', 'cm')], edges: [] }));
+    expect(messages(bare.notes)).toEqual([expect.stringMatching(/no saved centre, radius, period found/)]);
   });
 
   it("tile reproduces Flower's colours: hue 0.01 + 0.05(n − 1) after n reflections", () => {
@@ -170,7 +229,7 @@ describe('Flower import: node types', () => {
       edges: ['va', 'vb', 'vc', 'vd'].map((v, i) => fedge('Vec3', v, 'pal', i)),
     });
     const { scene, notes } = imported(json);
-    expect(messages(notes).join('\n')).not.toMatch(/could not be read/);
+    expect(notes).toEqual([]);
     expect(scene.tile.coloring.mode).toBe('cosine');
     for (let n = 1; n <= 20; n++) {
       const ours = depthColour(scene.tile.coloring, n);
@@ -181,6 +240,20 @@ describe('Flower import: node types', () => {
     }
   });
 
+  it('a palette that cannot be read, or a Vec3 used elsewhere, is reported', () => {
+    const json = graph(lineMirror('m', [0, 0], [1, 0], false), {
+      nodes: [fnode('Vec3', 'v', { valueX: 1, valueY: 0, valueZ: 0 }), fnode('ColorPalettes', 'pal')],
+      edges: [fedge('Vec3', 'v', 'pal', 0)],
+    });
+    const { scene, notes } = imported(json);
+    expect(messages(notes)).toEqual([
+      expect.stringMatching(/palette vector b could not be read; Flower's rainbow colouring is used/),
+    ]);
+    expect(scene.tile.coloring.mode).toBe('depth-hsv');
+    const lone = imported(graph({ nodes: [fnode('Vec3', 'v')], edges: [] }));
+    expect(messages(lone.notes)).toEqual([expect.stringMatching(/Vec3 "v" cannot be mapped/)]);
+  });
+
   it('tolerates duplicated node entries; a duplicate with different data gets a note', () => {
     const base = lineMirror('m', [0, 0], [1, 0], false);
     const same = graph({ nodes: [...base.nodes, base.nodes[2], base.nodes[3]], edges: base.edges });
@@ -189,13 +262,20 @@ describe('Flower import: node types', () => {
     expect(r1.doc.nodes.filter((n) => n.type === 'line')).toHaveLength(1);
     const different = graph({ nodes: [...base.nodes, { ...base.nodes[0], posX: 99 }], edges: base.edges });
     const r2 = imported(different);
-    expect(messages(r2.notes)).toEqual([expect.stringMatching(/node "ma" appears again with different data/)]);
+    expect(messages(r2.notes)).toEqual([
+      expect.stringMatching(/node "ma" appears again with different data/),
+    ]);
     expect(r2.doc.nodes.find((n) => n.type === 'point')!.params).toEqual({ x: 0, y: 0 });
   });
 
   it('reports what cannot be mapped: unknown types, broken and mistyped edges, mirrors with nothing wired', () => {
     const json = graph(lineMirror('m', [0, 0], [1, 0], false), {
-      nodes: [fnode('Spiral', 'sp'), fnode('LineMirror', 'lonely', { reverse: false }), fnode('CircleMirror', 'lonelyC'), fpoint('q', 0, 0)],
+      nodes: [
+        fnode('Spiral', 'sp'),
+        fnode('LineMirror', 'lonely', { reverse: false }),
+        fnode('CircleMirror', 'lonelyC'),
+        fpoint('q', 0, 0),
+      ],
       edges: [
         { id: 'x1', name: 'Point', s1Id: 'nowhere', s2Id: 'm-in0' },
         { id: 'x2', name: 'Point', s1Id: 'ma-out0', s2Id: 'q-out0' },
@@ -227,7 +307,13 @@ describe('Flower import: node types', () => {
   });
 
   it("opens on Flower's view (origin, 100 units tall), larger when the construction reaches further", () => {
-    expect(imported(graph(lineMirror('m', [0, 0], [1, 0], false))).doc.view).toEqual({ center: [0, 0], scale: 100 });
-    expect(imported(graph(lineMirror('m', [0, 0], [80, 0], false))).doc.view).toEqual({ center: [0, 0], scale: 176 });
+    expect(imported(graph(lineMirror('m', [0, 0], [1, 0], false))).doc.view).toEqual({
+      center: [0, 0],
+      scale: 100,
+    });
+    expect(imported(graph(lineMirror('m', [0, 0], [80, 0], false))).doc.view).toEqual({
+      center: [0, 0],
+      scale: 176,
+    });
   });
 });

@@ -18,7 +18,11 @@ const PRESETS = fileURLToPath(new URL('../../../../../shared/reference/flower-pr
 const available = existsSync(PRESETS);
 
 describe.skipIf(!available)('Flower presets (../shared/reference/flower-presets)', () => {
-  const names = available ? readdirSync(PRESETS).filter((f) => f.endsWith('.json')).sort() : [];
+  const names = available
+    ? readdirSync(PRESETS)
+        .filter((f) => f.endsWith('.json'))
+        .sort()
+    : [];
 
   it('finds the five presets', () => {
     expect(names).toEqual(['angled.json', 'circles.json', 'rect.json', 'sinwave.json', 'triangle.json']);

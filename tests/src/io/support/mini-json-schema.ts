@@ -32,24 +32,33 @@ const typeOf = (v: unknown) =>
 
 /** Problems of `value` against `schema`, each as "path: what". Empty when valid. */
 export function checkSchema(schema: Schema, value: unknown, path = '$'): string[] {
-  for (const k of Object.keys(schema)) if (!SUPPORTED.has(k)) throw new Error(`unsupported keyword ${k} at ${path}`);
+  for (const k of Object.keys(schema))
+    if (!SUPPORTED.has(k)) throw new Error(`unsupported keyword ${k} at ${path}`);
   const out: string[] = [];
   const t = schema.type as string | undefined;
   const actual = typeOf(value);
-  if (t && !(actual === t || (t === 'number' && actual === 'integer'))) return [`${path}: expected ${t}, got ${actual}`];
-  if ('const' in schema && schema.const !== value) out.push(`${path}: expected ${JSON.stringify(schema.const)}`);
+  if (t && !(actual === t || (t === 'number' && actual === 'integer')))
+    return [`${path}: expected ${t}, got ${actual}`];
+  if ('const' in schema && schema.const !== value)
+    out.push(`${path}: expected ${JSON.stringify(schema.const)}`);
   if (typeof value === 'string') {
-    if (typeof schema.minLength === 'number' && value.length < schema.minLength) out.push(`${path}: too short`);
-    if (typeof schema.maxLength === 'number' && value.length > schema.maxLength) out.push(`${path}: too long`);
-    if (typeof schema.pattern === 'string' && !new RegExp(schema.pattern).test(value)) out.push(`${path}: pattern`);
+    if (typeof schema.minLength === 'number' && value.length < schema.minLength)
+      out.push(`${path}: too short`);
+    if (typeof schema.maxLength === 'number' && value.length > schema.maxLength)
+      out.push(`${path}: too long`);
+    if (typeof schema.pattern === 'string' && !new RegExp(schema.pattern).test(value))
+      out.push(`${path}: pattern`);
   }
   if (typeof value === 'number') {
-    if (typeof schema.exclusiveMinimum === 'number' && !(value > schema.exclusiveMinimum)) out.push(`${path}: too small`);
+    if (typeof schema.exclusiveMinimum === 'number' && !(value > schema.exclusiveMinimum))
+      out.push(`${path}: too small`);
     if (typeof schema.maximum === 'number' && value > schema.maximum) out.push(`${path}: too large`);
   }
   if (Array.isArray(value)) {
-    if (typeof schema.minItems === 'number' && value.length < schema.minItems) out.push(`${path}: too few items`);
-    if (typeof schema.maxItems === 'number' && value.length > schema.maxItems) out.push(`${path}: too many items`);
+    if (typeof schema.minItems === 'number' && value.length < schema.minItems)
+      out.push(`${path}: too few items`);
+    if (typeof schema.maxItems === 'number' && value.length > schema.maxItems)
+      out.push(`${path}: too many items`);
     const prefix = (schema.prefixItems as Schema[] | undefined) ?? [];
     value.forEach((v, i) => {
       const s = i < prefix.length ? prefix[i] : schema.items;
@@ -60,7 +69,8 @@ export function checkSchema(schema: Schema, value: unknown, path = '$'): string[
   if (actual === 'object') {
     const obj = value as Record<string, unknown>;
     const props = (schema.properties as Record<string, Schema> | undefined) ?? {};
-    for (const r of (schema.required as string[] | undefined) ?? []) if (!(r in obj)) out.push(`${path}.${r}: missing`);
+    for (const r of (schema.required as string[] | undefined) ?? [])
+      if (!(r in obj)) out.push(`${path}.${r}: missing`);
     for (const [k, v] of Object.entries(obj)) {
       if (k in props) out.push(...checkSchema(props[k], v, `${path}.${k}`));
       else if (schema.additionalProperties === false) out.push(`${path}.${k}: not allowed`);

@@ -7,7 +7,7 @@ import { fileURLToPath } from 'node:url';
 import type { Browser, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { launchChromium } from '../../../support/browser.ts';
-import { bundlePage } from './bundle-page.ts';
+import { bundle } from '../../../support/bundle.ts';
 import type { LogEntry } from './page/overlay-page.tsx';
 
 // The page's pane is 600 × 600 CSS px showing world [−2, 2]²: 150 px per unit, origin at (300, 300).
@@ -19,7 +19,7 @@ let script: string;
 const errors: string[] = [];
 
 beforeAll(async () => {
-  script = await bundlePage(fileURLToPath(new URL('./page/overlay-page.tsx', import.meta.url)));
+  script = await bundle(fileURLToPath(new URL('./page/overlay-page.tsx', import.meta.url)));
   browser = await launchChromium();
   page = await browser.newPage({ viewport: { width: 640, height: 640 } });
   page.on('pageerror', (e) => errors.push(String(e)));
@@ -74,6 +74,21 @@ const handleAt = (id: string) =>
   page.$eval(`[data-handle="${id}"]`, (el) => [Number(el.getAttribute('cx')), Number(el.getAttribute('cy'))]);
 
 describe('RenderOverlay in Chromium', () => {
+  it('draws every shape with its label, and one grab handle per draggable spot', async () => {
+    expect(
+      await page.$$eval('[data-node][data-shape]', (gs) => gs.map((g) => (g as HTMLElement).dataset.node)),
+    ).toEqual(['c1', 'c2', 'p2']);
+    // p1 is hidden: no dot and no label "P", but c2's centre handle stands where it is.
+    expect(await page.$$eval('.kf-overlay-label', (ts) => ts.map((t) => t.textContent))).toEqual(['C']);
+    expect(await page.$$eval('[data-handle]', (hs) => hs.map((h) => h.getAttribute('data-handle')))).toEqual([
+      'c1/center',
+      'c1/rim',
+      'c2/center',
+      'c2/rim',
+      'p2/point',
+    ]);
+  });
+
   it('drags a circle centre: previews while moving, one commit with the new centre', async () => {
     const entries = await drag(css(0, 0), css(0.3, 0.2));
     expect(ofKind(entries, 'pane-pointerdown')).toEqual([{ kind: 'pane-pointerdown', prevented: true }]);
@@ -152,6 +167,9 @@ describe('RenderOverlay in Chromium', () => {
     // On c1's rim (centre (0.3, 0.2), radius 1.2), away from its handles.
     await page.mouse.move(...css(0.3, 1.4));
     await nextFrame();
+    // The editor fed the hover back: c1 is drawn highlighted (with a halo), c2 is not.
+    expect(await page.$$eval('[data-node="c1"][data-shape="circle"] path', (ps) => ps.length)).toBe(3);
+    expect(await page.$$eval('[data-node="c2"][data-shape="circle"] path', (ps) => ps.length)).toBe(2);
     await page.mouse.move(...css(-1.6, -1.6));
     await page.mouse.down();
     await page.mouse.move(...css(-1.5, -1.5));
@@ -162,6 +180,21 @@ describe('RenderOverlay in Chromium', () => {
     expect(ofKind(entries, 'pane-pointerdown')).toEqual([{ kind: 'pane-pointerdown', prevented: false }]);
     expect(ofKind(entries, 'commit')).toEqual([]);
     expect(errors).toEqual([]);
+  });
+
+  it('Shift-drags a rim into tangency with the neighbouring circle', async () => {
+    // c1: centre (0.3, 0.2), r 1.2; c2: centre (1.2, 1.4), r 0.5, so |c1 − c2| = 1.5 and the
+    // rims touch at r = 1 (outside) or 2 (around). Releasing at r = 1.03 (4.5 px off) snaps to 1.
+    await page.keyboard.down('Shift');
+    const during = await drag(css(1.5, 0.2), css(1.33, 0.2), { release: false });
+    expect(await page.$('[data-snap="tangent"]')).not.toBeNull();
+    await page.mouse.up();
+    await page.keyboard.up('Shift');
+    await nextFrame();
+    const entries = [...during, ...(await newEntries())];
+    expect(ofKind(entries, 'commit')).toEqual([
+      { kind: 'commit', patches: [{ nodeId: 'c1', params: { radius: expect.closeTo(1, 9) } }] },
+    ]);
   });
 
   it('on a touch screen: one finger drags a handle, a second finger hands the gesture to the pane', async () => {

@@ -28,23 +28,57 @@ WebGL2RenderingContext.prototype.shaderSource = function (shader: WebGLShader, s
   originalShaderSource.call(this, shader, patched);
 };
 
+/**
+ * Driver differences to test on SwiftShader: `noFloatBlend` hides EXT_float_blend (the half-float
+ * running-mean path); `parallelCompile` fakes KHR_parallel_shader_compile, reporting each program
+ * as still compiling for its first two status queries.
+ */
+const quirks = { noFloatBlend: false, parallelCompile: false };
+export type Quirks = typeof quirks;
+const COMPLETION_STATUS_KHR = 0x91b1;
+let completionQueries = 0;
+const statusAsked = new WeakMap<WebGLProgram, number>();
+const originalGetExtension = WebGL2RenderingContext.prototype.getExtension;
+WebGL2RenderingContext.prototype.getExtension = function (this: WebGL2RenderingContext, name: string) {
+  if (quirks.noFloatBlend && name === 'EXT_float_blend') return null;
+  if (quirks.parallelCompile && name === 'KHR_parallel_shader_compile') {
+    return { COMPLETION_STATUS_KHR, maxShaderCompilerThreadsKHR() {} };
+  }
+  return originalGetExtension.call(this, name);
+} as typeof WebGL2RenderingContext.prototype.getExtension;
+const originalProgramParameter = WebGL2RenderingContext.prototype.getProgramParameter;
+WebGL2RenderingContext.prototype.getProgramParameter = function (p: WebGLProgram, pname: number) {
+  if (pname !== COMPLETION_STATUS_KHR) return originalProgramParameter.call(this, p, pname);
+  completionQueries++;
+  const asked = (statusAsked.get(p) ?? 0) + 1;
+  statusAsked.set(p, asked);
+  return asked > 2;
+};
+
 const canvas = document.querySelector('canvas') as HTMLCanvasElement;
 let vp: Viewport | null = null;
 let view: View = { center: [0, 0], scale: 1 };
 const diagnostics: Diagnostic[][] = [];
+/** Every frame drawn: its onFrame info and whether the baked program drew it. */
+const frameLog: { samples: number; target: number; ms: number; baked: boolean }[] = [];
 /** base64 snapshots taken after every frame while recording. */
 let recorded: string[] = [];
 let recording = false;
 
 const harness = {
   diagnostics,
-  create(width: number, height: number, idleBakeMs = 600): void {
+  frameLog,
+  completionQueries: () => completionQueries,
+  create(width: number, height: number, idleBakeMs = 600, withQuirks: Partial<Quirks> = {}): void {
     vp?.dispose();
+    Object.assign(quirks, { noFloatBlend: false, parallelCompile: false }, withQuirks);
     diagnostics.length = 0;
+    frameLog.length = 0;
     vp = new Viewport(canvas, {
       idleBakeMs,
       onDiagnostics: (d) => diagnostics.push(d),
-      onFrame: () => {
+      onFrame: (info) => {
+        frameLog.push({ ...info, baked: vp!.stats.baked });
         if (recording) recorded.push(toBase64(vp!.snapshot())!);
       },
     });
@@ -143,7 +177,14 @@ const harness = {
   /** Dispatches a synthetic touch pointer event on the canvas (two-finger gestures). */
   touch(type: 'pointerdown' | 'pointermove' | 'pointerup', pointerId: number, x: number, y: number): void {
     const r = canvas.getBoundingClientRect();
-    const init = { pointerId, pointerType: 'touch', clientX: r.left + x, clientY: r.top + y, bubbles: true, cancelable: true };
+    const init = {
+      pointerId,
+      pointerType: 'touch',
+      clientX: r.left + x,
+      clientY: r.top + y,
+      bubbles: true,
+      cancelable: true,
+    };
     canvas.dispatchEvent(new PointerEvent(type, init));
   },
 };

@@ -3,7 +3,10 @@
  * sockets (ids derived from the node id), edges naming socket ids in either order.
  */
 type Socket = { id: string; name: string; isOutput: boolean; edgeOn: boolean };
-export type FlowerNodeJson = { name: string; x: number; y: number; id: string; sockets: Socket[] } & Record<string, unknown>;
+export type FlowerNodeJson = { name: string; x: number; y: number; id: string; sockets: Socket[] } & Record<
+  string,
+  unknown
+>;
 export type FlowerEdgeJson = { id: string; name: string; s1Id: string; s2Id: string };
 
 /** Socket layouts of Flower's node types (inputs first, in Flower's order, then outputs). */
@@ -41,7 +44,13 @@ export function fnode(name: string, id: string, extra: Record<string, unknown> =
 
 let edgeCount = 0;
 /** An edge from `from`'s output to input `input` of `to`; `reversed` lists the input socket first. */
-export function fedge(name: string, from: string, to: string, input: number, reversed = false): FlowerEdgeJson {
+export function fedge(
+  name: string,
+  from: string,
+  to: string,
+  input: number,
+  reversed = false,
+): FlowerEdgeJson {
   const [a, b] = [outSocket(from), inSocket(to, input)];
   return { id: `edge${++edgeCount}`, name, s1Id: reversed ? b : a, s2Id: reversed ? a : b };
 }
@@ -68,8 +77,15 @@ export function lineMirror(id: string, p1: [number, number], p2: [number, number
 /** Three points, the circle through them and a mirror of it. */
 export function circleMirror(id: string, pts: [number, number][]) {
   return {
-    nodes: [...pts.map((p, i) => fpoint(`${id}p${i}`, ...p)), fnode('CircleThreePoints', `${id}C`), fnode('CircleMirror', id)],
-    edges: [...pts.map((_, i) => fedge('Point', `${id}p${i}`, `${id}C`, i, i === 1)), fedge('Circle', `${id}C`, id, 0)],
+    nodes: [
+      ...pts.map((p, i) => fpoint(`${id}p${i}`, ...p)),
+      fnode('CircleThreePoints', `${id}C`),
+      fnode('CircleMirror', id),
+    ],
+    edges: [
+      ...pts.map((_, i) => fedge('Point', `${id}p${i}`, `${id}C`, i, i === 1)),
+      fedge('Circle', `${id}C`, id, 0),
+    ],
   };
 }
 

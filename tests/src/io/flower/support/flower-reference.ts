@@ -5,7 +5,11 @@
  * p1 → p2, `reverse` keeps the right; a CircleMirror inverts in the circle through three points;
  * a Point's position is posX/posY. Flower's tile: outside every circle, on the kept side of every line.
  */
-type Raw = Record<string, unknown> & { id: string; name: string; sockets: { id: string; isOutput: boolean }[] };
+type Raw = Record<string, unknown> & {
+  id: string;
+  name: string;
+  sockets: { id: string; isOutput: boolean }[];
+};
 type V = [number, number];
 
 export interface FlowerLineMirror {
@@ -24,7 +28,8 @@ export function flowerMirrors(json: { nodes: Raw[]; edges: { s1Id: string; s2Id:
   const socket = new Map<string, { node: Raw; ordinal: number; isOutput: boolean }>();
   for (const n of nodes.values()) {
     const count = { in: 0, out: 0 };
-    for (const s of n.sockets) socket.set(s.id, { node: n, isOutput: s.isOutput, ordinal: s.isOutput ? count.out++ : count.in++ });
+    for (const s of n.sockets)
+      socket.set(s.id, { node: n, isOutput: s.isOutput, ordinal: s.isOutput ? count.out++ : count.in++ });
   }
   /** The node feeding input `ordinal` of `node`. */
   const feeding = (node: Raw, ordinal: number): Raw | undefined => {
@@ -42,10 +47,12 @@ export function flowerMirrors(json: { nodes: Raw[]; edges: { s1Id: string; s2Id:
   for (const n of nodes.values()) {
     if (n.name === 'LineMirror') {
       const line = feeding(n, 0);
-      if (line) lines.push({ p1: pos(feeding(line, 0)), p2: pos(feeding(line, 1)), reverse: n.reverse === true });
+      if (line)
+        lines.push({ p1: pos(feeding(line, 0)), p2: pos(feeding(line, 1)), reverse: n.reverse === true });
     } else if (n.name === 'CircleMirror') {
       const circle = feeding(n, 0);
-      if (circle) circles.push(circumcircle(pos(feeding(circle, 0)), pos(feeding(circle, 1)), pos(feeding(circle, 2))));
+      if (circle)
+        circles.push(circumcircle(pos(feeding(circle, 0)), pos(feeding(circle, 1)), pos(feeding(circle, 2))));
     }
   }
   return { lines, circles };
@@ -55,7 +62,10 @@ export function flowerMirrors(json: { nodes: Raw[]; edges: { s1Id: string; s2Id:
 function circumcircle(a: V, b: V, d: V): FlowerCircleMirror {
   const [p, q] = [2 * (a[0] - b[0]), 2 * (a[1] - b[1])];
   const [r, s] = [2 * (a[0] - d[0]), 2 * (a[1] - d[1])];
-  const [u, v] = [a[0] ** 2 + a[1] ** 2 - b[0] ** 2 - b[1] ** 2, a[0] ** 2 + a[1] ** 2 - d[0] ** 2 - d[1] ** 2];
+  const [u, v] = [
+    a[0] ** 2 + a[1] ** 2 - b[0] ** 2 - b[1] ** 2,
+    a[0] ** 2 + a[1] ** 2 - d[0] ** 2 - d[1] ** 2,
+  ];
   const det = p * s - q * r;
   const c: V = [(u * s - q * v) / det, (p * v - u * r) / det];
   return { c, r: Math.hypot(a[0] - c[0], a[1] - c[1]) };

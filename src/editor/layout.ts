@@ -1,0 +1,99 @@
+/**
+ * Tidy layout: nodes in columns by their depth in the graph (sources left, render right), stacked
+ * without overlap. Used when a loaded document's nodes overlap, and by the Tidy button.
+ */
+import type { NodeDef } from '../../nodes/core/define-node.ts';
+import type { NodeRegistry } from '../../nodes/core/registry.ts';
+import type { GraphDoc, GraphNode } from '../../nodes/graph/document.ts';
+
+export interface Size {
+  readonly width: number;
+  readonly height: number;
+}
+
+/** Node width and row heights of the node component (src/styles/node.css). */
+export const NODE_WIDTH = 236;
+const HEADER = 31;
+const BODY_PADDING = 11;
+const ROW = 24;
+const READOUT = 27;
+const GAP_X = 80;
+const GAP_Y = 28;
+
+/** Rows an unconnected input's widget takes (a line or circle editor is two rows). */
+const inputRows = (def: NodeDef, port: string, connected: boolean) =>
+  !connected && (def.inputs[port].type === 'line' || def.inputs[port].type === 'circle') ? 2 : 1;
+
+/** The height the node component will have, estimated from its declaration. */
+export function estimateSize(node: GraphNode, def: NodeDef | undefined, connected: ReadonlySet<string>): Size {
+  if (!def) return { width: NODE_WIDTH, height: HEADER + BODY_PADDING + ROW * 3 };
+  let rows = Object.keys(def.outputs).length + Object.keys(def.params).length;
+  for (const port of Object.keys(def.inputs)) rows += inputRows(def, port, connected.has(port));
+  // Most nodes show a read-out; reserving its row for all keeps the estimate on the safe side.
+  return { width: NODE_WIDTH, height: HEADER + BODY_PADDING + rows * ROW + READOUT };
+}
+
+type SizeOf = (node: GraphNode) => Size;
+
+export function sizer(doc: GraphDoc, registry: NodeRegistry): SizeOf {
+  const connected = new Map<string, Set<string>>();
+  for (const e of doc.edges) connected.set(e.to.node, (connected.get(e.to.node) ?? new Set()).add(e.to.port));
+  return (node) => estimateSize(node, registry.get(node.type), connected.get(node.id) ?? new Set());
+}
+
+/** Whether any two nodes' boxes intersect. */
+export function nodesOverlap(doc: GraphDoc, size: SizeOf): boolean {
+  const boxes = doc.nodes.map((n) => ({ x: n.position[0], y: n.position[1], ...size(n) }));
+  for (let i = 0; i < boxes.length; i++) {
+    for (let j = i + 1; j < boxes.length; j++) {
+      const a = boxes[i];
+      const b = boxes[j];
+      if (a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height) return true;
+    }
+  }
+  return false;
+}
+
+/**
+ * New positions: column = longest path from a source (cycles are cut), each column sorted by the
+ * nodes' current y, stacked from the top-left of the current layout.
+ */
+export function tidyPositions(doc: GraphDoc, size: SizeOf): { nodeId: string; position: [number, number] }[] {
+  const ids = new Set(doc.nodes.map((n) => n.id));
+  const depth = new Map<string, number>(doc.nodes.map((n) => [n.id, 0]));
+  // Longest-path layering by relaxation; at most |nodes| rounds, so a cycle cannot loop forever.
+  for (let round = 0; round < doc.nodes.length; round++) {
+    let changed = false;
+    for (const e of doc.edges) {
+      if (!ids.has(e.from.node) || !ids.has(e.to.node) || e.from.node === e.to.node) continue;
+      const d = depth.get(e.from.node)! + 1;
+      if (d > depth.get(e.to.node)! && d < doc.nodes.length) {
+        depth.set(e.to.node, d);
+        changed = true;
+      }
+    }
+    if (!changed) break;
+  }
+  const columns = new Map<number, GraphNode[]>();
+  for (const n of doc.nodes) columns.set(depth.get(n.id)!, [...(columns.get(depth.get(n.id)!) ?? []), n]);
+  const left = Math.min(...doc.nodes.map((n) => n.position[0]));
+  const top = Math.min(...doc.nodes.map((n) => n.position[1]));
+  const moves: { nodeId: string; position: [number, number] }[] = [];
+  for (const [d, nodes] of [...columns].sort((a, b) => a[0] - b[0])) {
+    let y = top;
+    const sorted = [...nodes].sort((a, b) => a.position[1] - b.position[1] || (a.id < b.id ? -1 : 1));
+    for (const n of sorted) {
+      moves.push({ nodeId: n.id, position: [left + d * (NODE_WIDTH + GAP_X), y] });
+      y += size(n).height + GAP_Y;
+    }
+  }
+  return moves;
+}
+
+/** The document with a tidy layout when its nodes overlap; otherwise the same document. */
+export function tidyIfOverlapping(doc: GraphDoc, registry: NodeRegistry): GraphDoc {
+  const size = sizer(doc, registry);
+  if (!nodesOverlap(doc, size)) return doc;
+  const to = new Map(tidyPositions(doc, size).map((m) => [m.nodeId, m.position]));
+  return { ...doc, nodes: doc.nodes.map((n) => ({ ...n, position: to.get(n.id) ?? n.position })) };
+}

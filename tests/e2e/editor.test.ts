@@ -1,0 +1,212 @@
+/**
+ * The editor end to end in real Chromium (SwiftShader WebGL2): the app is built once with Vite,
+ * served with `vite preview`, and driven with the mouse and keyboard like a person would.
+ */
+import { mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import type { Browser, BrowserContext, Page } from 'playwright-core';
+import { build, type PreviewServer, preview } from 'vite';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { parseDocumentText } from '../../nodes/graph/load.ts';
+import { launchChromium } from '../support/browser.ts';
+import {
+  addNode,
+  connect,
+
+  edgeCount,
+  graphBox,
+  handle,
+  nodeCount,
+  nodeEl,
+  renderPixels,
+  setField,
+  thumbDiff,
+  waitRendered,
+} from './editor-page.ts';
+
+const root = join(import.meta.dirname, '..', '..');
+let outDir = '';
+let server: PreviewServer;
+let browser: Browser;
+let context: BrowserContext;
+let page: Page;
+const problems: string[] = [];
+
+const exampleTitles = readdirSync(join(root, 'examples'))
+  .filter((f) => f.endsWith('.kleinflow.json'))
+  .map((f) => JSON.parse(readFileSync(join(root, 'examples', f), 'utf8')).meta?.title as string);
+
+beforeAll(async () => {
+  outDir = mkdtempSync(join(tmpdir(), 'kleinflow-e2e-'));
+  await build({ root, logLevel: 'error', build: { outDir, emptyOutDir: true } });
+  server = await preview({ root, logLevel: 'error', build: { outDir }, preview: { port: 0, host: '127.0.0.1' } });
+  const url = server.resolvedUrls!.local[0];
+  browser = await launchChromium();
+  context = await browser.newContext({ viewport: { width: 1600, height: 960 }, acceptDownloads: true });
+  await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(url).origin });
+  // A small render pane keeps SwiftShader fast: the graph gets 75% of the width.
+  await context.addInitScript(() => {
+    if (!localStorage.getItem('kleinflow.split')) localStorage.setItem('kleinflow.split', '0.75');
+  });
+  page = await context.newPage();
+  page.on('console', (m) => {
+    if (m.type() === 'error') problems.push(`console: ${m.text()}`);
+  });
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  await page.goto(url);
+}, 180_000);
+
+afterAll(async () => {
+  await browser?.close();
+  await new Promise((r) => server?.httpServer.close(r));
+  if (outDir) rmSync(outDir, { recursive: true, force: true });
+});
+
+describe('editor', () => {
+  it('opens on the default example and draws a picture', async () => {
+    await expect.poll(() => nodeCount(page)).toBeGreaterThan(0);
+    await waitRendered(page);
+    const px = await renderPixels(page);
+    expect(px.sd).toBeGreaterThan(20);
+    expect(px.colours).toBeGreaterThan(3);
+  });
+
+  it('loads every example from the menu by its title', async () => {
+    for (const title of exampleTitles) {
+      await page.getByRole('button', { name: 'Examples' }).click();
+      await page.getByRole('menuitem', { name: title }).click();
+      await expect.poll(() => page.getByLabel('Document title').inputValue()).toBe(title);
+    }
+    await page.getByRole('button', { name: 'Examples' }).click();
+    await page.getByRole('menuitem', { name: '(2,3,7) hyperbolic tessellation' }).click();
+    await waitRendered(page);
+    expect((await renderPixels(page)).sd).toBeGreaterThan(20);
+  }, 120_000);
+
+  it('adds a node through the palette and wires it', async () => {
+    const nodes = await nodeCount(page);
+    const edges = await edgeCount(page);
+    const g = await graphBox(page);
+    const refl = await addNode(page, 'line reflection', 40, g.height - 260);
+    expect(await nodeCount(page)).toBe(nodes + 1);
+    await connect(page, refl, 'element', 'out', 'elements');
+    await expect.poll(() => edgeCount(page)).toBe(edges + 1);
+  });
+
+  it('refuses an invalid connection, dimming the ports that cannot take it', async () => {
+    const edges = await edgeCount(page);
+    const from = handle(page, 't', 'out', 'tile');
+    const to = handle(page, 'out', 'in', 'elements');
+    const a = await from.boundingBox();
+    await page.mouse.move(a!.x + 5, a!.y + 5);
+    await page.mouse.down();
+    await page.mouse.move(a!.x + 60, a!.y + 40, { steps: 3 });
+    await expect.poll(() => to.getAttribute('class')).toMatch(/kf-port--dim/);
+    expect(await handle(page, 'out', 'in', 'tile').getAttribute('class')).not.toMatch(/kf-port--dim/);
+    const b = await to.boundingBox();
+    await page.mouse.move(b!.x + 5, b!.y + 5, { steps: 3 });
+    await page.mouse.up();
+    expect(await edgeCount(page)).toBe(edges);
+  });
+
+  it('copies and pastes a node, then undo and redo walk it back and forth', async () => {
+    const nodes = await nodeCount(page);
+    await nodeEl(page, 'k').locator('.kf-node__header').click();
+    await page.keyboard.press('Control+c');
+    const g = await graphBox(page);
+    await page.mouse.move(g.x + 500, g.y + 80);
+    await page.keyboard.press('Control+v');
+    await expect.poll(() => nodeCount(page)).toBe(nodes + 1);
+    const pasted = await page.locator('.react-flow__node.selected').getAttribute('data-id');
+    expect(pasted).not.toBe('k');
+    expect(await nodeEl(page, pasted!).locator('.kf-node').getAttribute('data-node-type')).toBe('kaleidoscope');
+    await page.keyboard.press('Control+z');
+    await expect.poll(() => nodeCount(page)).toBe(nodes);
+    await page.keyboard.press('Control+y');
+    await expect.poll(() => nodeCount(page)).toBe(nodes + 1);
+    await page.keyboard.press('Control+Shift+z');
+    await page.keyboard.press('Control+z');
+    await expect.poll(() => nodeCount(page)).toBe(nodes);
+    await page.keyboard.press('Control+Shift+Z');
+    await expect.poll(() => nodeCount(page)).toBe(nodes + 1);
+  });
+
+  it('autosaves: a reload brings the same graph back', async () => {
+    const nodes = await nodeCount(page);
+    const edges = await edgeCount(page);
+    await page.getByTestId('save-state').filter({ hasText: 'Saved' }).waitFor();
+    await page.reload();
+    await expect.poll(() => nodeCount(page)).toBe(nodes);
+    expect(await edgeCount(page)).toBe(edges);
+  });
+
+  it('builds the *333 kaleidoscope from scratch, edits a point, undoes it and saves', async () => {
+    await page.getByRole('button', { name: 'New' }).click();
+    await expect.poll(() => nodeCount(page)).toBe(0);
+    // An equilateral triangle, counter-clockwise: each directed edge keeps the inside on its left.
+    const corners: [string, string][] = [
+      ['-1', '-0.5774'],
+      ['1', '-0.5774'],
+      ['0', '1.1547'],
+    ];
+    const rows = [30, 220, 410];
+    const points: string[] = [];
+    const lines: string[] = [];
+    const mirrors: string[] = [];
+    for (const [i, y] of rows.entries()) {
+      const p = await addNode(page, 'point', 30, y);
+      await setField(page, p, 'x', corners[i][0]);
+      await setField(page, p, 'y', corners[i][1]);
+      points.push(p);
+    }
+    for (const y of rows) lines.push(await addNode(page, 'line', 320, y));
+    for (const y of rows) mirrors.push(await addNode(page, 'line reflection', 610, y));
+    const render = await addNode(page, 'render', 900, 160);
+    for (let i = 0; i < 3; i++) {
+      await connect(page, points[i], 'point', lines[i], 'a');
+      await connect(page, points[(i + 1) % 3], 'point', lines[i], 'b');
+      await connect(page, lines[i], 'line', mirrors[i], 'line');
+      await connect(page, mirrors[i], 'element', render, 'elements');
+    }
+    await expect.poll(() => edgeCount(page)).toBe(12);
+    await expect(nodeEl(page, render).locator('.kf-node__readout')).toHaveText('3 elements');
+    await expect(page.getByTestId('diagnostics-count')).toHaveText(/No problems|0 errors/);
+    await waitRendered(page);
+    const tiling = await renderPixels(page);
+    expect(tiling.sd).toBeGreaterThan(15);
+    expect(tiling.colours).toBeGreaterThan(6);
+
+    // Move a corner by typing into its inline field: the picture changes; undo restores both.
+    await setField(page, points[0], 'x', '-1.6');
+    await waitRendered(page);
+    const moved = await renderPixels(page);
+    expect(thumbDiff(moved, tiling)).toBeGreaterThan(2);
+    await page.mouse.click((await graphBox(page)).x + 1100, (await graphBox(page)).y + 700);
+    await page.keyboard.press('Control+z');
+    await expect(nodeEl(page, points[0]).locator('input[aria-label="x"]')).toHaveValue('-1');
+    await waitRendered(page);
+    expect(thumbDiff(await renderPixels(page), tiling)).toBeLessThan(1);
+
+    mkdirSync(join(root, 'test-artifacts'), { recursive: true });
+    await page.screenshot({ path: join(root, 'test-artifacts', 'editor.png') });
+
+    const [download] = await Promise.all([
+      page.waitForEvent('download'),
+      page.getByRole('button', { name: 'Save' }).click(),
+    ]);
+    expect(download.suggestedFilename()).toMatch(/\.kleinflow\.json$/);
+    const saved = parseDocumentText(readFileSync((await download.path())!, 'utf8'));
+    expect(saved.ok).toBe(true);
+    if (saved.ok) {
+      expect(saved.doc.nodes).toHaveLength(10);
+      expect(saved.doc.edges).toHaveLength(12);
+    }
+  }, 150_000);
+
+  it('logged no console errors and no page errors', () => {
+    expect(problems).toEqual([]);
+  });
+});
+
+

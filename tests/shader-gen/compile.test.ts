@@ -1,0 +1,218 @@
+/**
+ * compile(): the contract the WebGL runtime relies on — the shape of the program, where values
+ * go (uniforms sorted by name, or literals), what structureKey keeps and ignores, `#line` mapping,
+ * the limits reported as diagnostics, determinism.
+ */
+import fc from 'fast-check';
+import { describe, expect, it } from 'vitest';
+import { LIMITS, type Scene, type SceneElement } from '../../nodes/core/scene.ts';
+import { compile, FRAME_UNIFORMS, shadertoySource } from '../../shader-gen/compile.ts';
+import { ELEMENT_KINDS } from '../../shader-gen/elements/index.ts';
+import { GLSL_TWINS, glslTwin } from '../../shader-gen/glsl/element-twins.ts';
+import { floatLiteral } from '../../shader-gen/glsl/literal.ts';
+import { uniformRows } from '../../shader-gen/glsl/values.ts';
+import { COLORINGS, EVERY_KIND, HAND_MADE_SCENES, makeScene, reflection, TRIANGLE_333 } from './support/scenes.ts';
+
+const scenes = Object.entries(HAND_MADE_SCENES);
+const withElements = (s: Scene, elements: readonly SceneElement[]): Scene => ({ ...s, elements });
+
+/** Every number inside the scene's elements, tile and clip moved a little (booleans kept). */
+function nudged(scene: Scene, amount: number): Scene {
+  const nudge = <T>(v: T): T => {
+    if (typeof v === 'number') return (v * (1 + amount) + amount) as T;
+    if (Array.isArray(v)) return v.map(nudge) as T;
+    if (v && typeof v === 'object') {
+      return Object.fromEntries(
+        Object.entries(v).map(([k, x]) => [k, k === 'nodeId' || k === 'mode' ? x : nudge(x)]),
+      ) as T;
+    }
+    return v;
+  };
+  const order = (e: SceneElement): SceneElement => (e.kind === 'rotation' ? { ...e, order: 7 } : e);
+  return {
+    ...scene,
+    elements: nudge(scene.elements).map(order),
+    // Edges on/off is structure: keep a zero width zero.
+    tile: { ...nudge(scene.tile), edgeWidth: scene.tile.edgeWidth === 0 ? 0 : scene.tile.edgeWidth + 0.5 },
+    clip: nudge(scene.clip),
+    maxIterations: scene.maxIterations + 17,
+  };
+}
+
+describe('program shape', () => {
+  for (const [name, scene] of scenes) {
+    it(`${name}: every variant starts with #version, declares the frame uniforms, and has an entry point`, () => {
+      for (const options of [{}, { baked: true }, { variant: 'probe' as const }]) {
+        const p = compile(scene, options);
+        expect(p.source.startsWith('#version 300 es\n')).toBe(true);
+        expect(p.vertexSource.startsWith('#version 300 es\n')).toBe(true);
+        for (const u of FRAME_UNIFORMS) expect(p.source).toContain(`uniform ${u.type} ${u.name};`);
+        expect(p.source).toMatch(/\nvoid main\(\) \{/);
+        expect(p.source).not.toMatch(/\bswitch\b/);
+      }
+    });
+  }
+
+  it('the colour variant writes outColor, the probe variant outProbe (depth, final, escaped)', () => {
+    const scene = HAND_MADE_SCENES['schottky-cosine-edges'];
+    expect(compile(scene).source).toMatch(/outColor = shadeSample\(w, u_view\.z \/ u_resolution\.y, u_bgAlpha\);/);
+    expect(compile(scene, { variant: 'probe' }).source).toContain(
+      'outProbe = vec4(float(depth), p, escaped ? 1.0 : 0.0);',
+    );
+  });
+
+  it('the probe variant reads only the element data and the iteration bound', () => {
+    const p = compile(HAND_MADE_SCENES['every-kind-cosine-edges-clip'], { variant: 'probe' });
+    expect(p.uniforms.map((u) => u.name)).toEqual(['u_el', 'u_maxIterations']);
+  });
+});
+
+describe('uniforms', () => {
+  for (const [name, scene] of scenes) {
+    it(`${name}: sorted by name, finite, sized by type; u_el holds each element's packed vec4s`, () => {
+      const p = compile(scene);
+      const names = p.uniforms.map((u) => u.name);
+      expect(names).toEqual([...names].sort());
+      for (const u of p.uniforms) {
+        expect(u.value.every(Number.isFinite)).toBe(true);
+        const size = { float: 1, int: 1, vec2: 2, vec3: 3, vec4: 4 }[u.type as 'float'];
+        if (size) expect(u.value.length).toBe(size);
+        expect(p.source).toMatch(new RegExp(`uniform \\w+ ${u.name}(\\[\\d+\\])?;`));
+      }
+      const el = p.uniforms.find((u) => u.name === 'u_el');
+      const packed = scene.elements.flatMap((e) => glslTwin(e).pack(e));
+      expect(el?.value ?? []).toEqual(packed);
+      expect(p.uniforms.find((u) => u.name === 'u_maxIterations')?.value).toEqual([scene.maxIterations]);
+    });
+
+    it(`${name}: baked has no scene uniforms and carries the values as literals`, () => {
+      const p = compile(scene, { baked: true });
+      expect(p.uniforms).toEqual([]);
+      const declared = [...p.source.matchAll(/^uniform \w+ (\w+)/gm)].map((m) => m[1]);
+      expect(declared).toEqual(FRAME_UNIFORMS.map((u) => u.name));
+      expect(p.source).toContain(`<= ${scene.maxIterations}; ++iteration`);
+    });
+  }
+
+  it('every kind has a GLSL twin whose packing fills its vec4s exactly', () => {
+    expect(Object.keys(GLSL_TWINS).sort()).toEqual(Object.keys(ELEMENT_KINDS).sort());
+    const kinds = new Set(EVERY_KIND.map((e) => e.kind));
+    expect([...kinds].sort()).toEqual(Object.keys(ELEMENT_KINDS).sort());
+    for (const e of EVERY_KIND) expect(glslTwin(e).pack(e)).toHaveLength(4 * glslTwin(e).vec4s);
+  });
+});
+
+describe('structureKey: code, never values', () => {
+  it('the same for any change of values, and then the source is the same too', () => {
+    fc.assert(
+      fc.property(fc.constantFrom(...scenes), fc.double({ min: -0.2, max: 0.2, noNaN: true }), ([, scene], d) => {
+        const a = compile(scene);
+        const b = compile(nudged(scene, d));
+        expect(b.structureKey).toBe(a.structureKey);
+        expect(b.source).toBe(a.source);
+      }),
+      { seed: 42, numRuns: 60 },
+    );
+  });
+
+  it('changes with the element kinds, their order or number, colouring, edges, clip, variant, baking', () => {
+    const base = HAND_MADE_SCENES['triangle-333-parity-clip'];
+    const key = (s: Scene, o = {}) => compile(s, o).structureKey;
+    const variants: Scene[] = [
+      withElements(base, [...TRIANGLE_333, reflection('m4', [0, 0], [1, 0])]),
+      withElements(base, [TRIANGLE_333[0], TRIANGLE_333[1]]),
+      withElements(base, [...TRIANGLE_333.slice(0, 2), EVERY_KIND[3]]),
+      withElements(base, [EVERY_KIND[3], ...TRIANGLE_333.slice(0, 2)]),
+      { ...base, tile: { ...base.tile, coloring: COLORINGS.cosine } },
+      { ...base, tile: { ...base.tile, coloring: COLORINGS['depth-hsv'] } },
+      { ...base, tile: { ...base.tile, edgeWidth: 1 } },
+      { ...base, clip: null },
+    ];
+    const keys = [key(base), ...variants.map((s) => key(s)), key(base, { variant: 'probe' }), key(base, { baked: true })];
+    expect(new Set(keys).size).toBe(keys.length);
+  });
+
+  it('baked: values are code, so the key names maxIterations and changes with any value', () => {
+    const base = HAND_MADE_SCENES['strips-hsv-edges'];
+    const a = compile(base, { baked: true }).structureKey;
+    expect(a).toContain(`maxIterations:${base.maxIterations}`);
+    expect(compile({ ...base, maxIterations: 101 }, { baked: true }).structureKey).not.toBe(a);
+    expect(compile(nudged(base, 0.01), { baked: true }).structureKey).not.toBe(a);
+    expect(compile({ ...base, maxIterations: 101 }).structureKey).toBe(compile(base).structureKey);
+  });
+});
+
+describe('determinism and #line markers', () => {
+  it('the same scene gives the same source byte for byte, also after a JSON round trip', () => {
+    for (const [, scene] of scenes) {
+      const copy = JSON.parse(JSON.stringify(scene)) as Scene;
+      expect(compile(copy)).toEqual(compile(scene));
+      expect(shadertoySource(copy)).toBe(shadertoySource(scene));
+    }
+  });
+
+  it('each element block starts with #line 1 <index + 1>, and lineMap names its node', () => {
+    const scene = HAND_MADE_SCENES['every-kind-cosine-edges-clip'];
+    const p = compile(scene);
+    const lines = p.source.split('\n');
+    scene.elements.forEach((e, i) => {
+      expect(p.lineMap[i + 1]).toBe(e.nodeId);
+      const at = lines.indexOf(`#line 1 ${i + 1}`);
+      expect(at).toBeGreaterThan(0);
+      expect(lines[at + 2]).toContain(`${glslTwin(e).step.name}(p, s, depth,`);
+    });
+    expect(Object.keys(p.lineMap)).toHaveLength(scene.elements.length);
+  });
+});
+
+describe('limits are diagnostics, never driver errors', () => {
+  const many = (n: number) => Array.from({ length: n }, (_, i) => reflection(`r${i}`, [i, 0], [1, 0]));
+
+  it(`more than ${LIMITS.maxElements} elements: KF401, the extra ones are left out`, () => {
+    const p = compile(makeScene(many(LIMITS.maxElements + 3)), { baked: true });
+    expect(p.diagnostics.map((d) => d.code)).toContain('KF401');
+    expect(Object.keys(p.lineMap)).toHaveLength(LIMITS.maxElements);
+  });
+
+  it(`uniform data beyond ${LIMITS.maxUniformVectors} vec4 rows: KF404 and a baked program instead`, () => {
+    const rowsFor = (n: number) => {
+      const p = compile(makeScene(many(n)), { baked: false });
+      return FRAME_UNIFORMS.length + p.uniforms.reduce((r, u) => r + uniformRows(u), 0);
+    };
+    const fits = LIMITS.maxUniformVectors - rowsFor(1) + 1; // one reflection is one row
+    const ok = compile(makeScene(many(fits)));
+    expect(ok.diagnostics).toEqual([]);
+    expect(rowsFor(fits)).toBe(LIMITS.maxUniformVectors);
+    const over = compile(makeScene(many(fits + 1)));
+    expect(over.diagnostics.map((d) => d.code)).toEqual(['KF404']);
+    expect(over.uniforms).toEqual([]);
+    expect(over.structureKey).toContain('baked');
+  });
+});
+
+describe('literals', () => {
+  it('read back as the same number and always as a float', () => {
+    expect([1, -0, 0.1, 1e-7, 1e21, -2.5].map(floatLiteral)).toEqual(['1.0', '0.0', '0.1', '1e-7', '1e+21', '-2.5']);
+    expect(() => floatLiteral(Number.NaN)).toThrow();
+    fc.assert(
+      fc.property(fc.double({ noNaN: true, noDefaultInfinity: true }), (x) => {
+        expect(Number(floatLiteral(x))).toBe(x === 0 ? 0 : x);
+        expect(floatLiteral(x)).toMatch(/[.e]/);
+      }),
+      { seed: 42, numRuns: 300 },
+    );
+  });
+});
+
+describe('Shadertoy version', () => {
+  it('is a mainImage with every value baked, the graph view and its samples, no #version/uniforms', () => {
+    const scene = { ...HAND_MADE_SCENES['rose-cosine'], samples: 6 };
+    const src = shadertoySource(scene);
+    expect(src).toContain('void mainImage(out vec4 fragColor, in vec2 fragCoord) {');
+    expect(src).toContain('for (int k = 0; k < 6; ++k)');
+    expect(src).toContain('iResolution');
+    expect(src).toContain('toSrgb(');
+    expect(src).not.toMatch(/#version|#line|^uniform/m);
+    expect(src).toContain(`vec3 view = vec3(0.0, 0.0, ${scene.view.scale.toFixed(1)});`);
+  });
+});

@@ -1,0 +1,98 @@
+/**
+ * Every shader we generate is valid GLSL ES 3.00 (glslangValidator, one batch call) and uses no
+ * identifier WebGL forbids: uniform, baked and probe variants of every example and of hand-made
+ * scenes with every element kind and colouring mode, the Shadertoy versions, the vertex shader and
+ * the hand-written bench shaders. `#line` markers make compiler errors point at the right node.
+ */
+import { describe, expect, it } from 'vitest';
+import type { Scene } from '../../nodes/core/scene.ts';
+import { type CompileOptions, compile, shadertoySource } from '../../shader-gen/compile.ts';
+import { HAND_WRITTEN } from '../bench/hand-written/index.ts';
+import { exampleNames, loadExample } from '../support/examples.ts';
+import { type ShaderToCheck, shadertoyWrapper, validateShaders, webglIdentifierProblems } from './support/glslang.ts';
+import { HAND_MADE_SCENES } from './support/scenes.ts';
+
+const VARIANTS: Record<string, CompileOptions> = {
+  color: { variant: 'color' },
+  'color-baked': { variant: 'color', baked: true },
+  probe: { variant: 'probe' },
+  'probe-baked': { variant: 'probe', baked: true },
+};
+
+function shadersOf(name: string, scene: Scene): ShaderToCheck[] {
+  const out: ShaderToCheck[] = Object.entries(VARIANTS).map(([variant, options]) => ({
+    name: `${name}.${variant}`,
+    source: compile(scene, options).source,
+    stage: 'frag',
+  }));
+  out.push({ name: `${name}.shadertoy`, source: shadertoyWrapper(shadertoySource(scene)), stage: 'frag' });
+  return out;
+}
+
+describe('generated GLSL passes glslangValidator and WebGL identifier rules', () => {
+  const examples = exampleNames();
+  const shaders: ShaderToCheck[] = [
+    ...examples.flatMap((name) => shadersOf(`example-${name}`, loadExample(name).scene)),
+    ...Object.entries(HAND_MADE_SCENES).flatMap(([name, scene]) => shadersOf(`scene-${name}`, scene)),
+    ...HAND_WRITTEN.map((h) => ({ name: `hand-written-${h.example}`, source: h.source, stage: 'frag' as const })),
+    { name: 'vertex', source: compile(HAND_MADE_SCENES.empty).vertexSource, stage: 'vert' },
+  ];
+  const results = validateShaders(shaders);
+
+  it('covers every example, every hand-made scene and every variant', () => {
+    expect(examples.length).toBeGreaterThan(0);
+    expect(shaders.length).toBe((examples.length + Object.keys(HAND_MADE_SCENES).length) * 5 + HAND_WRITTEN.length + 1);
+  });
+
+  for (const shader of shaders) {
+    it(`${shader.name} compiles`, () => {
+      expect(results.get(shader.name)).toEqual([]);
+      expect(webglIdentifierProblems(shader.source)).toEqual([]);
+    });
+  }
+});
+
+describe('the validator and the identifier check do catch problems', () => {
+  it('a broken shader is reported under its own name, not its neighbours', () => {
+    const good = compile(HAND_MADE_SCENES['glide-parity']).source;
+    const results = validateShaders([
+      { name: 'good', source: good, stage: 'frag' },
+      { name: 'bad', source: good.replace('return true;', 'return nothing;'), stage: 'frag' },
+    ]);
+    expect(results.get('good')).toEqual([]);
+    expect(results.get('bad')!.join('\n')).toMatch(/nothing/);
+  });
+
+  it('flags identifiers WebGL forbids', () => {
+    expect(webglIdentifierProblems('float a__b; vec2 webgl_x; int gl_Foo; vec4 gl_FragCoord;')).toEqual([
+      'a__b',
+      'webgl_x',
+      'gl_Foo',
+    ]);
+  });
+});
+
+describe('#line markers map compiler errors to nodes', () => {
+  const scene = HAND_MADE_SCENES['schottky-cosine-edges'];
+  const program = compile(scene);
+
+  it('an error inside element 2 is reported as source string 2, which lineMap names', () => {
+    const broken = program.source.replace('inversionStep(p, s, depth, u_el[4])', 'inversionStep(p, s, depth, oops)');
+    expect(broken).not.toBe(program.source);
+    const errors = validateShaders([{ name: 'broken', source: broken, stage: 'frag' }]).get('broken')!;
+    const match = /ERROR: (\d+):(\d+):.*oops/.exec(errors.join('\n'));
+    expect(match).not.toBeNull();
+    expect(Number(match![1])).toBe(2);
+    expect(program.lineMap[Number(match![1])]).toBe(scene.elements[1].nodeId);
+  });
+
+  it('an error in the template is reported with its real line number in source string 0', () => {
+    const lines = program.source.split('\n');
+    const target = lines.findIndex((l) => l.includes('outColor = shadeSample('));
+    lines[target] = lines[target].replace('shadeSample(', 'shadeSampleMissing(');
+    const errors = validateShaders([{ name: 'broken', source: lines.join('\n'), stage: 'frag' }]).get('broken')!;
+    const match = /ERROR: 0:(\d+):.*shadeSampleMissing/.exec(errors.join('\n'));
+    expect(match).not.toBeNull();
+    expect(Number(match![1])).toBe(target + 1);
+  });
+});

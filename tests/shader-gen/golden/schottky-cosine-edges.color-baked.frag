@@ -1,0 +1,142 @@
+#version 300 es
+precision highp float;
+precision highp int;
+
+// Frame uniforms (set by the runtime).
+uniform vec2 u_resolution; // full image size in pixels
+uniform vec2 u_pixelOffset; // offset of this framebuffer within the full image (tiled export)
+uniform vec3 u_view; // view centre x, y and scale (world height of the image)
+uniform vec2 u_jitter; // sub-pixel sample offset in [0,1)² (view.ts sampleOffset)
+uniform float u_bgAlpha; // alpha of the background outside the clip disk (1; 0 for transparent export)
+out vec4 outColor; // linear RGB; alpha u_bgAlpha on the background
+
+bool inRegion(vec4 g, vec2 p) {
+  float dx = p.x - g.x;
+  float dy = p.y - g.y;
+  float d2 = dx * dx + dy * dy;
+  float r2 = g.z * g.z;
+  return g.w > 0.5 ? d2 > r2 : d2 < r2;
+}
+
+void invertState(inout vec2 p, inout float s, vec2 c, float r) {
+  float dx = p.x - c.x;
+  float dy = p.y - c.y;
+  float k = (r * r) / (dx * dx + dy * dy);
+  p = vec2(c.x + dx * k, c.y + dy * k);
+  s *= k;
+}
+
+bool mobiusStep(inout vec2 p, inout float s, inout int depth, vec4 d0, vec4 d1, vec4 d2, vec4 d3) {
+  if (inRegion(d2, p)) {
+    invertState(p, s, d0.xy, d0.z);
+    invertState(p, s, d1.xy, d1.z);
+  } else if (inRegion(d3, p)) {
+    invertState(p, s, d1.xy, d1.z);
+    invertState(p, s, d0.xy, d0.z);
+  } else return false;
+  depth += 1;
+  return true;
+}
+
+bool mobiusInside(vec2 p, vec4 d0, vec4 d1, vec4 d2, vec4 d3) {
+  return inRegion(d2, p) || inRegion(d3, p);
+}
+
+float regionBoundaryDistance(vec4 g, vec2 p) {
+  return abs(length(p - g.xy) - g.z);
+}
+
+float mobiusBoundaryDistance(vec2 p, vec4 d0, vec4 d1, vec4 d2, vec4 d3) {
+  return min(regionBoundaryDistance(d2, p), regionBoundaryDistance(d3, p));
+}
+
+bool inversionStep(inout vec2 p, inout float s, inout int depth, vec4 d0) {
+  float dx = p.x - d0.x;
+  float dy = p.y - d0.y;
+  if (dx * dx + dy * dy >= d0.z * d0.z) return false;
+  invertState(p, s, d0.xy, d0.z);
+  depth += 1;
+  return true;
+}
+
+bool inversionInside(vec2 p, vec4 d0) {
+  float dx = p.x - d0.x;
+  float dy = p.y - d0.y;
+  return dx * dx + dy * dy < d0.z * d0.z;
+}
+
+float inversionBoundaryDistance(vec2 p, vec4 d0) {
+  return abs(length(p - d0.xy) - d0.z);
+}
+
+float srgbToLinear(float c) {
+  return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
+}
+
+vec3 toLinear(vec3 c) {
+  return vec3(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b));
+}
+
+vec3 cosinePalette(vec3 a, vec3 b, vec3 c, vec3 d, float t) {
+  return clamp(a + b * cos(6.283185307179586 * (c * t + d)), 0.0, 1.0);
+}
+
+vec3 depthColour(int depth) {
+  return cosinePalette(vec3(0.5, 0.5, 0.5), vec3(0.5, 0.5, 0.5), vec3(1.0, 1.0, 1.0), vec3(0.0, 0.33, 0.67), float(depth) * 0.07);
+}
+
+vec3 shade(bool clipped, bool escaped, int depth, float edgePixels) {
+  if (clipped) return toLinear(vec3(0.06, 0.06, 0.08));
+  if (!escaped) return toLinear(vec3(0.02, 0.02, 0.03));
+  vec3 base = toLinear(depthColour(depth));
+  float t = clamp(edgePixels - 1.5 / 2.0 + 0.5, 0.0, 1.0);
+  vec3 edge = toLinear(vec3(1.0, 0.95, 0.8));
+  return edge + (base - edge) * t;
+}
+
+vec2 pixelToWorld(vec3 view, vec2 size, vec2 px, vec2 o) {
+  return vec2(view.x + ((px.x + o.x - size.x / 2.0) / size.y) * view.z,
+              view.y + ((px.y + o.y - size.y / 2.0) / size.y) * view.z);
+}
+
+bool runIis(inout vec2 p, inout float s, inout int depth) {
+  for (int iteration = 0; iteration <= 60; ++iteration) {
+    bool atLimit = depth >= 60;
+#line 1 1
+    if (atLimit) { if (mobiusInside(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0))) return false; }
+    else if (mobiusStep(p, s, depth, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0))) continue;
+#line 1 2
+    if (atLimit) { if (inversionInside(p, vec4(0.0, 1.6, 0.5, 0.0))) return false; }
+    else if (inversionStep(p, s, depth, vec4(0.0, 1.6, 0.5, 0.0))) continue;
+#line 112 0
+    return true;
+  }
+  return false;
+}
+
+float sceneBoundaryDistance(vec2 p) {
+  float d = 3.0e38;
+#line 1 1
+  d = min(d, mobiusBoundaryDistance(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0)));
+#line 1 2
+  d = min(d, inversionBoundaryDistance(p, vec4(0.0, 1.6, 0.5, 0.0)));
+#line 124 0
+  return d;
+}
+
+vec4 shadeSample(vec2 w, float pixelWorld, float bgAlpha) {
+  bool clipped = false;
+  vec2 p = w;
+  float s = 1.0;
+  int depth = 0;
+  bool escaped = clipped ? false : runIis(p, s, depth);
+  float edgePixels = 3.0e38;
+  if (escaped) edgePixels = sceneBoundaryDistance(p) / s / pixelWorld;
+  return vec4(shade(clipped, escaped, depth, edgePixels), clipped ? bgAlpha : 1.0);
+}
+
+void main() {
+  vec2 px = floor(gl_FragCoord.xy) + u_pixelOffset;
+  vec2 w = pixelToWorld(u_view, u_resolution, px, u_jitter);
+  outColor = shadeSample(w, u_view.z / u_resolution.y, u_bgAlpha);
+}

@@ -1,0 +1,96 @@
+#version 300 es
+precision highp float;
+precision highp int;
+
+// Frame uniforms (set by the runtime).
+uniform vec2 u_resolution; // full image size in pixels
+uniform vec2 u_pixelOffset; // offset of this framebuffer within the full image (tiled export)
+uniform vec3 u_view; // view centre x, y and scale (world height of the image)
+uniform vec2 u_jitter; // sub-pixel sample offset in [0,1)² (view.ts sampleOffset)
+uniform float u_bgAlpha; // alpha of the background outside the clip disk (1; 0 for transparent export)
+// Scene uniforms (values; changing them needs no recompile).
+uniform vec3 u_background;
+uniform vec3 u_clip;
+uniform vec4 u_el[3];
+uniform vec3 u_even;
+uniform vec3 u_limitColor;
+uniform int u_maxIterations;
+uniform vec3 u_odd;
+out vec4 outColor; // linear RGB; alpha u_bgAlpha on the background
+
+void reflectState(inout vec2 p, vec2 q, vec2 n) {
+  float h = 2.0 * ((p.x - q.x) * n.x + (p.y - q.y) * n.y);
+  p = vec2(p.x - h * n.x, p.y - h * n.y);
+}
+
+bool reflectionStep(inout vec2 p, inout float s, inout int depth, vec4 d0) {
+  if ((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0) return false;
+  reflectState(p, d0.xy, d0.zw);
+  depth += 1;
+  return true;
+}
+
+bool reflectionInside(vec2 p, vec4 d0) {
+  return (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w < 0.0;
+}
+
+float srgbToLinear(float c) {
+  return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
+}
+
+vec3 toLinear(vec3 c) {
+  return vec3(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b));
+}
+
+vec3 depthColour(int depth) {
+  return depth % 2 == 0 ? u_even : u_odd;
+}
+
+vec3 shade(bool clipped, bool escaped, int depth, float edgePixels) {
+  if (clipped) return toLinear(u_background);
+  if (!escaped) return toLinear(u_limitColor);
+  vec3 base = toLinear(depthColour(depth));
+  return base;
+}
+
+vec2 pixelToWorld(vec3 view, vec2 size, vec2 px, vec2 o) {
+  return vec2(view.x + ((px.x + o.x - size.x / 2.0) / size.y) * view.z,
+              view.y + ((px.y + o.y - size.y / 2.0) / size.y) * view.z);
+}
+
+bool runIis(inout vec2 p, inout float s, inout int depth) {
+  for (int iteration = 0; iteration <= u_maxIterations; ++iteration) {
+    bool atLimit = depth >= u_maxIterations;
+#line 1 1
+    if (atLimit) { if (reflectionInside(p, u_el[0])) return false; }
+    else if (reflectionStep(p, s, depth, u_el[0])) continue;
+#line 1 2
+    if (atLimit) { if (reflectionInside(p, u_el[1])) return false; }
+    else if (reflectionStep(p, s, depth, u_el[1])) continue;
+#line 1 3
+    if (atLimit) { if (reflectionInside(p, u_el[2])) return false; }
+    else if (reflectionStep(p, s, depth, u_el[2])) continue;
+#line 74 0
+    return true;
+  }
+  return false;
+}
+
+vec4 shadeSample(vec2 w, float pixelWorld, float bgAlpha) {
+  vec3 clip = u_clip;
+  float cx = w.x - clip.x;
+  float cy = w.y - clip.y;
+  bool clipped = cx * cx + cy * cy > clip.z * clip.z;
+  vec2 p = w;
+  float s = 1.0;
+  int depth = 0;
+  bool escaped = clipped ? false : runIis(p, s, depth);
+  float edgePixels = 3.0e38;
+  return vec4(shade(clipped, escaped, depth, edgePixels), clipped ? bgAlpha : 1.0);
+}
+
+void main() {
+  vec2 px = floor(gl_FragCoord.xy) + u_pixelOffset;
+  vec2 w = pixelToWorld(u_view, u_resolution, px, u_jitter);
+  outColor = shadeSample(w, u_view.z / u_resolution.y, u_bgAlpha);
+}

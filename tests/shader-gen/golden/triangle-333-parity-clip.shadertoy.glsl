@@ -1,0 +1,92 @@
+// Kleinflow: an Iterated Inversion System, generated from a node graph. Paste into Shadertoy.
+
+void reflectState(inout vec2 p, vec2 q, vec2 n) {
+  float h = 2.0 * ((p.x - q.x) * n.x + (p.y - q.y) * n.y);
+  p = vec2(p.x - h * n.x, p.y - h * n.y);
+}
+
+bool reflectionStep(inout vec2 p, inout float s, inout int depth, vec4 d0) {
+  if ((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0) return false;
+  reflectState(p, d0.xy, d0.zw);
+  depth += 1;
+  return true;
+}
+
+bool reflectionInside(vec2 p, vec4 d0) {
+  return (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w < 0.0;
+}
+
+float srgbToLinear(float c) {
+  return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
+}
+
+vec3 toLinear(vec3 c) {
+  return vec3(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b));
+}
+
+vec3 depthColour(int depth) {
+  return depth % 2 == 0 ? vec3(0.93, 0.91, 0.85) : vec3(0.13, 0.16, 0.24);
+}
+
+vec3 shade(bool clipped, bool escaped, int depth, float edgePixels) {
+  if (clipped) return toLinear(vec3(0.06, 0.06, 0.08));
+  if (!escaped) return toLinear(vec3(0.02, 0.02, 0.03));
+  vec3 base = toLinear(depthColour(depth));
+  return base;
+}
+
+vec2 pixelToWorld(vec3 view, vec2 size, vec2 px, vec2 o) {
+  return vec2(view.x + ((px.x + o.x - size.x / 2.0) / size.y) * view.z,
+              view.y + ((px.y + o.y - size.y / 2.0) / size.y) * view.z);
+}
+
+vec2 sampleOffset(int k) {
+  if (k == 0) return vec2(0.5);
+  return fract(vec2(0.5) + float(k) * vec2(0.7548776662466927, 0.5698402909980533));
+}
+
+float linearToSrgb(float c) {
+  return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
+}
+
+vec3 toSrgb(vec3 c) {
+  return vec3(linearToSrgb(c.r), linearToSrgb(c.g), linearToSrgb(c.b));
+}
+
+bool runIis(inout vec2 p, inout float s, inout int depth) {
+  for (int iteration = 0; iteration <= 100; ++iteration) {
+    bool atLimit = depth >= 100;
+    if (atLimit) { if (reflectionInside(p, vec4(0.0, 0.0, 0.0, 1.0))) return false; }
+    else if (reflectionStep(p, s, depth, vec4(0.0, 0.0, 0.0, 1.0))) continue;
+    if (atLimit) { if (reflectionInside(p, vec4(0.0, 0.0, 0.8660254037844386, -0.5000000000000001))) return false; }
+    else if (reflectionStep(p, s, depth, vec4(0.0, 0.0, 0.8660254037844386, -0.5000000000000001))) continue;
+    if (atLimit) { if (reflectionInside(p, vec4(1.0, 0.0, -0.8660254037844386, -0.5000000000000001))) return false; }
+    else if (reflectionStep(p, s, depth, vec4(1.0, 0.0, -0.8660254037844386, -0.5000000000000001))) continue;
+    return true;
+  }
+  return false;
+}
+
+vec4 shadeSample(vec2 w, float pixelWorld, float bgAlpha) {
+  vec3 clip = vec3(0.5, 0.3, 1.5);
+  float cx = w.x - clip.x;
+  float cy = w.y - clip.y;
+  bool clipped = cx * cx + cy * cy > clip.z * clip.z;
+  vec2 p = w;
+  float s = 1.0;
+  int depth = 0;
+  bool escaped = clipped ? false : runIis(p, s, depth);
+  float edgePixels = 3.0e38;
+  return vec4(shade(clipped, escaped, depth, edgePixels), clipped ? bgAlpha : 1.0);
+}
+
+void mainImage(out vec4 fragColor, in vec2 fragCoord) {
+  vec3 view = vec3(0.0, 0.0, 3.0);
+  vec2 px = floor(fragCoord);
+  vec3 sum = vec3(0.0);
+  for (int k = 0; k < 4; ++k) {
+    vec2 w = pixelToWorld(view, iResolution.xy, px, sampleOffset(k));
+    sum += shadeSample(w, view.z / iResolution.y, 1.0).rgb;
+  }
+  fragColor = vec4(toSrgb(sum / 4.0), 1.0);
+}

@@ -1,0 +1,149 @@
+/**
+ * Hand-made scenes for the compiler tests (golden sources, glslang, parity of the element kinds
+ * the examples do not use). Built directly as Scene values, so they stay the same whatever the
+ * node types do; every element kind and every colouring mode appears.
+ */
+import type { Coloring, Scene, SceneElement, TileSpec } from '../../../nodes/core/scene.ts';
+import type { Circle, Vec2 } from '../../../nodes/core/values.ts';
+import { twoCircleRegions } from '../../../nodes/geometry/mobius.ts';
+
+export const COLORINGS: Readonly<Record<Coloring['mode'], Coloring>> = {
+  'depth-hsv': { mode: 'depth-hsv', hueOffset: 0.01, hueStep: 0.05, saturation: 0.8, value: 0.95 },
+  cosine: { mode: 'cosine', a: [0.5, 0.5, 0.5], b: [0.5, 0.5, 0.5], c: [1, 1, 1], d: [0, 0.33, 0.67], step: 0.07 },
+  parity: { mode: 'parity', even: [0.93, 0.91, 0.85], odd: [0.13, 0.16, 0.24] },
+};
+
+export interface SceneOptions {
+  readonly coloring?: Coloring;
+  readonly edgeWidth?: number;
+  readonly clip?: Circle | null;
+  readonly maxIterations?: number;
+  readonly center?: Vec2;
+  readonly scale?: number;
+}
+
+export function makeScene(elements: readonly SceneElement[], o: SceneOptions = {}): Scene {
+  // Every value spelled out (not DEFAULT_TILE), so the golden sources do not move with defaults.
+  const tile: TileSpec = {
+    nodeId: 'tile',
+    coloring: o.coloring ?? COLORINGS.cosine,
+    limitColor: [0.02, 0.02, 0.03],
+    background: [0.06, 0.06, 0.08],
+    edgeWidth: o.edgeWidth ?? 0,
+    edgeColor: [1, 0.95, 0.8],
+  };
+  return {
+    elements,
+    tile,
+    maxIterations: o.maxIterations ?? 100,
+    samples: 4,
+    clip: o.clip ?? null,
+    view: { center: o.center ?? [0, 0], scale: o.scale ?? 4 },
+    overlays: [],
+    handles: [],
+    renderNodeId: 'out',
+  };
+}
+
+export const reflection = (nodeId: string, q: Vec2, n: Vec2): SceneElement => ({ kind: 'reflection', nodeId, q, n });
+export const inversion = (nodeId: string, c: Vec2, r: number): SceneElement => ({ kind: 'inversion', nodeId, c, r });
+
+/** The two-circle generator σ_C2∘σ_C1 with its regions from nodes/geometry (math.md). */
+export function mobius(nodeId: string, c1: Circle, c2: Circle): SceneElement {
+  const regions = twoCircleRegions(c1, c2);
+  if (!regions.ok) throw new Error(regions.reason);
+  return { kind: 'mobius', nodeId, c1, c2, a: regions.a, b: regions.b };
+}
+
+/** The (3,3,3) triangle: the *333 kaleidoscope (equilateral, side 1 at the origin). */
+export const TRIANGLE_333: SceneElement[] = [
+  reflection('m1', [0, 0], [0, 1]),
+  reflection('m2', [0, 0], [Math.sin(Math.PI / 3), -Math.cos(Math.PI / 3)]),
+  reflection('m3', [1, 0], [-Math.sin(Math.PI / 3), -Math.cos(Math.PI / 3)]),
+];
+
+/** A Schottky pair (classical: C1 and C1' disjoint) and one extra inversion circle. */
+export const SCHOTTKY: SceneElement[] = [
+  mobius('g', { c: [-1, 0], r: 0.6 }, { c: [0.2, 0.1], r: 1.0 }),
+  inversion('i', [0, 1.6], 0.5),
+];
+
+/** Wallpaper of parallel mirrors (horizontal) and a translation (vertical lines of the strip). */
+export const STRIPS: SceneElement[] = [
+  { kind: 'parallel-mirrors', nodeId: 'pm', q: [0, -0.25], n: [0, 1], period: 0.5 },
+  { kind: 'translation', nodeId: 'tr', q: [-0.35, 0], n: [1, 0], period: 0.7 },
+];
+
+/** A frieze: one glide reflection along the x axis. */
+export const GLIDE: SceneElement[] = [{ kind: 'glide-reflection', nodeId: 'gl', q: [0, 0], n: [1, 0], period: 0.8 }];
+
+/** Rotation of order 5 and a spiral similarity about the same centre: a rose of annular wedges. */
+export const ROSE: SceneElement[] = [
+  { kind: 'rotation', nodeId: 'rot', c: [0.05, -0.03], b1: [Math.cos(0.2), Math.sin(0.2)], order: 5 },
+  { kind: 'spiral-similarity', nodeId: 'sp', c: [0.05, -0.03], r1: 0.35, r2: 0.5, angle: 0.25 },
+];
+
+/**
+ * g(z) = (2z + 1)/(z + 1) (det 1, trace 3: hyperbolic): I(g) centre −d/c = −1, I(g⁻¹) centre
+ * a/c = 2, both radius 1/|c| = 1, disjoint; the Ford domain is outside both.
+ */
+export const MATRIX: SceneElement[] = [
+  {
+    kind: 'mobius-matrix',
+    nodeId: 'mm',
+    a: [2, 0],
+    b: [1, 0],
+    c: [1, 0],
+    d: [1, 0],
+    forward: { c: [-1, 0], r: 1, outside: false },
+    backward: { c: [2, 0], r: 1, outside: false },
+  },
+];
+
+/** A loxodromic element with made-up but well-formed data (for code generation only). */
+export const LOXODROMIC: SceneElement[] = [
+  {
+    kind: 'loxodromic',
+    nodeId: 'lx',
+    c1: { c: [0.1, 0], r: 0.5 },
+    c2: { c: [0, 0], r: 2 },
+    c3: { c: [0.3, 1.2], r: 1.1 },
+    lq: [0, 0],
+    ln: [0, 1],
+    a: { c: [0.1, 0], r: 0.5, outside: false },
+    b: { c: [-0.02, 0], r: 1.6, outside: true },
+  },
+];
+
+/** Every element kind at least once, in one scene. */
+export const EVERY_KIND: SceneElement[] = [
+  ...TRIANGLE_333,
+  ...SCHOTTKY,
+  ...STRIPS,
+  ...GLIDE,
+  ...ROSE,
+  ...MATRIX,
+  ...LOXODROMIC,
+];
+
+/** Named hand-made scenes covering every element kind, colouring mode, edges and clip. */
+export const HAND_MADE_SCENES: Readonly<Record<string, Scene>> = {
+  'triangle-333-parity-clip': makeScene(TRIANGLE_333, {
+    coloring: COLORINGS.parity,
+    clip: { c: [0.5, 0.3], r: 1.5 },
+    scale: 3,
+  }),
+  'schottky-cosine-edges': makeScene(SCHOTTKY, { edgeWidth: 1.5, maxIterations: 60, scale: 5 }),
+  'strips-hsv-edges': makeScene(STRIPS, { coloring: COLORINGS['depth-hsv'], edgeWidth: 2, scale: 3 }),
+  'glide-parity': makeScene(GLIDE, { coloring: COLORINGS.parity, scale: 3 }),
+  'rose-cosine': makeScene(ROSE, { scale: 2.5, maxIterations: 200 }),
+  'matrix-hsv-edges-clip': makeScene(MATRIX, {
+    coloring: COLORINGS['depth-hsv'],
+    edgeWidth: 1,
+    clip: { c: [0.5, 0], r: 4 },
+    scale: 7,
+  }),
+  'loxodromic-parity-edges': makeScene(LOXODROMIC, { coloring: COLORINGS.parity, edgeWidth: 1 }),
+  'every-kind-cosine-edges-clip': makeScene(EVERY_KIND, { edgeWidth: 1, clip: { c: [0, 0], r: 3 } }),
+  empty: makeScene([]),
+};

@@ -6,12 +6,18 @@
  */
 import { type Diagnostic, diag } from '../nodes/core/diagnostics.ts';
 import { LIMITS, type Scene } from '../nodes/core/scene.ts';
-import { FRAME_UNIFORMS, fragmentShader, shadertoyShader, VERTEX_SOURCE, type Variant } from './glsl/template.ts';
+import {
+  FRAME_UNIFORMS,
+  fragmentShader,
+  shadertoyShader,
+  type Variant,
+  VERTEX_SOURCE,
+} from './glsl/template.ts';
 import { type UniformEntry, uniformRows } from './glsl/values.ts';
 import { structureKey } from './structure-key.ts';
 
-export type { UniformEntry } from './glsl/values.ts';
 export { FRAME_UNIFORMS } from './glsl/template.ts';
+export type { UniformEntry } from './glsl/values.ts';
 
 export interface CompileOptions {
   /** color: linear RGBA of one sample; probe: vec4(depth, final.x, final.y, escaped) (RGBA32F). */
@@ -55,7 +61,9 @@ export function compile(input: Scene, options: CompileOptions = {}): CompiledPro
     const rows = FRAME_ROWS + emitted.uniforms.reduce((n, u) => n + uniformRows(u), 0);
     if (rows > LIMITS.maxUniformVectors) {
       // Too much data for the uniforms every WebGL2 GPU has: literals have no such limit.
-      diagnostics.push(diag('uniformBudget', { nodeId: scene.renderNodeId ?? undefined }, rows, LIMITS.maxUniformVectors));
+      diagnostics.push(
+        diag('uniformBudget', { nodeId: scene.renderNodeId ?? undefined }, rows, LIMITS.maxUniformVectors),
+      );
       baked = true;
       emitted = fragmentShader(scene, variant, baked);
     }

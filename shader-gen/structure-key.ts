@@ -55,6 +55,7 @@ export function structureKey(scene: Scene, options: StructureKeyOptions): string
     `edges:${scene.tile.edgeWidth > 0 ? 'on' : 'off'}`,
     `clip:${scene.clip ? 'on' : 'off'}`,
   ];
-  if (options.baked) parts.push(`maxIterations:${scene.maxIterations}`, `values:${fnv1a64(bakedValues(scene))}`);
+  if (options.baked)
+    parts.push(`maxIterations:${scene.maxIterations}`, `values:${fnv1a64(bakedValues(scene))}`);
   return parts.join('|');
 }

@@ -14,9 +14,16 @@ export const angleNode = defineNode({
   label: 'Angle',
   category: 'Construction',
   color: '#9aa5b1',
-  doc: 'The angle at vertex b between the rays to a and c, in radians (0 to π); shown in degrees.',
+  doc: 'The angle at vertex b between the rays to a and c (0 to π), as radians and as degrees.',
   inputs: { a: pointInput('a', 1, 0), b: pointInput('vertex b', 0, 0), c: pointInput('c', 0, 1) },
-  outputs: { angle: { type: 'number', label: 'radians' } },
+  outputs: {
+    angle: { type: 'number', label: 'radians' },
+    degrees: {
+      type: 'number',
+      label: 'degrees',
+      doc: 'the same angle in degrees, for the nodes whose angle inputs are in degrees',
+    },
+  },
   params: { visible: VISIBLE },
   evaluate: ({ inputs }) => {
     const b = inputs.b as Vec2;
@@ -27,7 +34,7 @@ export const angleNode = defineNode({
     }
     // atan2(|u × v|, u·v): accurate for small and near-straight angles alike (acos is not).
     const angle = Math.atan2(Math.abs(cross(u, v)), dot(u, v));
-    return { outputs: { angle }, readout: degrees(angle) };
+    return { outputs: { angle, degrees: (angle * 180) / Math.PI }, readout: degrees(angle) };
   },
   overlay: (ctx) => {
     const b = ctx.inputs.b as Vec2;

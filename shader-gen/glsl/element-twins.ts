@@ -16,7 +16,9 @@ import { spiralSimilarityGlsl } from '../elements/spiral-similarity.glsl.ts';
 import { translationGlsl } from '../elements/translation.glsl.ts';
 import type { GlslElementTwin } from './element-twin.ts';
 
-type TwinTable = { readonly [K in SceneElement['kind']]: GlslElementTwin<Extract<SceneElement, { kind: K }>> };
+type TwinTable = {
+  readonly [K in SceneElement['kind']]: GlslElementTwin<Extract<SceneElement, { kind: K }>>;
+};
 
 export const GLSL_TWINS: TwinTable = {
   inversion: inversionGlsl,

@@ -5,11 +5,17 @@
  */
 import type { Scene } from '../../nodes/core/scene.ts';
 import { toSrgbGlsl } from './colour.glsl.ts';
-import { elementFunctions, emitBoundaryDistance, emitRunIis, placeElements, shadeSampleGlsl } from './iis.glsl.ts';
+import {
+  elementFunctions,
+  emitBoundaryDistance,
+  emitRunIis,
+  placeElements,
+  shadeSampleGlsl,
+} from './iis.glsl.ts';
 import { floatLiteral, intLiteral } from './literal.ts';
 import { collectFunctions, type GlslFunction } from './snippet.ts';
 import { SourceBuilder } from './source.ts';
-import { type UniformEntry, SceneValues, declaration } from './values.ts';
+import { declaration, SceneValues, type UniformEntry } from './values.ts';
 import { pixelToWorldGlsl, sampleOffsetGlsl } from './view.glsl.ts';
 
 export type Variant = 'color' | 'probe';
@@ -17,10 +23,18 @@ export type Variant = 'color' | 'probe';
 /** Uniforms the runtime sets per frame, declared in every WebGL variant (names fixed). */
 export const FRAME_UNIFORMS = [
   { name: 'u_resolution', type: 'vec2', doc: 'full image size in pixels' },
-  { name: 'u_pixelOffset', type: 'vec2', doc: 'offset of this framebuffer within the full image (tiled export)' },
+  {
+    name: 'u_pixelOffset',
+    type: 'vec2',
+    doc: 'offset of this framebuffer within the full image (tiled export)',
+  },
   { name: 'u_view', type: 'vec3', doc: 'view centre x, y and scale (world height of the image)' },
   { name: 'u_jitter', type: 'vec2', doc: 'sub-pixel sample offset in [0,1)² (view.ts sampleOffset)' },
-  { name: 'u_bgAlpha', type: 'float', doc: 'alpha of the background outside the clip disk (1; 0 for transparent export)' },
+  {
+    name: 'u_bgAlpha',
+    type: 'float',
+    doc: 'alpha of the background outside the clip disk (1; 0 for transparent export)',
+  },
 ] as const;
 
 /** Attribute-less full-screen triangle: vertices (−1,−1), (3,−1), (−1,3) from gl_VertexID. */

@@ -8,6 +8,7 @@ import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import { emptyDocument, type GraphDoc } from '../../nodes/graph/document.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { GraphEditor } from '../editor/GraphEditor.tsx';
+import { tidyIfOverlapping } from '../editor/layout.ts';
 import { isTyping } from '../editor/typing.ts';
 import { createEvaluator } from '../state/evaluation.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
@@ -64,7 +65,7 @@ export function App({ initialMessages }: Props) {
   const onFile = async (file: File) => {
     const result = await readDocumentFile(file);
     if (result.ok) {
-      load(result.doc, `open ${file.name}`);
+      load(tidyIfOverlapping(result.doc, registry), `open ${file.name}`);
       setMessages((ms) => ms.filter((m) => m.id !== 'open'));
     } else {
       say({

@@ -1,6 +1,8 @@
 /** The bundled examples (examples/*.kleinflow.json), by title, and the one the first run opens. */
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { loadDocument } from '../../nodes/graph/load.ts';
+import { registry } from '../../nodes/types/index.ts';
+import { tidyIfOverlapping } from '../editor/layout.ts';
 
 export interface Example {
   readonly id: string;
@@ -18,7 +20,8 @@ export const EXAMPLES: readonly Example[] = Object.entries(modules)
     if (!loaded.ok) return [];
     const id = path.replace(/^.*\//, '').replace(/\.kleinflow\.json$/, '');
     const { title, description } = loaded.doc.meta;
-    return [{ id, title: title ?? id, description: description ?? '', doc: loaded.doc }];
+    // Example files may place nodes tighter than the editor draws them: spread them out.
+    return [{ id, title: title ?? id, description: description ?? '', doc: tidyIfOverlapping(loaded.doc, registry) }];
   })
   .sort((a, b) => a.title.localeCompare(b.title));
 

@@ -19,6 +19,7 @@ import {
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { NodeDef } from '../../nodes/core/define-node.ts';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import type { GraphNode } from '../../nodes/graph/document.ts';
 import type { Evaluation } from '../../nodes/graph/evaluate.ts';
 import { registry } from '../../nodes/types/index.ts';
 import type { Change } from '../state/changes.ts';
@@ -31,6 +32,7 @@ import { EditorContext, type EditorActions } from './editor-context.ts';
 import { diagnosticsByNode, type KfNode, type KfNodeData, toFlowEdges, toFlowNodes } from './flow-model.ts';
 import { compatiblePort, type WireFilter } from './fuzzy.ts';
 import { Inspector } from './Inspector.tsx';
+import { sizer, tidyPositions } from './layout.ts';
 import { newNode } from './new-node.ts';
 import { NodeView } from './NodeView.tsx';
 import { Palette } from './Palette.tsx';
@@ -275,6 +277,19 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
     return () => window.removeEventListener('keydown', onKey);
   }, [palette, openPalette, copySelection, pasteData, store, flow, inspectorOpen, setInspectorOpen]);
 
+  /** Tidy layout with the sizes React Flow measured (estimates for nodes not drawn yet): one undo step. */
+  const tidy = () => {
+    const current = store.getState().doc;
+    const estimate = sizer(current, registry);
+    const measured = new Map(nodes.map((n) => [n.id, n.measured]));
+    const size = (n: GraphNode) => {
+      const m = measured.get(n.id);
+      return m?.width && m.height ? { width: m.width, height: m.height } : estimate(n);
+    };
+    store.dispatch({ type: 'move-nodes', moves: tidyPositions(current, size) }, 'tidy layout');
+    requestAnimationFrame(() => void flow.fitView({ padding: 0.2, maxZoom: 1, duration: 200 }));
+  };
+
   const inspected = selection.size === 1 ? doc.nodes.find((n) => selection.has(n.id)) : undefined;
   const inspectedData = inspected ? nodes.find((n) => n.id === inspected.id)?.data : undefined;
 
@@ -337,15 +352,26 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
             <p>or open an example from the menu</p>
           </div>
         )}
-        <button
-          type="button"
-          className={`kf-button kf-inspector-toggle${inspectorOpen ? ' kf-button--active' : ''}`}
+        <div className="kf-graph-tools">
+          <button
+            type="button"
+            className="kf-button"
+            title="Arrange the nodes in columns from sources to the render"
+            disabled={doc.nodes.length === 0}
+            onClick={tidy}
+          >
+            Tidy
+          </button>
+          <button
+            type="button"
+            className={`kf-button${inspectorOpen ? ' kf-button--active' : ''}`}
           aria-pressed={inspectorOpen}
           title="Show the inspector for the selected node (I)"
-          onClick={() => setInspectorOpen(!inspectorOpen)}
-        >
-          Inspector
-        </button>
+            onClick={() => setInspectorOpen(!inspectorOpen)}
+          >
+            Inspector
+          </button>
+        </div>
         {inspectorOpen && !inspected && (
           <aside className="kf-inspector kf-inspector--empty" aria-label="Inspector">
             Select one node to inspect it.

@@ -18,8 +18,9 @@ import { decodeShareFragment, sharePayload } from './share-url.ts';
 export { serializeDocument } from './json-text.ts';
 export type { OpenResult, OpenSource } from './open-result.ts';
 
-/** Text that is a share link rather than JSON: `#g=…`, `g=…` or a URL with that fragment. */
-const looksLikeShareLink = (text: string) => !text.startsWith('{') && sharePayload(text) !== null;
+/** Text that is a share link rather than JSON: one word — `#g=…`, `g=…` or a URL with that fragment. */
+const looksLikeShareLink = (text: string) =>
+  !text.startsWith('{') && !/\s/.test(text) && sharePayload(text) !== null;
 
 /**
  * Opens JSON text (or a pasted share link). `registry` decides which node types a Flower import

@@ -52,11 +52,18 @@ export interface ParityStats {
 }
 
 /** Whether two runs of the same sample point agree within the float32 error model above. */
-export function samplesAgree(w: readonly [number, number], viewScale: number, ref: MarginResult, got: ProbeSample) {
+export function samplesAgree(
+  w: readonly [number, number],
+  viewScale: number,
+  ref: MarginResult,
+  got: ProbeSample,
+) {
   const depth = got.depth === ref.depth;
   const escaped = got.escaped === ref.escaped;
   const bound =
-    EPS32 * (ref.depth + 1) * ((Math.hypot(w[0], w[1]) + viewScale) * ref.scale + Math.hypot(ref.final[0], ref.final[1]));
+    EPS32 *
+    (ref.depth + 1) *
+    ((Math.hypot(w[0], w[1]) + viewScale) * ref.scale + Math.hypot(ref.final[0], ref.final[1]));
   const final = Math.hypot(got.x - ref.final[0], got.y - ref.final[1]) <= FINAL_FACTOR * bound;
   return { depth, escaped, final };
 }
@@ -113,7 +120,10 @@ export function compareWithCpu(scene: Scene, img: ProbeImage, frame?: ImageFrame
 }
 
 /** Two GPU images of the same scene (e.g. generated vs hand-written): same depth and escaped. */
-export function compareImages(a: ProbeImage, b: ProbeImage): { pixels: number; same: number; agreement: number } {
+export function compareImages(
+  a: ProbeImage,
+  b: ProbeImage,
+): { pixels: number; same: number; agreement: number } {
   let same = 0;
   for (let py = 0; py < a.height; py++) {
     for (let px = 0; px < a.width; px++) {

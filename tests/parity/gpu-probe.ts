@@ -79,10 +79,11 @@ export class GpuProbe {
       pixelOffset: tile.offset,
       bgAlpha: tile.bgAlpha,
     };
-    const out = await this.page.evaluate(
-      ([index, u, f]) => window.kfHarness.render(index, u, f),
-      [program, uniforms, frame] as const,
-    );
+    const out = await this.page.evaluate(([index, u, f]) => window.kfHarness.render(index, u, f), [
+      program,
+      uniforms,
+      frame,
+    ] as const);
     const bytes = Buffer.from(out.data, 'base64');
     const data = new Float32Array(bytes.buffer, bytes.byteOffset, bytes.byteLength / 4);
     return { width: this.width, height: this.height, data: new Float32Array(data), ms: out.ms };

@@ -8,11 +8,20 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Scene } from '../../nodes/core/scene.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
-import { compile } from '../../shader-gen/compile.ts';
+import { compile, shadertoySource } from '../../shader-gen/compile.ts';
+import { rasterize } from '../../shader-gen/raster.ts';
+import { pixelToWorld } from '../../shader-gen/view.ts';
 import { HAND_WRITTEN } from '../bench/hand-written/index.ts';
+import { shadertoyWrapper } from '../shader-gen/support/glslang.ts';
 import { HAND_MADE_SCENES } from '../shader-gen/support/scenes.ts';
 import { exampleNames, loadExample, sceneOf } from '../support/examples.ts';
-import { compareColourWithCpu, compareImages, compareWithCpu, type ParityStats } from './compare.ts';
+import {
+  COLOUR_LEVELS,
+  compareColourWithCpu,
+  compareImages,
+  compareWithCpu,
+  type ParityStats,
+} from './compare.ts';
 import { GpuProbe, type ProbeImage } from './gpu-probe.ts';
 
 const SIZE = 256;
@@ -80,7 +89,11 @@ describe('GPU = CPU for hand-made scenes (every element kind, every colouring)',
       const program = compile(scene);
       const colour = compareColourWithCpu(
         scene,
-        await gpu.render(await gpu.program(program.vertexSource, program.source), program.uniforms, scene.view),
+        await gpu.render(
+          await gpu.program(program.vertexSource, program.source),
+          program.uniforms,
+          scene.view,
+        ),
       );
       Object.assign(report[`scene ${name}`], { colour: percent(colour.agreement) });
       expect(stats.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
@@ -97,10 +110,11 @@ describe('GPU colour program = CPU colouring (one sample per pixel centre, 8-bit
       const index = await gpu.program(program.vertexSource, program.source);
       const image = await gpu.render(index, program.uniforms, scene.view);
       const stats = compareColourWithCpu(scene, image);
-      Object.assign((report[name] ??= {}), {
+      report[name] = {
+        ...report[name],
         colour: percent(stats.agreement),
         'colour worst (levels)': stats.worstLevels,
-      });
+      };
       expect(stats.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
     });
   }
@@ -111,7 +125,9 @@ function movePoint(doc: GraphDoc, id: string, dx: number, dy: number): GraphDoc 
   return {
     ...doc,
     nodes: doc.nodes.map((n) =>
-      n.id === id ? { ...n, params: { ...n.params, x: Number(n.params.x) + dx, y: Number(n.params.y) + dy } } : n,
+      n.id === id
+        ? { ...n, params: { ...n.params, x: Number(n.params.x) + dx, y: Number(n.params.y) + dy } }
+        : n,
     ),
   };
 }
@@ -167,6 +183,71 @@ describe('hand-written bench shaders draw the same picture as the generated ones
       };
       expect(same.agreement).toBeGreaterThanOrEqual(0.999);
       expect(vsCpu.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
+    });
+  }
+});
+
+describe('frame uniforms', () => {
+  it('u_resolution + u_pixelOffset: a tile of a bigger image is that part of the image', async () => {
+    const { scene } = loadExample('hyperbolic-237');
+    const program = compile(scene, { variant: 'probe' });
+    const index = await gpu.program(program.vertexSource, program.source);
+    const frame = { resolution: [768, 512] as const, offset: [256, 128] as const };
+    const image = await gpu.render(index, program.uniforms, scene.view, frame);
+    const stats = compareWithCpu(scene, image, frame);
+    expect(stats.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
+    // …and not the same as the untiled picture.
+    const whole = await gpu.render(index, program.uniforms, scene.view);
+    expect(compareImages(image, whole).agreement).toBeLessThan(0.9);
+  });
+
+  it('u_bgAlpha: the background outside the clip disk takes it, everything else is opaque', async () => {
+    const { scene } = loadExample('hyperbolic-237');
+    expect(scene.clip).not.toBeNull();
+    const program = compile(scene);
+    const index = await gpu.program(program.vertexSource, program.source);
+    const image = await gpu.render(index, program.uniforms, scene.view, { bgAlpha: 0 });
+    const clip = scene.clip!;
+    let transparent = 0;
+    for (let py = 0; py < SIZE; py++) {
+      for (let px = 0; px < SIZE; px++) {
+        const [x, y] = pixelToWorld(scene.view, SIZE, SIZE, px, py);
+        const r = Math.hypot(x - clip.c[0], y - clip.c[1]) / clip.r;
+        const alpha = image.data[4 * (py * SIZE + px) + 3];
+        if (r > 1 + 1e-5) {
+          expect(alpha).toBe(0);
+          transparent++;
+        } else if (r < 1 - 1e-5) expect(alpha).toBe(1);
+      }
+    }
+    expect(transparent).toBeGreaterThan(0.1 * SIZE * SIZE);
+  });
+});
+
+describe('the Shadertoy version draws what the CPU renders (samples, jitter, sRGB)', () => {
+  for (const name of ['six-disks', 'kaleidoscope-632']) {
+    it(`${name}: ≥ 99 % of pixels within ±${COLOUR_LEVELS} levels of the CPU raster`, async ({ skip }) => {
+      if (!exampleNames().includes(name)) skip();
+      const { scene } = loadExample(name);
+      const index = await gpu.program(compile(scene).vertexSource, shadertoyWrapper(shadertoySource(scene)));
+      const image = await gpu.render(index, [], scene.view);
+      const cpu = rasterize(scene, { width: SIZE, height: SIZE });
+      let agree = 0;
+      for (let py = 0; py < SIZE; py++) {
+        for (let px = 0; px < SIZE; px++) {
+          const o = 4 * (py * SIZE + px);
+          const c = 4 * ((SIZE - 1 - py) * SIZE + px); // the raster's row 0 is the top
+          let worst = 0;
+          for (let k = 0; k < 3; k++)
+            worst = Math.max(worst, Math.abs(Math.round(image.data[o + k] * 255) - cpu.data[c + k]));
+          if (worst <= COLOUR_LEVELS) agree++;
+        }
+      }
+      report[`shadertoy ${name}`] = {
+        agreement: percent(agree / (SIZE * SIZE)),
+        'GPU ms': Math.round(image.ms),
+      };
+      expect(agree / (SIZE * SIZE)).toBeGreaterThanOrEqual(0.99);
     });
   }
 });

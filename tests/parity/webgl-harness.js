@@ -33,7 +33,8 @@
       gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
       gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, texture, 0);
       const status = gl.checkFramebufferStatus(gl.FRAMEBUFFER);
-      if (status !== gl.FRAMEBUFFER_COMPLETE) throw new Error(`framebuffer incomplete: 0x${status.toString(16)}`);
+      if (status !== gl.FRAMEBUFFER_COMPLETE)
+        throw new Error(`framebuffer incomplete: 0x${status.toString(16)}`);
       gl.bindVertexArray(gl.createVertexArray());
       gl.viewport(0, 0, width, height);
       Object.assign(harness, { gl, width, height });
@@ -47,14 +48,16 @@
         const s = gl.createShader(type);
         gl.shaderSource(s, source);
         gl.compileShader(s);
-        if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) throw new Error(gl.getShaderInfoLog(s) || 'compile failed');
+        if (!gl.getShaderParameter(s, gl.COMPILE_STATUS))
+          throw new Error(gl.getShaderInfoLog(s) || 'compile failed');
         return s;
       };
       const p = gl.createProgram();
       gl.attachShader(p, shader(gl.VERTEX_SHADER, vertexSource));
       gl.attachShader(p, shader(gl.FRAGMENT_SHADER, fragmentSource));
       gl.linkProgram(p);
-      if (!gl.getProgramParameter(p, gl.LINK_STATUS)) throw new Error(gl.getProgramInfoLog(p) || 'link failed');
+      if (!gl.getProgramParameter(p, gl.LINK_STATUS))
+        throw new Error(gl.getProgramInfoLog(p) || 'link failed');
       harness.programs.push(p);
       return harness.programs.length - 1;
     },
@@ -82,6 +85,7 @@
     render(index, uniforms, frame) {
       const gl = harness.gl;
       const p = harness.programs[index];
+      // biome-ignore lint/correctness/useHookAtTopLevel: WebGL's useProgram, not a React hook
       gl.useProgram(p);
       harness.setUniforms(p, [
         ...uniforms,
@@ -99,7 +103,8 @@
       const ms = performance.now() - t0;
       const bytes = new Uint8Array(pixels.buffer);
       let text = '';
-      for (let i = 0; i < bytes.length; i += 0x8000) text += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+      for (let i = 0; i < bytes.length; i += 0x8000)
+        text += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
       return { data: btoa(text), ms };
     },
   };

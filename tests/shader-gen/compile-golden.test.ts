@@ -37,7 +37,8 @@ describe('generated sources match the golden files', () => {
       const path = new URL(file, GOLDEN_DIR);
       const actual = source();
       if (UPDATE) writeFileSync(path, actual);
-      if (!existsSync(path)) throw new Error(`golden/${file} is missing: run with UPDATE_GOLDEN=1 to create it`);
+      if (!existsSync(path))
+        throw new Error(`golden/${file} is missing: run with UPDATE_GOLDEN=1 to create it`);
       expect(actual).toBe(readFileSync(path, 'utf8'));
     });
   }

@@ -11,7 +11,14 @@ import { ELEMENT_KINDS } from '../../shader-gen/elements/index.ts';
 import { GLSL_TWINS, glslTwin } from '../../shader-gen/glsl/element-twins.ts';
 import { floatLiteral } from '../../shader-gen/glsl/literal.ts';
 import { uniformRows } from '../../shader-gen/glsl/values.ts';
-import { COLORINGS, EVERY_KIND, HAND_MADE_SCENES, makeScene, reflection, TRIANGLE_333 } from './support/scenes.ts';
+import {
+  COLORINGS,
+  EVERY_KIND,
+  HAND_MADE_SCENES,
+  makeScene,
+  reflection,
+  TRIANGLE_333,
+} from './support/scenes.ts';
 
 const scenes = Object.entries(HAND_MADE_SCENES);
 const withElements = (s: Scene, elements: readonly SceneElement[]): Scene => ({ ...s, elements });
@@ -55,7 +62,9 @@ describe('program shape', () => {
 
   it('the colour variant writes outColor, the probe variant outProbe (depth, final, escaped)', () => {
     const scene = HAND_MADE_SCENES['schottky-cosine-edges'];
-    expect(compile(scene).source).toMatch(/outColor = shadeSample\(w, u_view\.z \/ u_resolution\.y, u_bgAlpha\);/);
+    expect(compile(scene).source).toMatch(
+      /outColor = shadeSample\(w, u_view\.z \/ u_resolution\.y, u_bgAlpha\);/,
+    );
     expect(compile(scene, { variant: 'probe' }).source).toContain(
       'outProbe = vec4(float(depth), p, escaped ? 1.0 : 0.0);',
     );
@@ -105,12 +114,16 @@ describe('uniforms', () => {
 describe('structureKey: code, never values', () => {
   it('the same for any change of values, and then the source is the same too', () => {
     fc.assert(
-      fc.property(fc.constantFrom(...scenes), fc.double({ min: -0.2, max: 0.2, noNaN: true }), ([, scene], d) => {
-        const a = compile(scene);
-        const b = compile(nudged(scene, d));
-        expect(b.structureKey).toBe(a.structureKey);
-        expect(b.source).toBe(a.source);
-      }),
+      fc.property(
+        fc.constantFrom(...scenes),
+        fc.double({ min: -0.2, max: 0.2, noNaN: true }),
+        ([, scene], d) => {
+          const a = compile(scene);
+          const b = compile(nudged(scene, d));
+          expect(b.structureKey).toBe(a.structureKey);
+          expect(b.source).toBe(a.source);
+        },
+      ),
       { seed: 42, numRuns: 60 },
     );
   });
@@ -128,7 +141,12 @@ describe('structureKey: code, never values', () => {
       { ...base, tile: { ...base.tile, edgeWidth: 1 } },
       { ...base, clip: null },
     ];
-    const keys = [key(base), ...variants.map((s) => key(s)), key(base, { variant: 'probe' }), key(base, { baked: true })];
+    const keys = [
+      key(base),
+      ...variants.map((s) => key(s)),
+      key(base, { variant: 'probe' }),
+      key(base, { baked: true }),
+    ];
     expect(new Set(keys).size).toBe(keys.length);
   });
 
@@ -192,7 +210,14 @@ describe('limits are diagnostics, never driver errors', () => {
 
 describe('literals', () => {
   it('read back as the same number and always as a float', () => {
-    expect([1, -0, 0.1, 1e-7, 1e21, -2.5].map(floatLiteral)).toEqual(['1.0', '0.0', '0.1', '1e-7', '1e+21', '-2.5']);
+    expect([1, -0, 0.1, 1e-7, 1e21, -2.5].map(floatLiteral)).toEqual([
+      '1.0',
+      '0.0',
+      '0.1',
+      '1e-7',
+      '1e+21',
+      '-2.5',
+    ]);
     expect(() => floatLiteral(Number.NaN)).toThrow();
     fc.assert(
       fc.property(fc.double({ noNaN: true, noDefaultInfinity: true }), (x) => {

@@ -9,7 +9,12 @@ import type { Scene } from '../../nodes/core/scene.ts';
 import { type CompileOptions, compile, shadertoySource } from '../../shader-gen/compile.ts';
 import { HAND_WRITTEN } from '../bench/hand-written/index.ts';
 import { exampleNames, loadExample } from '../support/examples.ts';
-import { type ShaderToCheck, shadertoyWrapper, validateShaders, webglIdentifierProblems } from './support/glslang.ts';
+import {
+  type ShaderToCheck,
+  shadertoyWrapper,
+  validateShaders,
+  webglIdentifierProblems,
+} from './support/glslang.ts';
 import { HAND_MADE_SCENES } from './support/scenes.ts';
 
 const VARIANTS: Record<string, CompileOptions> = {
@@ -34,14 +39,20 @@ describe('generated GLSL passes glslangValidator and WebGL identifier rules', ()
   const shaders: ShaderToCheck[] = [
     ...examples.flatMap((name) => shadersOf(`example-${name}`, loadExample(name).scene)),
     ...Object.entries(HAND_MADE_SCENES).flatMap(([name, scene]) => shadersOf(`scene-${name}`, scene)),
-    ...HAND_WRITTEN.map((h) => ({ name: `hand-written-${h.example}`, source: h.source, stage: 'frag' as const })),
+    ...HAND_WRITTEN.map((h) => ({
+      name: `hand-written-${h.example}`,
+      source: h.source,
+      stage: 'frag' as const,
+    })),
     { name: 'vertex', source: compile(HAND_MADE_SCENES.empty).vertexSource, stage: 'vert' },
   ];
   const results = validateShaders(shaders);
 
   it('covers every example, every hand-made scene and every variant', () => {
     expect(examples.length).toBeGreaterThan(0);
-    expect(shaders.length).toBe((examples.length + Object.keys(HAND_MADE_SCENES).length) * 5 + HAND_WRITTEN.length + 1);
+    expect(shaders.length).toBe(
+      (examples.length + Object.keys(HAND_MADE_SCENES).length) * 5 + HAND_WRITTEN.length + 1,
+    );
   });
 
   for (const shader of shaders) {
@@ -77,7 +88,10 @@ describe('#line markers map compiler errors to nodes', () => {
   const program = compile(scene);
 
   it('an error inside element 2 is reported as source string 2, which lineMap names', () => {
-    const broken = program.source.replace('inversionStep(p, s, depth, u_el[4])', 'inversionStep(p, s, depth, oops)');
+    const broken = program.source.replace(
+      'inversionStep(p, s, depth, u_el[4])',
+      'inversionStep(p, s, depth, oops)',
+    );
     expect(broken).not.toBe(program.source);
     const errors = validateShaders([{ name: 'broken', source: broken, stage: 'frag' }]).get('broken')!;
     const match = /ERROR: (\d+):(\d+):.*oops/.exec(errors.join('\n'));
@@ -90,7 +104,9 @@ describe('#line markers map compiler errors to nodes', () => {
     const lines = program.source.split('\n');
     const target = lines.findIndex((l) => l.includes('outColor = shadeSample('));
     lines[target] = lines[target].replace('shadeSample(', 'shadeSampleMissing(');
-    const errors = validateShaders([{ name: 'broken', source: lines.join('\n'), stage: 'frag' }]).get('broken')!;
+    const errors = validateShaders([{ name: 'broken', source: lines.join('\n'), stage: 'frag' }]).get(
+      'broken',
+    )!;
     const match = /ERROR: 0:(\d+):.*shadeSampleMissing/.exec(errors.join('\n'));
     expect(match).not.toBeNull();
     expect(Number(match![1])).toBe(target + 1);

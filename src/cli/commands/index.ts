@@ -9,4 +9,10 @@ import { glslCommand } from './glsl.ts';
 import { renderCommand } from './render.ts';
 import { sampleCommand } from './sample.ts';
 
-export const COMMANDS: readonly CliCommand[] = [renderCommand, sampleCommand, glslCommand, checkCommand, convertCommand];
+export const COMMANDS: readonly CliCommand[] = [
+  renderCommand,
+  sampleCommand,
+  glslCommand,
+  checkCommand,
+  convertCommand,
+];

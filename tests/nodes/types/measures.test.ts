@@ -6,6 +6,7 @@ describe('measure nodes', () => {
     const r = checkDefaults('angle');
     expect(r.outputs!.angle).toBeCloseTo(Math.PI / 2, 14);
     expect(r.readout).toBe('90°');
+    expect(r.outputs!.degrees).toBeCloseTo(90, 12);
     const obtuse = evalNode('angle', { a: [1, 0], b: [0, 0], c: [-1, 1] });
     expect(obtuse.outputs!.angle).toBeCloseTo((3 * Math.PI) / 4, 14);
     const straight = evalNode('angle', { a: [1, 0], b: [0, 0], c: [-1, 0] });

@@ -28,7 +28,10 @@ export function validateShaders(shaders: readonly ShaderToCheck[]): Map<string, 
         return file;
       });
       const run = spawnSync('glslangValidator', ['-S', stage, ...files], { encoding: 'utf8' });
-      if (run.error) throw new Error(`glslangValidator could not run (${run.error.message}): apt-get install glslang-tools`);
+      if (run.error)
+        throw new Error(
+          `glslangValidator could not run (${run.error.message}): apt-get install glslang-tools`,
+        );
       // The output names each file on a line of its own, followed by that file's messages.
       let current: string[] | null = null;
       const byFile = new Map(files.map((f, i) => [f, batch[i].name]));
@@ -71,7 +74,8 @@ export function webglIdentifierProblems(source: string): string[] {
   const code = source.replace(/\/\/.*$/gm, '').replace(/\/\*[\s\S]*?\*\//g, '');
   for (const [id] of code.matchAll(/\b[A-Za-z_]\w*\b/g)) {
     if (id.includes('__') || /^_?webgl_/i.test(id)) problems.add(id);
-    if (id.startsWith('gl_') && !['gl_FragCoord', 'gl_VertexID', 'gl_Position'].includes(id)) problems.add(id);
+    if (id.startsWith('gl_') && !['gl_FragCoord', 'gl_VertexID', 'gl_Position'].includes(id))
+      problems.add(id);
   }
   return [...problems];
 }

@@ -9,7 +9,14 @@ import { twoCircleRegions } from '../../../nodes/geometry/mobius.ts';
 
 export const COLORINGS: Readonly<Record<Coloring['mode'], Coloring>> = {
   'depth-hsv': { mode: 'depth-hsv', hueOffset: 0.01, hueStep: 0.05, saturation: 0.8, value: 0.95 },
-  cosine: { mode: 'cosine', a: [0.5, 0.5, 0.5], b: [0.5, 0.5, 0.5], c: [1, 1, 1], d: [0, 0.33, 0.67], step: 0.07 },
+  cosine: {
+    mode: 'cosine',
+    a: [0.5, 0.5, 0.5],
+    b: [0.5, 0.5, 0.5],
+    c: [1, 1, 1],
+    d: [0, 0.33, 0.67],
+    step: 0.07,
+  },
   parity: { mode: 'parity', even: [0.93, 0.91, 0.85], odd: [0.13, 0.16, 0.24] },
 };
 
@@ -45,8 +52,18 @@ export function makeScene(elements: readonly SceneElement[], o: SceneOptions = {
   };
 }
 
-export const reflection = (nodeId: string, q: Vec2, n: Vec2): SceneElement => ({ kind: 'reflection', nodeId, q, n });
-export const inversion = (nodeId: string, c: Vec2, r: number): SceneElement => ({ kind: 'inversion', nodeId, c, r });
+export const reflection = (nodeId: string, q: Vec2, n: Vec2): SceneElement => ({
+  kind: 'reflection',
+  nodeId,
+  q,
+  n,
+});
+export const inversion = (nodeId: string, c: Vec2, r: number): SceneElement => ({
+  kind: 'inversion',
+  nodeId,
+  c,
+  r,
+});
 
 /** The two-circle generator σ_C2∘σ_C1 with its regions from nodes/geometry (math.md). */
 export function mobius(nodeId: string, c1: Circle, c2: Circle): SceneElement {
@@ -75,7 +92,9 @@ export const STRIPS: SceneElement[] = [
 ];
 
 /** A frieze: one glide reflection along the x axis. */
-export const GLIDE: SceneElement[] = [{ kind: 'glide-reflection', nodeId: 'gl', q: [0, 0], n: [1, 0], period: 0.8 }];
+export const GLIDE: SceneElement[] = [
+  { kind: 'glide-reflection', nodeId: 'gl', q: [0, 0], n: [1, 0], period: 0.8 },
+];
 
 /** Rotation of order 5 and a spiral similarity about the same centre: a rose of annular wedges. */
 export const ROSE: SceneElement[] = [

@@ -35,7 +35,9 @@ describe('kleinflow glsl', () => {
     const run = runCli(['glsl', graph, '--probe', '-o', out]);
     expect(run.status).toBe(0);
     expect(run.stdout).toBe('');
-    expect(readFileSync(out, 'utf8')).toBe(compile(loadExample(example).scene, { baked: true, variant: 'probe' }).source);
+    expect(readFileSync(out, 'utf8')).toBe(
+      compile(loadExample(example).scene, { baked: true, variant: 'probe' }).source,
+    );
   });
 
   it('refuses --shadertoy with --probe (usage, exit 2) and a broken graph (exit 1, nothing printed)', () => {

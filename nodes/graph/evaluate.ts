@@ -74,19 +74,10 @@ export function evaluateGraph(
     }
     const result = evaluateNode(def, node.id, index, migrated.params, analysis, results, time);
     results.set(id, result);
-    if (!result.outputs || !result.ctx) continue;
+    if (!result.ctx) continue;
     if (result.render) renders.push({ id, settings: result.render });
     if (result.ctx.params.visible === false) continue;
-    try {
-      for (const shape of def.overlay?.(result.ctx, result.outputs) ?? []) {
-        overlays.push({ nodeId: id, color: def.color, shape, ...(node.label ? { label: node.label } : {}) });
-      }
-      for (const h of def.handles?.(result.ctx, result.outputs) ?? []) {
-        if (allFinite(h.at)) handles.push({ ...h, nodeId: id });
-      }
-    } catch {
-      // An overlay is decoration: a failure here must not hide the node's real result.
-    }
+    collectOverlay(def, id, node.label, result.ctx, result.outputs, overlays, handles);
   }
   for (const id of analysis.blocked) results.set(id, { diagnostics: [] });
 
@@ -187,6 +178,42 @@ function evaluateNode(
     }
   }
   return { outputs: outcome.outputs, readout, diagnostics, ctx, render: outcome.render };
+}
+
+/**
+ * Adds a node's overlay shapes and handles. A node that failed (e.g. three collinear points) still
+ * offers the handles that depend only on its inputs, so the user can drag it back into shape;
+ * shapes and handles that need the missing outputs throw and are skipped.
+ */
+function collectOverlay(
+  def: NodeDef,
+  id: string,
+  label: string | undefined,
+  ctx: EvalContext,
+  outputs: Readonly<Record<string, unknown>> | undefined,
+  overlays: OverlayItem[],
+  handles: HandleItem[],
+): void {
+  const attempt = (f: () => void) => {
+    try {
+      f();
+    } catch {
+      // An overlay is decoration: a failure here must not hide the node's real result.
+    }
+  };
+  if (outputs) {
+    attempt(() => {
+      for (const shape of def.overlay?.(ctx, outputs) ?? []) {
+        if (allFinite(shape))
+          overlays.push({ nodeId: id, color: def.color, shape, ...(label ? { label } : {}) });
+      }
+    });
+  }
+  attempt(() => {
+    for (const h of def.handles?.(ctx, outputs ?? {}) ?? []) {
+      if (Array.isArray(h.at) && allFinite(h.at)) handles.push({ ...h, nodeId: id });
+    }
+  });
 }
 
 /** Edges into a many-input, ordered by their source node's evaluation order ("graph order"). */

@@ -81,9 +81,14 @@ export interface StripData {
   readonly period: number;
 }
 
-/** Translation by period·n, folded in closed form: p ← p − ⌊h/D⌋·D·n. */
+/**
+ * Translation by `shift` (default period·n), folded in closed form: p ← p − ⌊h/D⌋·shift. An
+ * oblique shift (shift·n = period, not along n) lets two strips make any lattice: each strip's
+ * normal is perpendicular to the other's shift, so neither fold changes the other's h.
+ */
 export interface TranslationElement extends ElementBase, StripData {
   readonly kind: 'translation';
+  readonly shift?: Vec2;
 }
 
 /** The reflections in the parallel lines h = 0 and h = period, folded in closed form. */

@@ -5,6 +5,7 @@
  */
 import { type Diagnostic, diag } from '../core/diagnostics.ts';
 import { LIMITS } from '../core/scene.ts';
+import { describeValue } from './describe-value.ts';
 import { DOC_VERSION, docSchema, FORMAT, type GraphDoc } from './document.ts';
 import { formatPath } from './json-path.ts';
 import { DOC_MIGRATIONS, type DocMigration, migrateDocument } from './migrate.ts';
@@ -42,7 +43,7 @@ export function loadDocument(
   if (raw.format !== FORMAT) {
     return {
       ok: false,
-      diagnostics: [diag('wrongFormat', { path: 'format' }, JSON.stringify(raw.format) ?? 'missing')],
+      diagnostics: [diag('wrongFormat', { path: 'format' }, raw.format === undefined ? 'missing' : describeValue(raw.format))],
     };
   }
   if (Array.isArray(raw.nodes) && raw.nodes.length > LIMITS.maxNodes) {

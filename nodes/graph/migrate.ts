@@ -3,6 +3,7 @@
  * Each migration works on raw JSON (it runs before validation) and must not throw on odd input.
  */
 import type { NodeDef } from '../core/define-node.ts';
+import { describeValue } from './describe-value.ts';
 import { DOC_VERSION } from './document.ts';
 
 export type RawDoc = Record<string, unknown>;
@@ -23,7 +24,7 @@ export function migrateDocument(
   if (typeof from !== 'number' || !Number.isInteger(from) || from < 1) {
     return {
       ok: false,
-      message: `version: expected a positive integer, got ${JSON.stringify(from) ?? 'nothing'}`,
+      message: `version: expected a positive integer, got ${from === undefined ? 'nothing' : describeValue(from)}`,
     };
   }
   if (from > target) {

@@ -5,6 +5,7 @@
 import type { InputSpec, NodeDef, ParamSpec } from '../core/define-node.ts';
 import { type Diagnostic, diag } from '../core/diagnostics.ts';
 import { hexColor, PORT_VALUE_SCHEMA } from '../core/port-values.ts';
+import { describeValue } from './describe-value.ts';
 import { formatPath } from './json-path.ts';
 
 export interface ResolvedParams {
@@ -27,10 +28,7 @@ export function checkNumber(
   return null;
 }
 
-const describe = (v: unknown) => {
-  const s = JSON.stringify(v);
-  return s === undefined ? String(v) : s.length > 60 ? `${s.slice(0, 57)}...` : s;
-};
+const describe = (v: unknown) => describeValue(v);
 
 function parseInput(spec: InputSpec, raw: unknown): { value?: unknown; problem?: string } {
   const schema = PORT_VALUE_SCHEMA[spec.type];

@@ -10,6 +10,7 @@ import { intersectCirclesNode, intersectLineCircleNode, intersectLinesNode } fro
 import { inversionNode } from './inversion.ts';
 import { kMirrorNode } from './k-mirror.ts';
 import { kaleidoscopeNode } from './kaleidoscope.ts';
+import { latticeNode } from './lattice.ts';
 import { lineNode } from './line.ts';
 import { parallelLineNode, perpendicularBisectorNode, perpendicularLineNode } from './line-constructions.ts';
 import { loxodromicNode } from './loxodromic.ts';
@@ -51,6 +52,7 @@ export const NODE_TYPES = [
   loxodromicNode,
   mobiusMatrixNode,
   translationNode,
+  latticeNode,
   glideReflectionNode,
   rotationNode,
   spiralSimilarityNode,

@@ -5,7 +5,7 @@
  *   runIis — the loop of interpret.ts runIis (math.md, normative): at depth ≥ maxIter only ask
  *   whether some element holds p (→ not escaped); else step the first element that holds p and
  *   restart from the first; no element holds p → escaped. Every pass either returns or adds ≥ 1
- *   to depth, so `maxIter + 1` passes always suffice for the `for` bound.
+ *   to depth, so after at most maxIter passes depth ≥ maxIter.
  */
 import type { Scene, SceneElement } from '../../nodes/core/scene.ts';
 import { shadeGlsl } from './colour.glsl.ts';
@@ -40,20 +40,25 @@ export function elementFunctions(placed: readonly PlacedElement[], edges: boolea
   return placed.flatMap(({ twin }) => [twin.step, twin.inside, ...(edges ? [twin.boundaryDistance] : [])]);
 }
 
-/** `bool runIis(inout vec2 p, inout float s, inout int depth)`: true when p escaped. */
+/**
+ * `bool runIis(inout vec2 p, inout float s, inout int depth)`: true when p escaped. The loop only
+ * steps (each element's block: step it, and restart if it applied); once depth reaches maxIter
+ * the blocks after the loop only ask whether some element holds p.
+ */
 export function emitRunIis(out: SourceBuilder, placed: readonly PlacedElement[], maxIter: string): void {
   out.push(
     'bool runIis(inout vec2 p, inout float s, inout int depth) {',
-    `  for (int iteration = 0; iteration <= ${maxIter}; ++iteration) {`,
-    `    bool atLimit = depth >= ${maxIter};`,
+    `  for (int iteration = 0; iteration < ${maxIter}; ++iteration) {`,
+    `    if (depth >= ${maxIter}) break;`,
   );
   placed.forEach(({ twin, args }, i) => {
-    out.block(i + 1, [
-      `    if (atLimit) { if (${twin.inside.name}(p, ${args})) return false; }`,
-      `    else if (${twin.step.name}(p, s, depth, ${args})) continue;`,
-    ]);
+    out.block(i + 1, [`    if (${twin.step.name}(p, s, depth, ${args})) continue;`]);
   });
-  out.push('    return true;', '  }', '  return false;', '}');
+  out.push('    return true;', '  }', '  // depth ≥ maxIter: escaped only if no element holds p.');
+  placed.forEach(({ twin, args }, i) => {
+    out.block(i + 1, [`  if (${twin.inside.name}(p, ${args})) return false;`]);
+  });
+  out.push('  return true;', '}');
 }
 
 /** `float sceneBoundaryDistance(vec2 p)`: min over elements of boundaryDistance (raster.ts). */

@@ -4,32 +4,18 @@
  * and sample count, the graph embedded, two at a time on worker threads. Prints name and time;
  * exits 1 if any example fails (after rendering the rest).
  */
-import { readdirSync } from 'node:fs';
 import { mkdir } from 'node:fs/promises';
 import { availableParallelism } from 'node:os';
-import { basename, join, resolve } from 'node:path';
+import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { Worker } from 'node:worker_threads';
 import { LIMITS } from '../../nodes/core/scene.ts';
 import { parseArgs, parseSizeOption, stringOption } from './args.ts';
 import { CliError } from './command.ts';
+import { EXAMPLES_PNG_DIR, exampleNames, examplePath } from './examples.ts';
 import type { RenderJob, RenderJobResult } from './render-job.ts';
 
-const ROOT = resolve(fileURLToPath(new URL('../..', import.meta.url)));
-export const EXAMPLES_DIR = join(ROOT, 'examples');
-export const EXAMPLES_PNG_DIR = join(EXAMPLES_DIR, 'png');
-const SUFFIX = '.kleinflow.json';
 const DEFAULT_SIZE = { width: 800, height: 800 };
-
-/** Example names (file names without the suffix), sorted. */
-export function exampleNames(dir = EXAMPLES_DIR): string[] {
-  return readdirSync(dir)
-    .filter((f) => f.endsWith(SUFFIX))
-    .map((f) => basename(f, SUFFIX))
-    .sort();
-}
-
-export const examplePath = (name: string, dir = EXAMPLES_DIR): string => join(dir, `${name}${SUFFIX}`);
 
 /** Workers start without tsx: register it there first, then load the TypeScript job module. */
 const WORKER_BOOTSTRAP = `import(${JSON.stringify(import.meta.resolve('tsx/esm/api'))})

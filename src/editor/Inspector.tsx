@@ -8,7 +8,7 @@ import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
 import type { GraphNode } from '../../nodes/graph/document.ts';
 import type { NodeEvaluation } from '../../nodes/graph/evaluate.ts';
 import { useEditorActions } from './editor-context.ts';
-import { InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
+import { hasInlineEditor, InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
 
 interface Props {
   readonly node: GraphNode;
@@ -53,7 +53,7 @@ export function Inspector({ node, connected, evaluation, diagnostics, onLabel, o
         {def &&
           Object.entries(def.inputs).map(([port, spec]) => (
             <div key={port} className="kf-inspector__item">
-              {connected.has(port) || spec.default === undefined ? (
+              {connected.has(port) || !hasInlineEditor(spec, node.params[port]) ? (
                 <div className="kf-field">
                   <span className="kf-field__label">{spec.label ?? port}</span>
                   <span className="kf-inspector__wired">

@@ -10,7 +10,7 @@ import { canConnect, PORT_TYPE_INFO, type PortType } from '../../nodes/core/port
 import { inHandle, outHandle, portOfHandle } from './connection.ts';
 import { useEditorActions } from './editor-context.ts';
 import type { KfNode, KfNodeData } from './flow-model.ts';
-import { InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
+import { hasInlineEditor, InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
 
 /** "source:point:p1" while a wire is dragged from an output of type point on node p1. */
 function useWireInProgress(): { side: 'source' | 'target'; type: PortType; nodeId: string } | null {
@@ -113,9 +113,10 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
           Object.entries(def.inputs).map(([port, spec]) => {
             const isConnected = connected.has(port);
             const problems = portDiag(port);
-            const widget = isConnected ? null : (
-              <InputWidget name={port} spec={spec} value={node.params[port]} onEdit={editParam(id, port)} />
-            );
+            const widget =
+              !isConnected && hasInlineEditor(spec, node.params[port]) ? (
+                <InputWidget name={port} spec={spec} value={node.params[port]} onEdit={editParam(id, port)} />
+              ) : null;
             return (
               <div
                 key={`i-${port}`}

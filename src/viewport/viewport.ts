@@ -6,47 +6,15 @@
  * several times faster) takes over until the next edit. Compile errors keep the last good frame on
  * screen and are reported with node ids. A lost WebGL context is rebuilt when the browser restores it.
  */
-import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import type { Scene, View } from '../../nodes/core/scene.ts';
 import { sampleOffset } from '../../shader-gen/view.ts';
 import { createTarget, disposeTarget, type RenderTarget } from './render-target.ts';
 import { Renderer } from './renderer.ts';
 import { type SceneProgram, SceneProgramBuilder } from './scene-program.ts';
 import { renderTiled } from './tiled-render.ts';
+import type { RenderToPixelsOptions, ViewportOptions, ViewportStats } from './viewport-types.ts';
 
-export interface ViewportOptions {
-  /** The compiler's and the driver's diagnostics (KF403 with node ids), whenever they change; [] when clean. */
-  onDiagnostics?(d: Diagnostic[]): void;
-  /** After each drawn frame: samples on screen, the scene's target, CPU ms spent issuing the frame. */
-  onFrame?(info: { samples: number; target: number; ms: number }): void;
-  /** Stillness before the baked program is built (default 600; Infinity: never bake). */
-  idleBakeMs?: number;
-}
-
-export interface ViewportStats {
-  /** Uniform programs compiled (a value edit or a view change never adds one). */
-  readonly compiles: number;
-  /** Baked programs compiled (idle bake, export): extra, counted apart. */
-  readonly bakedCompiles: number;
-  /** Frames drawn (each one sample). */
-  readonly frames: number;
-  /** Samples accumulated in the picture now. */
-  readonly samples: number;
-  /** Whether the baked program draws now. */
-  readonly baked: boolean;
-}
-
-export interface RenderToPixelsOptions {
-  width: number;
-  height: number;
-  samples: number;
-  view?: View;
-  transparent?: boolean;
-  /** Fraction done in [0, 1]; return false to cancel. */
-  // biome-ignore lint/suspicious/noConfusingVoidType: the editor's API (a callback may return nothing)
-  onProgress?(f: number): boolean | void;
-  tile?: number;
-}
+export type { RenderToPixelsOptions, ViewportOptions, ViewportStats } from './viewport-types.ts';
 
 const CONTEXT_ATTRIBUTES: WebGLContextAttributes = {
   alpha: false,
@@ -70,6 +38,10 @@ export class Viewport {
   private samplesDone = 0;
   /** The next frame starts the accumulation afresh (until then the old picture stays). */
   private restartPending = true;
+  /** When the previous frame was drawn, or when the change that restarts the picture came. */
+  private frameClock = 0;
+  /** When the first of the scenes not yet taken by a frame was set. */
+  private sceneSetAt = 0;
   private framesDrawn = 0;
   private raf = 0;
   private wakeTimer: ReturnType<typeof setTimeout> | undefined;
@@ -133,6 +105,7 @@ export class Viewport {
    * a scene with the same structure and values as the current one changes nothing.
    */
   setScene(scene: Scene): void {
+    if (!this.sceneDirty) this.sceneSetAt = performance.now();
     this.scene = scene;
     this.sceneDirty = true;
     this.requestFrame();
@@ -215,6 +188,7 @@ export class Viewport {
   }
 
   private restart(): void {
+    if (!this.restartPending) this.frameClock = performance.now();
     this.restartPending = true;
     this.requestFrame();
   }
@@ -244,6 +218,7 @@ export class Viewport {
       if (change !== 'same' || !this.active) {
         // A scene that does not compile leaves active null: nothing is drawn, the last frame stays.
         this.active = this.programs.current();
+        if (!this.restartPending) this.frameClock = this.sceneSetAt;
         this.restartPending = true;
       }
     }
@@ -257,7 +232,6 @@ export class Viewport {
   }
 
   private drawFrame(renderer: Renderer, program: SceneProgram, scene: Scene, target: number): void {
-    const t0 = performance.now();
     // The drawing buffer can be smaller than canvas.width × height (browsers cap its size).
     const width = this.gl.drawingBufferWidth;
     const height = this.gl.drawingBufferHeight;
@@ -281,7 +255,9 @@ export class Viewport {
     this.samplesDone = k + 1;
     renderer.present(this.accum, this.samplesDone, width, height);
     this.framesDrawn++;
-    this.options.onFrame?.({ samples: this.samplesDone, target, ms: performance.now() - t0 });
+    const now = performance.now();
+    this.options.onFrame?.({ samples: this.samplesDone, target, ms: now - this.frameClock });
+    this.frameClock = now;
   }
 
   /** Keeps the loop running while there is work; sleeps (no frames at all) until the bake is due. */

@@ -13,7 +13,7 @@ import { registry } from '../../nodes/types/index.ts';
 import type { ElementKind, IisState } from '../../shader-gen/elements/element-kind.ts';
 import { type PreparedElements, prepare, runIis } from '../../shader-gen/interpret.ts';
 import { pixelToWorld } from '../../shader-gen/view.ts';
-import { exampleNames, examplePath } from '../../src/cli/render-examples.ts';
+import { exampleNames, examplePath } from '../../src/cli/examples.ts';
 
 const GRID = 512;
 const COUNT_GRID = 128;

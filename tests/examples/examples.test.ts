@@ -8,7 +8,7 @@ import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { rasterize } from '../../shader-gen/raster.ts';
-import { exampleNames, examplePath } from '../../src/cli/render-examples.ts';
+import { exampleNames, examplePath } from '../../src/cli/examples.ts';
 
 const names = exampleNames();
 

@@ -28,14 +28,28 @@ const SIZE = 256;
 const MIN_AGREEMENT = 0.995;
 
 let gpu: GpuProbe;
-const report: Record<string, Record<string, string | number>> = {};
+type Row = Record<string, string | number>;
+/** The console tables printed at the end: one row per example or scene, filled by several tests. */
+const TABLES = {
+  examples: {} as Record<string, Row>,
+  'hand-made scenes': {} as Record<string, Row>,
+  'hand-written and Shadertoy shaders': {} as Record<string, Row>,
+};
+type TableName = keyof typeof TABLES;
+const row = (table: TableName, name: string, fields: Row) => {
+  TABLES[table][name] = { ...TABLES[table][name], ...fields };
+};
 
 beforeAll(async () => {
   gpu = await GpuProbe.open(SIZE, SIZE);
 });
 
 afterAll(async () => {
-  if (Object.keys(report).length > 0) console.table(report);
+  for (const [title, rows] of Object.entries(TABLES)) {
+    if (Object.keys(rows).length === 0) continue;
+    console.log(`\nGPU vs CPU parity, ${title} (${SIZE}², SwiftShader):`);
+    console.table(rows);
+  }
   await gpu?.close();
 });
 
@@ -47,9 +61,8 @@ async function renderProbe(scene: Scene, baked = false): Promise<ProbeImage> {
 
 const percent = (x: number) => `${(100 * x).toFixed(3)} %`;
 
-function record(name: string, stats: ParityStats, image: ProbeImage) {
-  report[name] = {
-    ...report[name],
+function record(table: TableName, name: string, stats: ParityStats, image: ProbeImage) {
+  row(table, name, {
     agreement: percent(stats.agreement),
     'raw (all px)': percent(stats.rawAgreement),
     compared: stats.compared,
@@ -58,7 +71,7 @@ function record(name: string, stats: ParityStats, image: ProbeImage) {
     'escaped ≠': stats.escapedMismatch,
     'final ≠': stats.finalMismatch,
     'GPU ms': Math.round(image.ms),
-  };
+  });
 }
 
 describe('GPU probe program = CPU interpreter (256², pixel centres)', () => {
@@ -70,7 +83,7 @@ describe('GPU probe program = CPU interpreter (256², pixel centres)', () => {
       const { scene } = loadExample(name);
       const image = await renderProbe(scene);
       const stats = compareWithCpu(scene, image);
-      record(name, stats, image);
+      record('examples', name, stats, image);
       expect(stats.compared).toBeGreaterThan(0.9 * stats.pixels);
       expect(stats.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
     });
@@ -85,7 +98,7 @@ describe('GPU = CPU for hand-made scenes (every element kind, every colouring)',
     it(`${name}: ≥ ${100 * MIN_AGREEMENT} % of pixels agree (probe and colour)`, async () => {
       const image = await renderProbe(scene);
       const stats = compareWithCpu(scene, image);
-      record(`scene ${name}`, stats, image);
+      record('hand-made scenes', name, stats, image);
       const program = compile(scene);
       const colour = compareColourWithCpu(
         scene,
@@ -95,7 +108,10 @@ describe('GPU = CPU for hand-made scenes (every element kind, every colouring)',
           scene.view,
         ),
       );
-      Object.assign(report[`scene ${name}`], { colour: percent(colour.agreement) });
+      row('hand-made scenes', name, {
+        colour: percent(colour.agreement),
+        'colour worst (levels)': colour.worstLevels,
+      });
       expect(stats.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
       expect(colour.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
     });
@@ -110,11 +126,7 @@ describe('GPU colour program = CPU colouring (one sample per pixel centre, 8-bit
       const index = await gpu.program(program.vertexSource, program.source);
       const image = await gpu.render(index, program.uniforms, scene.view);
       const stats = compareColourWithCpu(scene, image);
-      report[name] = {
-        ...report[name],
-        colour: percent(stats.agreement),
-        'colour worst (levels)': stats.worstLevels,
-      };
+      row('examples', name, { colour: percent(stats.agreement), 'colour worst (levels)': stats.worstLevels });
       expect(stats.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
     });
   }
@@ -175,12 +187,12 @@ describe('hand-written bench shaders draw the same picture as the generated ones
       const hand = await gpu.render(index, [], scene.view);
       const same = compareImages(generated, hand);
       const vsCpu = compareWithCpu(scene, hand);
-      report[`hand-written ${shader.example}`] = {
+      row('hand-written and Shadertoy shaders', `hand-written ${shader.example}`, {
         'same as generated': percent(same.agreement),
-        agreement: percent(vsCpu.agreement),
+        'vs CPU': percent(vsCpu.agreement),
         'GPU ms': Math.round(hand.ms),
         'generated GPU ms': Math.round(generated.ms),
-      };
+      });
       expect(same.agreement).toBeGreaterThanOrEqual(0.999);
       expect(vsCpu.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
     });

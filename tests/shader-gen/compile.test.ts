@@ -99,7 +99,7 @@ describe('uniforms', () => {
       expect(p.uniforms).toEqual([]);
       const declared = [...p.source.matchAll(/^uniform \w+ (\w+)/gm)].map((m) => m[1]);
       expect(declared).toEqual(FRAME_UNIFORMS.map((u) => u.name));
-      expect(p.source).toContain(`<= ${scene.maxIterations}; ++iteration`);
+      expect(p.source).toContain(`iteration < ${scene.maxIterations}; ++iteration`);
     });
   }
 
@@ -175,9 +175,12 @@ describe('determinism and #line markers', () => {
     const lines = p.source.split('\n');
     scene.elements.forEach((e, i) => {
       expect(p.lineMap[i + 1]).toBe(e.nodeId);
-      const at = lines.indexOf(`#line 1 ${i + 1}`);
-      expect(at).toBeGreaterThan(0);
-      expect(lines[at + 2]).toContain(`${glslTwin(e).step.name}(p, s, depth,`);
+      // Each element has its blocks in the loop (step), after it (inside) and in the edge distance.
+      const blocks = lines.flatMap((l, k) => (l === `#line 1 ${i + 1}` ? [lines[k + 1]] : []));
+      expect(blocks).toHaveLength(3);
+      expect(blocks[0]).toContain(`if (${glslTwin(e).step.name}(p, s, depth,`);
+      expect(blocks[1]).toContain(`if (${glslTwin(e).inside.name}(p,`);
+      expect(blocks[2]).toContain(`${glslTwin(e).boundaryDistance.name}(p,`);
     });
     expect(Object.keys(p.lineMap)).toHaveLength(scene.elements.length);
   });

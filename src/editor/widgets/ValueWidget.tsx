@@ -23,6 +23,25 @@ function PointField({ label, value, onEdit, title }: { label: string; value: Vec
   );
 }
 
+/** Whether an unconnected input gets an inline editor (types with a value and a usable default). */
+export function hasInlineEditor(spec: InputSpec, value: unknown): boolean {
+  const v = value === undefined ? spec.default : value;
+  switch (spec.type) {
+    case 'number':
+      return typeof v === 'number';
+    case 'point':
+      return isVec2(v);
+    case 'color':
+      return typeof v === 'string';
+    case 'line':
+      return isVec2((v as Line | undefined)?.a) && isVec2((v as Line | undefined)?.b);
+    case 'circle':
+      return isVec2((v as Circle | undefined)?.c) && typeof (v as Circle).r === 'number';
+    default:
+      return false;
+  }
+}
+
 interface InputProps {
   readonly name: string;
   readonly spec: InputSpec;

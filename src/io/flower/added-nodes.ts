@@ -3,10 +3,10 @@
  * values, the tile that colours like Flower, and the render node with every mirror wired in
  * Flower's order (circles first: Flower tests them before the lines).
  */
-import { type Diagnostic, diag } from '../../../nodes/core/diagnostics.ts';
+import type { Diagnostic } from '../../../nodes/core/diagnostics.ts';
 import { toHex } from '../../../nodes/core/port-values.ts';
 import type { GraphEdge, GraphNode } from '../../../nodes/graph/document.ts';
-import type { FlowerGraph, FlowerNode } from './format.ts';
+import { type FlowerGraph, type FlowerNode, note } from './format.ts';
 import type { MappedNode } from './node-types.ts';
 import { FLOWER_PALETTE_STEP, readFlowerPalette } from './palette.ts';
 
@@ -15,13 +15,12 @@ export const FLOWER_RENDER = { hueStart: 0.01, hueStep: 0.05, maxIterations: 50,
 /** Flower's node-graph pixels → Kleinflow editor units (Kleinflow's nodes are larger). */
 export const GRAPH_SPREAD = 1.5;
 
-const note = (path: string, text: string): Diagnostic => diag('importNote', { path }, text);
-
 /** Flower tests every circle mirror first, then reflects in the line mirrors, each in file order. */
 export function mirrorOrder(graph: FlowerGraph, mapped: ReadonlyMap<string, MappedNode>): FlowerNode[] {
   const of = (kind: 'circle' | 'line') => graph.nodes.filter((n) => mapped.get(n.id)?.mirror === kind);
   return [...of('circle'), ...of('line')];
 }
+
 /** One Time node drives every animated node (Flower's SinWave, CircularMotion) through its `t`. */
 export function addTime(
   graph: FlowerGraph,

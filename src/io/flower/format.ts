@@ -58,7 +58,8 @@ export function isFlowerDocument(json: unknown): boolean {
   );
 }
 
-const note = (path: string, text: string): Diagnostic => diag('importNote', { path }, text);
+/** A KF502 import note at a path of the Flower file. */
+export const note = (path: string, text: string): Diagnostic => diag('importNote', { path }, text);
 const num = (v: unknown, fallback: number) => (typeof v === 'number' && Number.isFinite(v) ? v : fallback);
 
 function readSockets(raw: unknown[], path: string, notes: Diagnostic[]): FlowerSocket[] {

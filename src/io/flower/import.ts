@@ -19,7 +19,7 @@ import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
 import { loadDocument } from '../../../nodes/graph/load.ts';
 import { registry as defaultRegistry } from '../../../nodes/types/index.ts';
 import { addOutput, addTime, GRAPH_SPREAD, mirrorOrder } from './added-nodes.ts';
-import { type FlowerGraph, isFlowerDocument, readFlowerGraph } from './format.ts';
+import { type FlowerGraph, isFlowerDocument, note, readFlowerGraph } from './format.ts';
 import { FLOWER_NODE_TYPES, type MappedNode } from './node-types.ts';
 import { flowerView } from './view.ts';
 
@@ -30,8 +30,6 @@ export { isFlowerDocument } from './format.ts';
 export type FlowerImportResult =
   | { ok: true; doc: GraphDoc; notes: Diagnostic[] }
   | { ok: false; diagnostics: Diagnostic[] };
-
-const note = (path: string, text: string): Diagnostic => diag('importNote', { path }, text);
 
 export function importFlower(json: unknown, registry: NodeRegistry = defaultRegistry): FlowerImportResult {
   if (!isFlowerDocument(json)) {

@@ -100,18 +100,22 @@ vec2 pixelToWorld(vec3 view, vec2 size, vec2 px, vec2 o) {
 }
 
 bool runIis(inout vec2 p, inout float s, inout int depth) {
-  for (int iteration = 0; iteration <= 60; ++iteration) {
-    bool atLimit = depth >= 60;
+  for (int iteration = 0; iteration < 60; ++iteration) {
+    if (depth >= 60) break;
 #line 1 1
-    if (atLimit) { if (mobiusInside(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0))) return false; }
-    else if (mobiusStep(p, s, depth, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0))) continue;
+    if (mobiusStep(p, s, depth, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0))) continue;
 #line 1 2
-    if (atLimit) { if (inversionInside(p, vec4(0.0, 1.6, 0.5, 0.0))) return false; }
-    else if (inversionStep(p, s, depth, vec4(0.0, 1.6, 0.5, 0.0))) continue;
-#line 112 0
+    if (inversionStep(p, s, depth, vec4(0.0, 1.6, 0.5, 0.0))) continue;
+#line 110 0
     return true;
   }
-  return false;
+  // depth ≥ maxIter: escaped only if no element holds p.
+#line 1 1
+  if (mobiusInside(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0))) return false;
+#line 1 2
+  if (inversionInside(p, vec4(0.0, 1.6, 0.5, 0.0))) return false;
+#line 118 0
+  return true;
 }
 
 float sceneBoundaryDistance(vec2 p) {
@@ -120,7 +124,7 @@ float sceneBoundaryDistance(vec2 p) {
   d = min(d, mobiusBoundaryDistance(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0)));
 #line 1 2
   d = min(d, inversionBoundaryDistance(p, vec4(0.0, 1.6, 0.5, 0.0)));
-#line 124 0
+#line 128 0
   return d;
 }
 

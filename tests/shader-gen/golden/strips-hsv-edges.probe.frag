@@ -44,7 +44,7 @@ bool parallelMirrorsInside(vec2 p, vec4 d0, vec4 d1) {
 bool translationStep(inout vec2 p, inout float s, inout int depth, vec4 d0, vec4 d1) {
   float k = stripIndex(d0, d1, p);
   if (k == 0.0) return false;
-  p = vec2(p.x - k * d1.x * d0.z, p.y - k * d1.x * d0.w);
+  p = vec2(p.x - k * d1.y, p.y - k * d1.z);
   depth += foldCount(k);
   return true;
 }
@@ -59,18 +59,22 @@ vec2 pixelToWorld(vec3 view, vec2 size, vec2 px, vec2 o) {
 }
 
 bool runIis(inout vec2 p, inout float s, inout int depth) {
-  for (int iteration = 0; iteration <= u_maxIterations; ++iteration) {
-    bool atLimit = depth >= u_maxIterations;
+  for (int iteration = 0; iteration < u_maxIterations; ++iteration) {
+    if (depth >= u_maxIterations) break;
 #line 1 1
-    if (atLimit) { if (parallelMirrorsInside(p, u_el[0], u_el[1])) return false; }
-    else if (parallelMirrorsStep(p, s, depth, u_el[0], u_el[1])) continue;
+    if (parallelMirrorsStep(p, s, depth, u_el[0], u_el[1])) continue;
 #line 1 2
-    if (atLimit) { if (translationInside(p, u_el[2], u_el[3])) return false; }
-    else if (translationStep(p, s, depth, u_el[2], u_el[3])) continue;
-#line 71 0
+    if (translationStep(p, s, depth, u_el[2], u_el[3])) continue;
+#line 69 0
     return true;
   }
-  return false;
+  // depth ≥ maxIter: escaped only if no element holds p.
+#line 1 1
+  if (parallelMirrorsInside(p, u_el[0], u_el[1])) return false;
+#line 1 2
+  if (translationInside(p, u_el[2], u_el[3])) return false;
+#line 77 0
+  return true;
 }
 
 void main() {

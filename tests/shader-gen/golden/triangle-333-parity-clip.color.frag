@@ -59,21 +59,26 @@ vec2 pixelToWorld(vec3 view, vec2 size, vec2 px, vec2 o) {
 }
 
 bool runIis(inout vec2 p, inout float s, inout int depth) {
-  for (int iteration = 0; iteration <= u_maxIterations; ++iteration) {
-    bool atLimit = depth >= u_maxIterations;
+  for (int iteration = 0; iteration < u_maxIterations; ++iteration) {
+    if (depth >= u_maxIterations) break;
 #line 1 1
-    if (atLimit) { if (reflectionInside(p, u_el[0])) return false; }
-    else if (reflectionStep(p, s, depth, u_el[0])) continue;
+    if (reflectionStep(p, s, depth, u_el[0])) continue;
 #line 1 2
-    if (atLimit) { if (reflectionInside(p, u_el[1])) return false; }
-    else if (reflectionStep(p, s, depth, u_el[1])) continue;
+    if (reflectionStep(p, s, depth, u_el[1])) continue;
 #line 1 3
-    if (atLimit) { if (reflectionInside(p, u_el[2])) return false; }
-    else if (reflectionStep(p, s, depth, u_el[2])) continue;
-#line 74 0
+    if (reflectionStep(p, s, depth, u_el[2])) continue;
+#line 71 0
     return true;
   }
-  return false;
+  // depth ≥ maxIter: escaped only if no element holds p.
+#line 1 1
+  if (reflectionInside(p, u_el[0])) return false;
+#line 1 2
+  if (reflectionInside(p, u_el[1])) return false;
+#line 1 3
+  if (reflectionInside(p, u_el[2])) return false;
+#line 81 0
+  return true;
 }
 
 vec4 shadeSample(vec2 w, float pixelWorld, float bgAlpha) {

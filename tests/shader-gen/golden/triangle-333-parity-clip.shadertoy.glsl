@@ -54,17 +54,18 @@ vec3 toSrgb(vec3 c) {
 }
 
 bool runIis(inout vec2 p, inout float s, inout int depth) {
-  for (int iteration = 0; iteration <= 100; ++iteration) {
-    bool atLimit = depth >= 100;
-    if (atLimit) { if (reflectionInside(p, vec4(0.0, 0.0, 0.0, 1.0))) return false; }
-    else if (reflectionStep(p, s, depth, vec4(0.0, 0.0, 0.0, 1.0))) continue;
-    if (atLimit) { if (reflectionInside(p, vec4(0.0, 0.0, 0.8660254037844386, -0.5000000000000001))) return false; }
-    else if (reflectionStep(p, s, depth, vec4(0.0, 0.0, 0.8660254037844386, -0.5000000000000001))) continue;
-    if (atLimit) { if (reflectionInside(p, vec4(1.0, 0.0, -0.8660254037844386, -0.5000000000000001))) return false; }
-    else if (reflectionStep(p, s, depth, vec4(1.0, 0.0, -0.8660254037844386, -0.5000000000000001))) continue;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    if (depth >= 100) break;
+    if (reflectionStep(p, s, depth, vec4(0.0, 0.0, 0.0, 1.0))) continue;
+    if (reflectionStep(p, s, depth, vec4(0.0, 0.0, 0.8660254037844386, -0.5000000000000001))) continue;
+    if (reflectionStep(p, s, depth, vec4(1.0, 0.0, -0.8660254037844386, -0.5000000000000001))) continue;
     return true;
   }
-  return false;
+  // depth ≥ maxIter: escaped only if no element holds p.
+  if (reflectionInside(p, vec4(0.0, 0.0, 0.0, 1.0))) return false;
+  if (reflectionInside(p, vec4(0.0, 0.0, 0.8660254037844386, -0.5000000000000001))) return false;
+  if (reflectionInside(p, vec4(1.0, 0.0, -0.8660254037844386, -0.5000000000000001))) return false;
+  return true;
 }
 
 vec4 shadeSample(vec2 w, float pixelWorld, float bgAlpha) {

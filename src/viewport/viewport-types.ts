@@ -1,0 +1,40 @@
+/** The Viewport's public option and result types (viewport.ts), the contract the editor uses. */
+import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import type { View } from '../../nodes/core/scene.ts';
+
+export interface ViewportOptions {
+  /** The compiler's and the driver's diagnostics (KF403 with node ids), whenever they change; [] when clean. */
+  onDiagnostics?(d: Diagnostic[]): void;
+  /**
+   * After each drawn frame: samples on screen, the scene's target, and ms since the previous frame
+   * (for the first sample: since the edit), which includes waiting for the GPU.
+   */
+  onFrame?(info: { samples: number; target: number; ms: number }): void;
+  /** Stillness before the baked program is built (default 600; Infinity: never bake). */
+  idleBakeMs?: number;
+}
+
+export interface ViewportStats {
+  /** Uniform programs compiled (a value edit or a view change never adds one). */
+  readonly compiles: number;
+  /** Baked programs compiled (idle bake, export): extra, counted apart. */
+  readonly bakedCompiles: number;
+  /** Frames drawn (each one sample). */
+  readonly frames: number;
+  /** Samples accumulated in the picture now. */
+  readonly samples: number;
+  /** Whether the baked program draws now. */
+  readonly baked: boolean;
+}
+
+export interface RenderToPixelsOptions {
+  width: number;
+  height: number;
+  samples: number;
+  view?: View;
+  transparent?: boolean;
+  /** Fraction done in [0, 1]; return false to cancel. */
+  // biome-ignore lint/suspicious/noConfusingVoidType: the editor's API (a callback may return nothing)
+  onProgress?(f: number): boolean | void;
+  tile?: number;
+}

@@ -70,10 +70,11 @@ export async function waitRendered(page: Page, timeout = 60_000) {
 
 export interface PixelStats {
   readonly mean: number;
+  /** Standard deviation of each colour channel over the picture, averaged over R, G, B. */
   readonly sd: number;
   /** Distinct colours after quantising each channel to 4 bits. */
   readonly colours: number;
-  /** 32×32 luminance thumbnail, for comparing two renders. */
+  /** 32×32 RGB thumbnail, for comparing two renders. */
   readonly thumb: number[];
 }
 
@@ -93,19 +94,21 @@ export async function renderPixels(page: Page): Promise<PixelStats> {
     const g = c.getContext('2d')!;
     g.drawImage(img, 0, 0, 32, 32);
     const d = g.getImageData(0, 0, 32, 32).data;
-    let s = 0;
-    let s2 = 0;
+    const s = [0, 0, 0];
+    const s2 = [0, 0, 0];
     const set = new Set<number>();
     const thumb: number[] = [];
     for (let i = 0; i < d.length; i += 4) {
-      const l = (d[i] + d[i + 1] + d[i + 2]) / 3;
-      thumb.push(l);
-      s += l;
-      s2 += l * l;
+      for (let k = 0; k < 3; k++) {
+        thumb.push(d[i + k]);
+        s[k] += d[i + k];
+        s2[k] += d[i + k] ** 2;
+      }
       set.add(((d[i] >> 4) << 8) | ((d[i + 1] >> 4) << 4) | (d[i + 2] >> 4));
     }
     const n = d.length / 4;
-    return { mean: s / n, sd: Math.sqrt(Math.max(0, s2 / n - (s / n) ** 2)), colours: set.size, thumb };
+    const sd = [0, 1, 2].map((k) => Math.sqrt(Math.max(0, s2[k] / n - (s[k] / n) ** 2)));
+    return { mean: (s[0] + s[1] + s[2]) / (3 * n), sd: (sd[0] + sd[1] + sd[2]) / 3, colours: set.size, thumb };
   }, png.toString('base64'));
 }
 

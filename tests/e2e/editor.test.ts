@@ -187,8 +187,8 @@ describe('editor', () => {
     const tiling = await renderPixels(page);
     mkdirSync(join(root, 'test-artifacts'), { recursive: true });
     await page.screenshot({ path: join(root, 'test-artifacts', 'editor-333.png') });
-    expect(tiling.sd).toBeGreaterThan(15);
-    expect(tiling.colours).toBeGreaterThan(6);
+    expect(tiling.sd).toBeGreaterThan(30);
+    expect(tiling.colours).toBeGreaterThan(20);
 
     // Move a corner by typing into its inline field: the picture changes; undo restores both.
     await setField(page, points[0], 'x', '-1.6');

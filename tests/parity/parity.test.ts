@@ -255,10 +255,10 @@ describe('the Shadertoy version draws what the CPU renders (samples, jitter, sRG
           if (worst <= COLOUR_LEVELS) agree++;
         }
       }
-      report[`shadertoy ${name}`] = {
-        agreement: percent(agree / (SIZE * SIZE)),
+      row('hand-written and Shadertoy shaders', `shadertoy ${name}`, {
+        'vs CPU': percent(agree / (SIZE * SIZE)),
         'GPU ms': Math.round(image.ms),
-      };
+      });
       expect(agree / (SIZE * SIZE)).toBeGreaterThanOrEqual(0.99);
     });
   }

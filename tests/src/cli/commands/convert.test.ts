@@ -14,8 +14,16 @@ function memoryIo(files: Record<string, Uint8Array | string>) {
     Object.entries(files).map(([k, v]) => [k, typeof v === 'string' ? new TextEncoder().encode(v) : v]),
   );
   const io: CliIo = {
-    stdout: { write: (t) => void (out.stdout += t) },
-    stderr: { write: (t) => void (out.stderr += t) },
+    stdout: {
+      write: (t) => {
+        out.stdout += t;
+      },
+    },
+    stderr: {
+      write: (t) => {
+        out.stderr += t;
+      },
+    },
     readFile: async (path) => {
       const data = table.get(path);
       if (!data) throw Object.assign(new Error('missing'), { code: 'ENOENT' });

@@ -1,0 +1,124 @@
+/**
+ * Graph scale: generated graphs of 100, 1,000 and 5,000 nodes with a realistic mix (points →
+ * lines and circles → reflections and inversions → one render node, plus chains of number nodes
+ * driving the radii). Prints the median of RUNS timings for load (parse + validate), evaluation
+ * and compiling the resulting scene. The target for evaluating 1,000 nodes is 5 ms; like every
+ * bench it reports and never fails.
+ */
+import { LIMITS } from '../../nodes/core/scene.ts';
+import type { GraphDoc, GraphEdge, GraphNode } from '../../nodes/graph/document.ts';
+import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
+import { parseDocumentText } from '../../nodes/graph/load.ts';
+import { registry } from '../../nodes/types/index.ts';
+import { compile } from '../../shader-gen/compile.ts';
+
+const RUNS = 9;
+const SIZES = [100, 1_000, 5_000] as const;
+/** Evaluating this many nodes should take under TARGET_MS. */
+const TARGET = { nodes: 1_000, ms: 5 } as const;
+
+/** Nodes per generated block (see scaleGraph). */
+const BLOCK = 10;
+
+/**
+ * About `nodes` nodes in blocks of ten: points P, Q, R; line PQ → reflection; numbers n1 → n2 →
+ * n3 (a chain, n3 the radius) and circle (R, n3) → inversion; both elements into the render node.
+ * Blocks sit on a spiral so no two mirrors coincide.
+ */
+export function scaleGraph(nodes: number): GraphDoc {
+  const out: GraphNode[] = [];
+  const edges: GraphEdge[] = [];
+  const add = (id: string, type: string, params: Record<string, unknown> = {}) =>
+    out.push({ id, type, position: [0, 0], params });
+  const wire = (from: string, to: string) => {
+    const [fn, fp] = from.split('.');
+    const [tn, tp] = to.split('.');
+    edges.push({ id: `e${edges.length}`, from: { node: fn, port: fp }, to: { node: tn, port: tp } });
+  };
+  const blocks = Math.max(1, Math.floor((nodes - 1) / BLOCK));
+  for (let b = 0; b < blocks; b++) {
+    const t = b * 0.7;
+    const [x, y] = [Math.cos(t) * (1 + b * 0.01), Math.sin(t) * (1 + b * 0.01)];
+    add(`p${b}`, 'point', { x, y });
+    add(`q${b}`, 'point', { x: x + 0.3, y: y + 0.1 });
+    add(`r${b}`, 'point', { x: x * 3, y: y * 3 });
+    add(`l${b}`, 'line');
+    wire(`p${b}.point`, `l${b}.a`);
+    wire(`q${b}.point`, `l${b}.b`);
+    add(`m${b}`, 'reflection');
+    wire(`l${b}.line`, `m${b}.line`);
+    add(`n${b}a`, 'number', { value: 0.05 });
+    add(`n${b}b`, 'number');
+    add(`n${b}c`, 'number');
+    wire(`n${b}a.value`, `n${b}b.value`);
+    wire(`n${b}b.value`, `n${b}c.value`);
+    add(`c${b}`, 'circle');
+    wire(`r${b}.point`, `c${b}.center`);
+    wire(`n${b}c.value`, `c${b}.radius`);
+    add(`i${b}`, 'inversion');
+    wire(`c${b}.circle`, `i${b}.circle`);
+    wire(`m${b}.element`, 'out.elements');
+    wire(`i${b}.element`, 'out.elements');
+  }
+  add('out', 'render', { maxIterations: 50 });
+  return { format: 'kleinflow', version: 1, meta: { title: `scale ${nodes}` }, nodes: out, edges, view: { center: [0, 0], scale: 8 } };
+}
+
+const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
+
+function time(fn: () => void): number {
+  const samples: number[] = [];
+  fn(); // warm-up (JIT)
+  for (let i = 0; i < RUNS; i++) {
+    const t0 = performance.now();
+    fn();
+    samples.push(performance.now() - t0);
+  }
+  return median(samples);
+}
+
+export interface ScaleRow {
+  readonly nodes: number;
+  readonly edges: number;
+  readonly elements: number;
+  readonly loadMs: number;
+  readonly evaluateMs: number;
+  readonly compileMs: number;
+}
+
+export function measure(nodes: number): ScaleRow {
+  const doc = scaleGraph(nodes);
+  const text = JSON.stringify(doc);
+  const loaded = parseDocumentText(text);
+  if (!loaded.ok) throw new Error(`generated graph does not load: ${loaded.diagnostics[0].message}`);
+  const first = evaluateGraph(loaded.doc, registry);
+  const errors = first.diagnostics.filter((d) => d.severity === 'error');
+  if (errors.length > 0) throw new Error(`generated graph has errors: ${errors[0].message}`);
+  const scene = first.scene;
+  return {
+    nodes: loaded.doc.nodes.length,
+    edges: loaded.doc.edges.length,
+    elements: scene.elements.length,
+    loadMs: time(() => parseDocumentText(text)),
+    evaluateMs: time(() => evaluateGraph(loaded.doc, registry)),
+    compileMs: time(() => compile(scene)),
+  };
+}
+
+export async function run(): Promise<void> {
+  console.log(`\nGraph scale (median of ${RUNS} runs; scene capped at ${LIMITS.maxElements} elements)`);
+  console.log('nodes  edges  elements  load ms  evaluate ms  compile ms');
+  for (const n of SIZES) {
+    const r = measure(n);
+    const cols = [r.nodes, r.edges, r.elements].map((v, i) => String(v).padStart([5, 6, 9][i]));
+    const ms = [r.loadMs, r.evaluateMs, r.compileMs].map((v, i) => v.toFixed(2).padStart([8, 12, 11][i]));
+    console.log(`${cols.join(' ')} ${ms.join(' ')}`);
+    if (n === TARGET.nodes) {
+      const verdict = r.evaluateMs < TARGET.ms ? 'within' : 'OVER';
+      console.log(`       (evaluating ${n} nodes: ${verdict} the ${TARGET.ms} ms target)`);
+    }
+  }
+}
+
+// Run directly: `npx tsx tests/bench/scale.ts`.
+if (import.meta.url === `file://${process.argv[1]}`) void run();

@@ -35,7 +35,12 @@ function start(): { doc: GraphDoc; messages: Message[] } {
         kind: 'error',
         text: `Your last session could not be restored (it is kept under “${AUTOSAVE_BACKUP_KEY}” in this browser). Download it to repair it by hand:`,
         details: problems.map((d) => `${d.code} ${d.message}`),
-        actions: [{ label: 'Download it', run: () => download('kleinflow-unreadable-autosave.json', text, 'application/json') }],
+        actions: [
+          {
+            label: 'Download it',
+            run: () => download('kleinflow-unreadable-autosave.json', text, 'application/json'),
+          },
+        ],
       },
     ],
   };

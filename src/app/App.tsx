@@ -79,7 +79,12 @@ export function App({ initialMessages }: Props) {
 
   const runExport = async (width: number, height: number) => {
     const v = viewport.current;
-    if (!v) return say({ id: 'export', kind: 'error', text: 'Export needs the WebGL2 renderer, which is not running.' });
+    if (!v)
+      return say({
+        id: 'export',
+        kind: 'error',
+        text: 'Export needs the WebGL2 renderer, which is not running.',
+      });
     say({ id: 'export', kind: 'info', text: `Rendering ${width}×${height}…` });
     try {
       const current = store.getState().doc;
@@ -95,7 +100,11 @@ export function App({ initialMessages }: Props) {
     { label: 'PNG 1920 × 1080', hint: 'graph embedded', onSelect: () => void runExport(1920, 1080) },
     { label: 'PNG 3840 × 2160', hint: '4K', onSelect: () => void runExport(3840, 2160) },
     { label: 'PNG 2048 × 2048', hint: 'square', onSelect: () => void runExport(2048, 2048) },
-    { label: 'GLSL fragment shader', hint: 'WebGL2, values baked', onSelect: () => exportGlsl(doc, evaluation.scene, 'webgl2') },
+    {
+      label: 'GLSL fragment shader',
+      hint: 'WebGL2, values baked',
+      onSelect: () => exportGlsl(doc, evaluation.scene, 'webgl2'),
+    },
     { label: 'GLSL for Shadertoy', onSelect: () => exportGlsl(doc, evaluation.scene, 'shadertoy') },
   ];
 
@@ -119,7 +128,10 @@ export function App({ initialMessages }: Props) {
   const onViewport = useCallback((v: Viewport | null) => {
     viewport.current = v;
   }, []);
-  const allDiagnostics = useMemo(() => [...evaluation.diagnostics, ...renderDiagnostics], [evaluation, renderDiagnostics]);
+  const allDiagnostics = useMemo(
+    () => [...evaluation.diagnostics, ...renderDiagnostics],
+    [evaluation, renderDiagnostics],
+  );
 
   return (
     <div className="kf-app">
@@ -130,7 +142,9 @@ export function App({ initialMessages }: Props) {
         redoLabel={history.future[0]?.label ?? null}
         playing={playing}
         exportItems={exportItems}
-        onTitle={(title) => store.dispatch({ type: 'set-meta', meta: { ...doc.meta, title } }, 'rename document')}
+        onTitle={(title) =>
+          store.dispatch({ type: 'set-meta', meta: { ...doc.meta, title } }, 'rename document')
+        }
         onExample={(ex) => load(ex.doc, `open ${ex.title}`)}
         onNew={() => load(emptyDocument(), 'new document')}
         onOpen={open}

@@ -7,12 +7,22 @@ export interface Message {
   readonly actions?: readonly { label: string; run(): void }[];
 }
 
-export function Banner({ messages, onDismiss }: { messages: readonly Message[]; onDismiss(id: string): void }) {
+export function Banner({
+  messages,
+  onDismiss,
+}: {
+  messages: readonly Message[];
+  onDismiss(id: string): void;
+}) {
   // Always rendered (possibly empty) so the app's grid rows stay in place.
   return (
     <div className="kf-banners">
       {messages.map((m) => (
-        <div key={m.id} className={`kf-banner kf-banner--${m.kind}`} role={m.kind === 'error' ? 'alert' : 'status'}>
+        <div
+          key={m.id}
+          className={`kf-banner kf-banner--${m.kind}`}
+          role={m.kind === 'error' ? 'alert' : 'status'}
+        >
           <div className="kf-banner__text">
             {m.text}
             {m.details && m.details.length > 0 && (
@@ -28,7 +38,12 @@ export function Banner({ messages, onDismiss }: { messages: readonly Message[]; 
               {a.label}
             </button>
           ))}
-          <button type="button" className="kf-icon-button" aria-label="Dismiss" onClick={() => onDismiss(m.id)}>
+          <button
+            type="button"
+            className="kf-icon-button"
+            aria-label="Dismiss"
+            onClick={() => onDismiss(m.id)}
+          >
             ×
           </button>
         </div>

@@ -18,8 +18,9 @@ export function HelpDialog({ onClose }: { onClose(): void }) {
         </button>
       </header>
       <p className="kf-dialog__lead">
-        Wire points, lines and circles into mirrors and Möbius generators; the Render node turns them into an Iterated
-        Inversion System, drawn live on the right. Drag the handles in the picture and the tiling follows.
+        Wire points, lines and circles into mirrors and Möbius generators; the Render node turns them into an
+        Iterated Inversion System, drawn live on the right. Drag the handles in the picture and the tiling
+        follows.
       </p>
       <div className="kf-shortcuts">
         {SHORTCUTS.map((g) => (

@@ -7,7 +7,15 @@ export interface MenuItem {
   onSelect(): void;
 }
 
-export function Menu({ label, items, title }: { label: ReactNode; items: readonly MenuItem[]; title?: string }) {
+export function Menu({
+  label,
+  items,
+  title,
+}: {
+  label: ReactNode;
+  items: readonly MenuItem[];
+  title?: string;
+}) {
   const [open, setOpen] = useState(false);
   const root = useRef<HTMLDivElement>(null);
   useEffect(() => {
@@ -23,7 +31,14 @@ export function Menu({ label, items, title }: { label: ReactNode; items: readonl
   }, [open]);
   return (
     <div className="kf-menu" ref={root}>
-      <button type="button" className="kf-button" aria-haspopup="menu" aria-expanded={open} title={title} onClick={() => setOpen(!open)}>
+      <button
+        type="button"
+        className="kf-button"
+        aria-haspopup="menu"
+        aria-expanded={open}
+        title={title}
+        onClick={() => setOpen(!open)}
+      >
         {label} <span className="kf-caret">▾</span>
       </button>
       {open && (

@@ -31,7 +31,14 @@ interface Props {
   onViewport(v: Viewport | null): void;
 }
 
-export function RenderPane({ evaluation, hoveredNodeId, onHoverNode, onDiagnostics, onFrame, onViewport }: Props) {
+export function RenderPane({
+  evaluation,
+  hoveredNodeId,
+  onHoverNode,
+  onDiagnostics,
+  onFrame,
+  onViewport,
+}: Props) {
   const store = useStore();
   const doc = useEditorState((s) => s.doc);
   const pane = useRef<HTMLDivElement>(null);
@@ -62,7 +69,9 @@ export function RenderPane({ evaluation, hoveredNodeId, onHoverNode, onDiagnosti
         v.dispose();
       };
     } catch (e) {
-      setFailure(`The live render needs WebGL2, which this browser could not start (${(e as Error).message}).`);
+      setFailure(
+        `The live render needs WebGL2, which this browser could not start (${(e as Error).message}).`,
+      );
       return undefined;
     }
   }, [onViewport]);
@@ -88,7 +97,14 @@ export function RenderPane({ evaluation, hoveredNodeId, onHoverNode, onDiagnosti
         setView(v);
         viewport.current?.setView(v);
         clearTimeout(timer);
-        timer = setTimeout(() => store.dispatchSilently({ type: 'set-view', view: { center: [v.center[0], v.center[1]], scale: v.scale } }), VIEW_STORE_DELAY_MS);
+        timer = setTimeout(
+          () =>
+            store.dispatchSilently({
+              type: 'set-view',
+              view: { center: [v.center[0], v.center[1]], scale: v.scale },
+            }),
+          VIEW_STORE_DELAY_MS,
+        );
       },
     );
     return () => {

@@ -13,7 +13,15 @@ function initialRatio(fallback: number): number {
   }
 }
 
-export function SplitPane({ left, right, defaultRatio = 0.55 }: { left: ReactNode; right: ReactNode; defaultRatio?: number }) {
+export function SplitPane({
+  left,
+  right,
+  defaultRatio = 0.55,
+}: {
+  left: ReactNode;
+  right: ReactNode;
+  defaultRatio?: number;
+}) {
   const [ratio, setRatio] = useState(() => initialRatio(defaultRatio));
   const root = useRef<HTMLDivElement>(null);
   const dragging = useRef(false);

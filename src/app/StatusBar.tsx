@@ -26,7 +26,9 @@ export function StatusBar({ diagnostics, render, nodes, edges, saveState, onSele
         aria-expanded={open}
         data-testid="diagnostics-count"
       >
-        {errors === 0 && warnings === 0 ? '✓ No problems' : `${errors} error${errors === 1 ? '' : 's'} · ${warnings} warning${warnings === 1 ? '' : 's'}`}
+        {errors === 0 && warnings === 0
+          ? '✓ No problems'
+          : `${errors} error${errors === 1 ? '' : 's'} · ${warnings} warning${warnings === 1 ? '' : 's'}`}
       </button>
       <span className="kf-status__sep" />
       <span data-testid="render-progress" className="kf-status__item">

@@ -52,10 +52,20 @@ export function TopBar(p: Props) {
         <button type="button" className="kf-button" onClick={p.onNew} title="Start an empty graph">
           New
         </button>
-        <button type="button" className="kf-button" onClick={p.onOpen} title="Open a .kleinflow.json file or a Kleinflow PNG (Ctrl O)">
+        <button
+          type="button"
+          className="kf-button"
+          onClick={p.onOpen}
+          title="Open a .kleinflow.json file or a Kleinflow PNG (Ctrl O)"
+        >
           Open…
         </button>
-        <button type="button" className="kf-button" onClick={p.onSave} title="Download the graph as .kleinflow.json (Ctrl S)">
+        <button
+          type="button"
+          className="kf-button"
+          onClick={p.onSave}
+          title="Download the graph as .kleinflow.json (Ctrl S)"
+        >
           Save
         </button>
         <Menu label="Export" title="Export a picture or the shader" items={p.exportItems} />
@@ -89,7 +99,13 @@ export function TopBar(p: Props) {
         >
           {p.playing ? '❚❚' : '▶'}
         </button>
-        <button type="button" className="kf-button kf-button--icon" onClick={p.onHelp} aria-label="Help" title="Help and shortcuts (?)">
+        <button
+          type="button"
+          className="kf-button kf-button--icon"
+          onClick={p.onHelp}
+          aria-label="Help"
+          title="Help and shortcuts (?)"
+        >
           ?
         </button>
       </nav>

@@ -21,7 +21,14 @@ export const EXAMPLES: readonly Example[] = Object.entries(modules)
     const id = path.replace(/^.*\//, '').replace(/\.kleinflow\.json$/, '');
     const { title, description } = loaded.doc.meta;
     // Example files may place nodes tighter than the editor draws them: spread them out.
-    return [{ id, title: title ?? id, description: description ?? '', doc: tidyIfOverlapping(loaded.doc, registry) }];
+    return [
+      {
+        id,
+        title: title ?? id,
+        description: description ?? '',
+        doc: tidyIfOverlapping(loaded.doc, registry),
+      },
+    ];
   })
   .sort((a, b) => a.title.localeCompare(b.title));
 

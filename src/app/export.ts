@@ -32,7 +32,10 @@ export async function exportPng(
     },
   });
   if (!pixels) return false;
-  const png = encodePng({ width: size.width, height: size.height, data: pixels }, { kleinflow: documentJson(doc) });
+  const png = encodePng(
+    { width: size.width, height: size.height, data: pixels },
+    { kleinflow: documentJson(doc) },
+  );
   download(`${fileStem(doc)}.png`, png as Uint8Array<ArrayBuffer>, 'image/png');
   return true;
 }

@@ -1,6 +1,7 @@
 /** Downloads and file reading for Save / Open / Export. */
-import type { GraphDoc } from '../../nodes/graph/document.ts';
+
 import { diag } from '../../nodes/core/diagnostics.ts';
+import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { type LoadResult, parseDocumentText } from '../../nodes/graph/load.ts';
 import { readPngText } from '../io/png.ts';
 
@@ -35,7 +36,9 @@ export async function readDocumentFile(file: File): Promise<LoadResult> {
     if (!json) {
       return {
         ok: false,
-        diagnostics: [diag('importProblem', {}, 'this PNG carries no Kleinflow graph (it was not exported by Kleinflow)')],
+        diagnostics: [
+          diag('importProblem', {}, 'this PNG carries no Kleinflow graph (it was not exported by Kleinflow)'),
+        ],
       };
     }
     return parseDocumentText(json);

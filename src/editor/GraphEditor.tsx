@@ -28,13 +28,13 @@ import { idAllocator } from '../state/ids.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
 import { readClipboard, writeClipboard } from './clipboard-io.ts';
 import { checkConnection, portOfHandle } from './connection.ts';
-import { EditorContext, type EditorActions } from './editor-context.ts';
+import { type EditorActions, EditorContext } from './editor-context.ts';
 import { diagnosticsByNode, type KfNode, type KfNodeData, toFlowEdges, toFlowNodes } from './flow-model.ts';
 import { compatiblePort, type WireFilter } from './fuzzy.ts';
 import { Inspector } from './Inspector.tsx';
 import { sizer, tidyPositions } from './layout.ts';
-import { newNode } from './new-node.ts';
 import { NodeView } from './NodeView.tsx';
+import { newNode } from './new-node.ts';
 import { Palette } from './Palette.tsx';
 import { isTyping } from './typing.ts';
 import { useRememberedFlag } from './use-remembered-flag.ts';
@@ -47,14 +47,6 @@ interface Props {
   readonly extraDiagnostics: readonly Diagnostic[];
   readonly hoveredNodeId: string | null;
   onHoverNode(id: string | null): void;
-}
-
-interface PaletteState {
-  readonly screen: { x: number; y: number };
-  readonly flow: { x: number; y: number };
-  readonly filter?: WireFilter;
-  /** The wire that opened the palette: its node and handle. */
-  readonly wire?: { nodeId: string; handle: string; side: 'source' | 'target' };
 }
 
 export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHoverNode }: Props) {
@@ -129,7 +121,10 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
   const onDelete = useCallback(
     ({ nodes: ns, edges: es }: { nodes: KfNode[]; edges: Edge[] }) => {
       if (ns.length + es.length === 0) return;
-      store.dispatch({ type: 'remove', nodeIds: ns.map((n) => n.id), edgeIds: es.map((e) => e.id) }, 'delete');
+      store.dispatch(
+        { type: 'remove', nodeIds: ns.map((n) => n.id), edgeIds: es.map((e) => e.id) },
+        'delete',
+      );
     },
     [store],
   );
@@ -138,7 +133,10 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
     (_e: unknown, _node: KfNode, dragged: KfNode[]) => {
       const current = store.getState().doc;
       const moves = dragged
-        .map((n) => ({ nodeId: n.id, position: [Math.round(n.position.x), Math.round(n.position.y)] as [number, number] }))
+        .map((n) => ({
+          nodeId: n.id,
+          position: [Math.round(n.position.x), Math.round(n.position.y)] as [number, number],
+        }))
         .filter((m) => {
           const before = current.nodes.find((n) => n.id === m.nodeId)?.position;
           return before && (before[0] !== m.position[0] || before[1] !== m.position[1]);
@@ -187,7 +185,10 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
       const point = 'changedTouches' in event ? event.changedTouches[0] : event;
       openPalette(
         { x: point.clientX, y: point.clientY },
-        { filter: { from: side, type }, wire: { nodeId: state.fromNode.id, handle: state.fromHandle.id ?? '', side } },
+        {
+          filter: { from: side, type },
+          wire: { nodeId: state.fromNode.id, handle: state.fromHandle.id ?? '', side },
+        },
       );
     },
     [openPalette],
@@ -196,86 +197,27 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
   const addFromPalette = useCallback(
     (def: NodeDef) => {
       if (!palette) return;
-      const current = store.getState().doc;
-      const width = 220;
-      const at: [number, number] =
-        palette.wire?.side === 'target' ? [palette.flow.x - width, palette.flow.y - 20] : [palette.flow.x, palette.flow.y - 20];
-      const node = newNode(current, def, at);
-      const changes: Change[] = [{ type: 'add-node', node }];
-      if (palette.wire && palette.filter) {
-        const port = compatiblePort(def, palette.filter);
-        if (port) {
-          const other = { node: palette.wire.nodeId, port: portOfHandle(palette.wire.handle) };
-          const mine = { node: node.id, port };
-          const id = idAllocator({ ...current, nodes: [...current.nodes, node] })('e');
-          changes.push({
-            type: 'connect',
-            edge: palette.wire.side === 'source' ? { id, from: other, to: mine } : { id, from: mine, to: other },
-          });
-        }
-      }
-      store.dispatch({ type: 'batch', changes }, `add ${def.label}`);
-      store.setSelection([node.id]);
+      const { change, nodeId } = addNodeChange(store.getState().doc, def, palette);
+      store.dispatch(change, `add ${def.label}`);
+      store.setSelection([nodeId]);
       setPalette(null);
     },
     [palette, store],
   );
 
-  const copySelection = useCallback(() => {
-    const data = copyNodes(store.getState().doc, store.getState().selection);
-    if (data) void writeClipboard(data);
-    return data;
-  }, [store]);
-  const pasteData = useCallback(
-    (data: NonNullable<ReturnType<typeof copyNodes>>, where?: { x: number; y: number }) => {
-      const current = store.getState().doc;
-      const at = where ? ([where.x, where.y] as const) : undefined;
-      const { nodes: ns, edges: es } = preparePaste(current, data, at);
-      store.dispatch({ type: 'paste', nodes: ns, edges: es }, 'paste');
-      store.setSelection(ns.map((n) => n.id));
-    },
-    [store],
+  const toggleInspector = useCallback(
+    () => setInspectorOpen(!inspectorOpen),
+    [inspectorOpen, setInspectorOpen],
   );
-
-  useEffect(() => {
-    const onKey = (e: KeyboardEvent) => {
-      if (isTyping(e.target) || palette) return;
-      const mod = e.ctrlKey || e.metaKey;
-      const key = e.key.toLowerCase();
-      const here = () => {
-        const rect = wrapper.current!.getBoundingClientRect();
-        const p = pointer.current ?? { x: rect.left + rect.width / 2, y: rect.top + rect.height / 3 };
-        return p;
-      };
-      if ((key === ' ' && !mod) || (mod && key === 'k')) {
-        e.preventDefault();
-        openPalette(here());
-      } else if (mod && key === 'c') {
-        if (copySelection()) e.preventDefault();
-      } else if (mod && key === 'x') {
-        const data = copySelection();
-        if (data) {
-          e.preventDefault();
-          store.dispatch({ type: 'remove', nodeIds: data.nodes.map((n) => n.id) }, 'cut');
-        }
-      } else if (mod && key === 'v') {
-        e.preventDefault();
-        const p = pointer.current ? flow.screenToFlowPosition(pointer.current) : undefined;
-        void readClipboard().then((data) => data && pasteData(data, p));
-      } else if (mod && key === 'd') {
-        e.preventDefault();
-        const data = copyNodes(store.getState().doc, store.getState().selection);
-        if (data) pasteData(data);
-      } else if (!mod && key === 'i') {
-        setInspectorOpen(!inspectorOpen);
-      } else if (mod && key === 'a') {
-        e.preventDefault();
-        store.setSelection(store.getState().doc.nodes.map((n) => n.id));
-      }
-    };
-    window.addEventListener('keydown', onKey);
-    return () => window.removeEventListener('keydown', onKey);
-  }, [palette, openPalette, copySelection, pasteData, store, flow, inspectorOpen, setInspectorOpen]);
+  useGraphKeys({
+    store,
+    flow,
+    pointer,
+    wrapper,
+    paletteOpen: palette !== null,
+    openPalette,
+    toggleInspector,
+  });
 
   /** Tidy layout with the sizes React Flow measured (estimates for nodes not drawn yet): one undo step. */
   const tidy = () => {
@@ -305,7 +247,8 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
           pointer.current = null;
         }}
         onDoubleClick={(e) => {
-          if ((e.target as Element).classList.contains('react-flow__pane')) openPalette({ x: e.clientX, y: e.clientY });
+          if ((e.target as Element).classList.contains('react-flow__pane'))
+            openPalette({ x: e.clientX, y: e.clientY });
         }}
       >
         <ReactFlow<KfNode, Edge>
@@ -337,7 +280,7 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
           <MiniMap
             pannable
             zoomable
-            nodeColor={(n) => ((n.data as KfNodeData).def?.color ?? '#e5484d')}
+            nodeColor={(n) => (n.data as KfNodeData).def?.color ?? '#e5484d'}
             nodeStrokeWidth={0}
             maskColor="rgba(12, 13, 16, 0.7)"
             ariaLabel="Graph overview"
@@ -365,9 +308,9 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
           <button
             type="button"
             className={`kf-button${inspectorOpen ? ' kf-button--active' : ''}`}
-          aria-pressed={inspectorOpen}
-          title="Show the inspector for the selected node (I)"
-            onClick={() => setInspectorOpen(!inspectorOpen)}
+            aria-pressed={inspectorOpen}
+            title="Show the inspector for the selected node (I)"
+            onClick={toggleInspector}
           >
             Inspector
           </button>

@@ -62,7 +62,12 @@ export function Inspector({ node, connected, evaluation, diagnostics, onLabel, o
                   </span>
                 </div>
               ) : (
-                <InputWidget name={port} spec={spec} value={node.params[port]} onEdit={editParam(node.id, port)} />
+                <InputWidget
+                  name={port}
+                  spec={spec}
+                  value={node.params[port]}
+                  onEdit={editParam(node.id, port)}
+                />
               )}
               {spec.doc && <p className="kf-inspector__hint">{spec.doc}</p>}
             </div>
@@ -71,7 +76,12 @@ export function Inspector({ node, connected, evaluation, diagnostics, onLabel, o
         {def &&
           Object.entries(def.params).map(([name, spec]) => (
             <div key={name} className="kf-inspector__item">
-              <ParamWidget name={name} spec={spec} value={node.params[name]} onEdit={editParam(node.id, name)} />
+              <ParamWidget
+                name={name}
+                spec={spec}
+                value={node.params[name]}
+                onEdit={editParam(node.id, name)}
+              />
               {spec.doc && <p className="kf-inspector__hint">{spec.doc}</p>}
             </div>
           ))}

@@ -18,7 +18,8 @@ function useWireInProgress(): { side: 'source' | 'target'; type: PortType; nodeI
     if (!c.inProgress || !c.fromHandle) return null;
     const data = c.fromNode.data as KfNodeData;
     const port = portOfHandle(c.fromHandle.id);
-    const type = c.fromHandle.type === 'source' ? data.def?.outputs[port]?.type : data.def?.inputs[port]?.type;
+    const type =
+      c.fromHandle.type === 'source' ? data.def?.outputs[port]?.type : data.def?.inputs[port]?.type;
     return type ? `${c.fromHandle.type}|${type}|${c.fromNode.id}` : null;
   });
   if (!key) return null;
@@ -27,7 +28,11 @@ function useWireInProgress(): { side: 'source' | 'target'; type: PortType; nodeI
 }
 
 const worst = (ds: readonly Diagnostic[]) =>
-  ds.some((d) => d.severity === 'error') ? 'error' : ds.some((d) => d.severity === 'warning') ? 'warning' : 'info';
+  ds.some((d) => d.severity === 'error')
+    ? 'error'
+    : ds.some((d) => d.severity === 'warning')
+      ? 'warning'
+      : 'info';
 
 export function DiagnosticBadge({ diagnostics }: { diagnostics: readonly Diagnostic[] }) {
   if (diagnostics.length === 0) return null;
@@ -51,7 +56,14 @@ function Port({
   type,
   doc,
   dim,
-}: { side: 'in' | 'out'; port: string; label: string; type: PortType | null; doc?: string; dim: boolean }) {
+}: {
+  side: 'in' | 'out';
+  port: string;
+  label: string;
+  type: PortType | null;
+  doc?: string;
+  dim: boolean;
+}) {
   const info = type ? PORT_TYPE_INFO[type] : null;
   return (
     <Handle
@@ -106,7 +118,14 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
           Object.entries(def.outputs).map(([port, spec]) => (
             <div key={`o-${port}`} className="kf-row kf-row--out">
               <span className="kf-row__label">{spec.label ?? port}</span>
-              <Port side="out" port={port} label={spec.label ?? port} type={spec.type} doc={spec.doc} dim={dims('out', spec.type)} />
+              <Port
+                side="out"
+                port={port}
+                label={spec.label ?? port}
+                type={spec.type}
+                doc={spec.doc}
+                dim={dims('out', spec.type)}
+              />
             </div>
           ))}
         {def &&
@@ -123,7 +142,14 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
                 className={`kf-row kf-row--in${problems.length ? ` kf-row--${worst(problems)}` : ''}`}
                 title={problems.map((d) => d.message).join('\n') || undefined}
               >
-                <Port side="in" port={port} label={spec.label ?? port} type={spec.type} doc={spec.doc} dim={dims('in', spec.type)} />
+                <Port
+                  side="in"
+                  port={port}
+                  label={spec.label ?? port}
+                  type={spec.type}
+                  doc={spec.doc}
+                  dim={dims('in', spec.type)}
+                />
                 {widget ?? <span className="kf-row__label">{spec.label ?? port}</span>}
               </div>
             );

@@ -79,7 +79,11 @@ export function toFlowNodes(
   });
 }
 
-export function toFlowEdges(doc: GraphDoc, registry: NodeRegistry, selectedEdges: ReadonlySet<string>): Edge[] {
+export function toFlowEdges(
+  doc: GraphDoc,
+  registry: NodeRegistry,
+  selectedEdges: ReadonlySet<string>,
+): Edge[] {
   const types = new Map(doc.nodes.map((n) => [n.id, registry.get(n.type)]));
   return doc.edges.map((e) => {
     const type = types.get(e.from.node)?.outputs[e.from.port]?.type;

@@ -35,9 +35,11 @@ export interface WireFilter {
 /** The first port of `def` that fits the wire, or null. */
 export function compatiblePort(def: NodeDef, filter: WireFilter): string | null {
   if (filter.from === 'source') {
-    for (const [name, spec] of Object.entries(def.inputs)) if (canConnect(filter.type, spec.type)) return name;
+    for (const [name, spec] of Object.entries(def.inputs))
+      if (canConnect(filter.type, spec.type)) return name;
   } else {
-    for (const [name, spec] of Object.entries(def.outputs)) if (canConnect(spec.type, filter.type)) return name;
+    for (const [name, spec] of Object.entries(def.outputs))
+      if (canConnect(spec.type, filter.type)) return name;
   }
   return null;
 }

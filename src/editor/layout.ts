@@ -25,7 +25,11 @@ const inputRows = (def: NodeDef, port: string, connected: boolean) =>
   !connected && (def.inputs[port].type === 'line' || def.inputs[port].type === 'circle') ? 2 : 1;
 
 /** The height the node component will have, estimated from its declaration. */
-export function estimateSize(node: GraphNode, def: NodeDef | undefined, connected: ReadonlySet<string>): Size {
+export function estimateSize(
+  node: GraphNode,
+  def: NodeDef | undefined,
+  connected: ReadonlySet<string>,
+): Size {
   if (!def) return { width: NODE_WIDTH, height: HEADER + BODY_PADDING + ROW * 3 };
   let rows = Object.keys(def.outputs).length + Object.keys(def.params).length;
   for (const port of Object.keys(def.inputs)) rows += inputRows(def, port, connected.has(port));
@@ -48,7 +52,8 @@ export function nodesOverlap(doc: GraphDoc, size: SizeOf): boolean {
     for (let j = i + 1; j < boxes.length; j++) {
       const a = boxes[i];
       const b = boxes[j];
-      if (a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height) return true;
+      if (a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height)
+        return true;
     }
   }
   return false;

@@ -42,9 +42,7 @@ export type SaveOutcome = { ok: true } | { ok: false; reason: 'quota' | 'unavail
 
 export function isQuotaError(e: unknown): boolean {
   const err = e as { name?: string; code?: number } | null;
-  return (
-    err?.name === 'QuotaExceededError' || err?.name === 'NS_ERROR_DOM_QUOTA_REACHED' || err?.code === 22
-  );
+  return err?.name === 'QuotaExceededError' || err?.name === 'NS_ERROR_DOM_QUOTA_REACHED' || err?.code === 22;
 }
 
 export function saveNow(storage: StorageLike, doc: GraphDoc): SaveOutcome {

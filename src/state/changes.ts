@@ -41,7 +41,8 @@ export function inputTakesMany(doc: GraphDoc, registry: NodeRegistry, to: PortRe
 export function applyChange(doc: GraphDoc, change: Change, registry: NodeRegistry): GraphDoc {
   switch (change.type) {
     case 'add-node':
-      if (doc.nodes.some((n) => n.id === change.node.id)) throw new Error(`node id "${change.node.id}" exists`);
+      if (doc.nodes.some((n) => n.id === change.node.id))
+        throw new Error(`node id "${change.node.id}" exists`);
       return { ...doc, nodes: [...doc.nodes, change.node] };
     case 'remove': {
       const nodes = new Set(change.nodeIds);

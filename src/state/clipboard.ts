@@ -3,7 +3,13 @@
  * between copied nodes travel; a paste gets fresh ids and lands offset from the originals.
  */
 import { z } from 'zod';
-import { edgeSchema, type GraphDoc, type GraphEdge, type GraphNode, nodeSchema } from '../../nodes/graph/document.ts';
+import {
+  edgeSchema,
+  type GraphDoc,
+  type GraphEdge,
+  type GraphNode,
+  nodeSchema,
+} from '../../nodes/graph/document.ts';
 import { idAllocator } from './ids.ts';
 
 export const CLIPBOARD_FORMAT = 'kleinflow-clipboard';

@@ -65,7 +65,10 @@ export const nodeCount = (page: Page) => page.locator('.react-flow__node').count
 
 /** Waits until the status line says the picture has all its samples. */
 export async function waitRendered(page: Page, timeout = 60_000) {
-  await page.getByTestId('render-progress').filter({ hasText: /^Rendered/ }).waitFor({ timeout });
+  await page
+    .getByTestId('render-progress')
+    .filter({ hasText: /^Rendered/ })
+    .waitFor({ timeout });
 }
 
 export interface PixelStats {
@@ -108,7 +111,12 @@ export async function renderPixels(page: Page): Promise<PixelStats> {
     }
     const n = d.length / 4;
     const sd = [0, 1, 2].map((k) => Math.sqrt(Math.max(0, s2[k] / n - (s[k] / n) ** 2)));
-    return { mean: (s[0] + s[1] + s[2]) / (3 * n), sd: (sd[0] + sd[1] + sd[2]) / 3, colours: set.size, thumb };
+    return {
+      mean: (s[0] + s[1] + s[2]) / (3 * n),
+      sd: (sd[0] + sd[1] + sd[2]) / 3,
+      colours: set.size,
+      thumb,
+    };
   }, png.toString('base64'));
 }
 

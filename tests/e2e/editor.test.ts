@@ -13,7 +13,6 @@ import { launchChromium } from '../support/browser.ts';
 import {
   addNode,
   connect,
-
   edgeCount,
   graphBox,
   handle,
@@ -40,7 +39,12 @@ const exampleTitles = readdirSync(join(root, 'examples'))
 beforeAll(async () => {
   outDir = mkdtempSync(join(tmpdir(), 'kleinflow-e2e-'));
   await build({ root, logLevel: 'error', build: { outDir, emptyOutDir: true } });
-  server = await preview({ root, logLevel: 'error', build: { outDir }, preview: { port: 0, host: '127.0.0.1' } });
+  server = await preview({
+    root,
+    logLevel: 'error',
+    build: { outDir },
+    preview: { port: 0, host: '127.0.0.1' },
+  });
   const url = server.resolvedUrls!.local[0];
   browser = await launchChromium();
   context = await browser.newContext({ viewport: { width: 1600, height: 960 }, acceptDownloads: true });
@@ -127,7 +131,9 @@ describe('editor', () => {
     await expect.poll(() => nodeCount(page)).toBe(nodes + 1);
     const pasted = await page.locator('.react-flow__node.selected').getAttribute('data-id');
     expect(pasted).not.toBe('k');
-    expect(await nodeEl(page, pasted!).locator('.kf-node').getAttribute('data-node-type')).toBe('kaleidoscope');
+    expect(await nodeEl(page, pasted!).locator('.kf-node').getAttribute('data-node-type')).toBe(
+      'kaleidoscope',
+    );
     await page.keyboard.press('Control+z');
     await expect.poll(() => nodeCount(page)).toBe(nodes);
     await page.keyboard.press('Control+y');
@@ -177,7 +183,9 @@ describe('editor', () => {
       await connect(page, mirrors[i], 'element', render, 'elements');
     }
     await expect.poll(() => edgeCount(page)).toBe(12);
-    await expect.poll(() => nodeEl(page, render).locator('.kf-node__readout').textContent()).toBe('3 elements');
+    await expect
+      .poll(() => nodeEl(page, render).locator('.kf-node__readout').textContent())
+      .toBe('3 elements');
     expect(await page.getByTestId('diagnostics-count').textContent()).toMatch(/No problems|^0 errors/);
     // Zoom the render out (wheel over the picture) to see many tiles.
     const pane = (await page.getByTestId('render-pane').boundingBox())!;
@@ -220,5 +228,3 @@ describe('editor', () => {
     expect(problems).toEqual([]);
   });
 });
-
-

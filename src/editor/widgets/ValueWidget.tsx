@@ -11,13 +11,35 @@ import { ColorField, EnumField, ToggleField } from './simple-fields.tsx';
 const isVec2 = (v: unknown): v is Vec2 =>
   Array.isArray(v) && v.length === 2 && typeof v[0] === 'number' && typeof v[1] === 'number';
 
-function PointField({ label, value, onEdit, title }: { label: string; value: Vec2; onEdit: OnEdit<Vec2>; title?: string }) {
+function PointField({
+  label,
+  value,
+  onEdit,
+  title,
+}: {
+  label: string;
+  value: Vec2;
+  onEdit: OnEdit<Vec2>;
+  title?: string;
+}) {
   return (
     <div className="kf-field kf-point" title={title}>
       <span className="kf-field__label">{label}</span>
       <span className="kf-point__xy">
-        <NumberField label={`${label} x`} compact value={value[0]} spec={{ step: 0.01 }} onEdit={(x, f) => onEdit([x, value[1]], f)} />
-        <NumberField label={`${label} y`} compact value={value[1]} spec={{ step: 0.01 }} onEdit={(y, f) => onEdit([value[0], y], f)} />
+        <NumberField
+          label={`${label} x`}
+          compact
+          value={value[0]}
+          spec={{ step: 0.01 }}
+          onEdit={(x, f) => onEdit([x, value[1]], f)}
+        />
+        <NumberField
+          label={`${label} y`}
+          compact
+          value={value[1]}
+          spec={{ step: 0.01 }}
+          onEdit={(y, f) => onEdit([value[0], y], f)}
+        />
       </span>
     </div>
   );
@@ -56,11 +78,15 @@ export function InputWidget({ name, spec, value, onEdit }: InputProps) {
   const v = value === undefined ? spec.default : value;
   switch (spec.type) {
     case 'number':
-      return typeof v === 'number' ? <NumberField label={label} title={spec.doc} value={v} spec={spec} onEdit={onEdit} /> : null;
+      return typeof v === 'number' ? (
+        <NumberField label={label} title={spec.doc} value={v} spec={spec} onEdit={onEdit} />
+      ) : null;
     case 'point':
       return isVec2(v) ? <PointField label={label} title={spec.doc} value={v} onEdit={onEdit} /> : null;
     case 'color':
-      return typeof v === 'string' ? <ColorField label={label} title={spec.doc} value={v} onEdit={onEdit} /> : null;
+      return typeof v === 'string' ? (
+        <ColorField label={label} title={spec.doc} value={v} onEdit={onEdit} />
+      ) : null;
     case 'line': {
       const line = v as Line | undefined;
       if (!line || !isVec2(line.a) || !isVec2(line.b)) return null;
@@ -76,8 +102,17 @@ export function InputWidget({ name, spec, value, onEdit }: InputProps) {
       if (!circle || !isVec2(circle.c)) return null;
       return (
         <>
-          <PointField label={`${label} centre`} value={circle.c} onEdit={(c, f) => onEdit({ ...circle, c }, f)} />
-          <NumberField label={`${label} radius`} value={circle.r} spec={{ min: 0, step: 0.01 }} onEdit={(r, f) => onEdit({ ...circle, r }, f)} />
+          <PointField
+            label={`${label} centre`}
+            value={circle.c}
+            onEdit={(c, f) => onEdit({ ...circle, c }, f)}
+          />
+          <NumberField
+            label={`${label} radius`}
+            value={circle.r}
+            spec={{ min: 0, step: 0.01 }}
+            onEdit={(r, f) => onEdit({ ...circle, r }, f)}
+          />
         </>
       );
     }
@@ -97,7 +132,14 @@ export function ParamWidget({ name, spec, value, onEdit }: ParamProps) {
   const label = spec.label ?? name;
   switch (spec.kind) {
     case 'boolean':
-      return <ToggleField label={label} title={spec.doc} value={typeof value === 'boolean' ? value : spec.default} onEdit={onEdit} />;
+      return (
+        <ToggleField
+          label={label}
+          title={spec.doc}
+          value={typeof value === 'boolean' ? value : spec.default}
+          onEdit={onEdit}
+        />
+      );
     case 'enum':
       return (
         <EnumField
@@ -109,9 +151,24 @@ export function ParamWidget({ name, spec, value, onEdit }: ParamProps) {
         />
       );
     case 'number':
-      return <NumberField label={label} title={spec.doc} value={typeof value === 'number' ? value : spec.default} spec={spec} onEdit={onEdit} />;
+      return (
+        <NumberField
+          label={label}
+          title={spec.doc}
+          value={typeof value === 'number' ? value : spec.default}
+          spec={spec}
+          onEdit={onEdit}
+        />
+      );
     case 'color':
-      return <ColorField label={label} title={spec.doc} value={typeof value === 'string' ? value : spec.default} onEdit={onEdit} />;
+      return (
+        <ColorField
+          label={label}
+          title={spec.doc}
+          value={typeof value === 'string' ? value : spec.default}
+          onEdit={onEdit}
+        />
+      );
     case 'string':
       return (
         <label className="kf-field nodrag" title={spec.doc}>

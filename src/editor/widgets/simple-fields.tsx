@@ -2,11 +2,26 @@
 import { useEffect, useRef } from 'react';
 import type { OnEdit } from './edit.ts';
 
-export function ToggleField({ label, value, onEdit, title }: { label: string; value: boolean; onEdit: OnEdit<boolean>; title?: string }) {
+export function ToggleField({
+  label,
+  value,
+  onEdit,
+  title,
+}: {
+  label: string;
+  value: boolean;
+  onEdit: OnEdit<boolean>;
+  title?: string;
+}) {
   return (
     <label className="kf-field kf-toggle nodrag" title={title}>
       <span className="kf-field__label">{label}</span>
-      <input type="checkbox" aria-label={label} checked={value} onChange={(e) => onEdit(e.target.checked, true)} />
+      <input
+        type="checkbox"
+        aria-label={label}
+        checked={value}
+        onChange={(e) => onEdit(e.target.checked, true)}
+      />
       <span className="kf-toggle__track" aria-hidden="true" />
     </label>
   );
@@ -18,11 +33,22 @@ export function EnumField({
   options,
   onEdit,
   title,
-}: { label: string; value: string; options: readonly string[]; onEdit: OnEdit<string>; title?: string }) {
+}: {
+  label: string;
+  value: string;
+  options: readonly string[];
+  onEdit: OnEdit<string>;
+  title?: string;
+}) {
   return (
     <label className="kf-field nodrag" title={title}>
       <span className="kf-field__label">{label}</span>
-      <select className="kf-input kf-select" aria-label={label} value={value} onChange={(e) => onEdit(e.target.value, true)}>
+      <select
+        className="kf-input kf-select"
+        aria-label={label}
+        value={value}
+        onChange={(e) => onEdit(e.target.value, true)}
+      >
         {options.map((o) => (
           <option key={o} value={o}>
             {o}
@@ -34,7 +60,17 @@ export function EnumField({
 }
 
 /** Live preview while the picker is open (input events), one commit when it closes (change event). */
-export function ColorField({ label, value, onEdit, title }: { label: string; value: string; onEdit: OnEdit<string>; title?: string }) {
+export function ColorField({
+  label,
+  value,
+  onEdit,
+  title,
+}: {
+  label: string;
+  value: string;
+  onEdit: OnEdit<string>;
+  title?: string;
+}) {
   const ref = useRef<HTMLInputElement>(null);
   const onEditRef = useRef(onEdit);
   onEditRef.current = onEdit;

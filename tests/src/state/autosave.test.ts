@@ -82,7 +82,10 @@ describe('autosave', () => {
     expect(r.problems[0].code).toBe('KF101');
     expect(storage.getItem(AUTOSAVE_BACKUP_KEY)).toBe(r.text);
 
-    storage.setItem(AUTOSAVE_KEY, JSON.stringify({ ...emptyDocument(), view: { center: [0, 0], scale: -1 } }));
+    storage.setItem(
+      AUTOSAVE_KEY,
+      JSON.stringify({ ...emptyDocument(), view: { center: [0, 0], scale: -1 } }),
+    );
     const bad = restore(storage);
     expect(bad.kind === 'unreadable' && bad.problems[0].message).toMatch(/view\.scale/);
   });

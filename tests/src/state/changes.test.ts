@@ -22,9 +22,14 @@ const apply = (doc: GraphDoc, c: Change) => applyChange(doc, c, registry);
 
 describe('applyChange', () => {
   it('adds a node and refuses a duplicate id', () => {
-    const doc = apply(base(), { type: 'add-node', node: { id: 'n', type: 'number', position: [1, 2], params: {} } });
+    const doc = apply(base(), {
+      type: 'add-node',
+      node: { id: 'n', type: 'number', position: [1, 2], params: {} },
+    });
     expect(doc.nodes.map((n) => n.id)).toContain('n');
-    expect(() => apply(doc, { type: 'add-node', node: { id: 'n', type: 'number', position: [0, 0], params: {} } })).toThrow();
+    expect(() =>
+      apply(doc, { type: 'add-node', node: { id: 'n', type: 'number', position: [0, 0], params: {} } }),
+    ).toThrow();
   });
 
   it('removing nodes removes their edges too, and named edges alone', () => {
@@ -85,7 +90,10 @@ describe('applyChange', () => {
       type: 'batch',
       changes: [
         { type: 'add-node', node: { id: 'r3', type: 'reflection', position: [0, 0], params: {} } },
-        { type: 'connect', edge: { id: 'e3', from: { node: 'r3', port: 'element' }, to: { node: 'out', port: 'elements' } } },
+        {
+          type: 'connect',
+          edge: { id: 'e3', from: { node: 'r3', port: 'element' }, to: { node: 'out', port: 'elements' } },
+        },
       ],
     });
     expect(next.nodes.at(-1)!.id).toBe('r3');

@@ -36,7 +36,9 @@ import { sizer, tidyPositions } from './layout.ts';
 import { NodeView } from './NodeView.tsx';
 import { newNode } from './new-node.ts';
 import { Palette } from './Palette.tsx';
+import { addNodeChange, type PaletteState } from './palette-actions.ts';
 import { isTyping } from './typing.ts';
+import { useGraphKeys } from './use-graph-keys.ts';
 import { useRememberedFlag } from './use-remembered-flag.ts';
 
 const nodeTypes = { kf: NodeView };

@@ -98,7 +98,8 @@ function checkEdge(
   if (edge.from.node === edge.to.node) return diag('selfEdge', { path, nodeId: edge.to.node }, edge.to.node);
   if (!dst.def) return undefined;
   // Own keys only: a port named "constructor" or "toString" must not find Object.prototype's.
-  const out = src.def && Object.hasOwn(src.def.outputs, edge.from.port) ? src.def.outputs[edge.from.port] : undefined;
+  const out =
+    src.def && Object.hasOwn(src.def.outputs, edge.from.port) ? src.def.outputs[edge.from.port] : undefined;
   const inp = Object.hasOwn(dst.def.inputs, edge.to.port) ? dst.def.inputs[edge.to.port] : undefined;
   if (src.def && !out)
     return diag(

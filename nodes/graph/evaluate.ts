@@ -87,7 +87,8 @@ export function evaluateGraph(
   renders.sort((a, b) => (a.id < b.id ? -1 : a.id > b.id ? 1 : 0));
   const renderNodes = [...analysis.nodes.values()].filter((n) => n.node.type === 'render');
   // A whole-document problem: its path is the document itself (every diagnostic says where).
-  if (renderNodes.length === 0 && doc.nodes.length > 0) diagnostics.push(diag('noRender', { path: '(document)' }));
+  if (renderNodes.length === 0 && doc.nodes.length > 0)
+    diagnostics.push(diag('noRender', { path: '(document)' }));
   if (renderNodes.length > 1) {
     const used = renders[0]?.id ?? renderNodes.map((n) => n.node.id).sort()[0];
     diagnostics.push(diag('manyRenders', { nodeId: used }, used));

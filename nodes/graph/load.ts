@@ -43,7 +43,13 @@ export function loadDocument(
   if (raw.format !== FORMAT) {
     return {
       ok: false,
-      diagnostics: [diag('wrongFormat', { path: 'format' }, raw.format === undefined ? 'missing' : describeValue(raw.format))],
+      diagnostics: [
+        diag(
+          'wrongFormat',
+          { path: 'format' },
+          raw.format === undefined ? 'missing' : describeValue(raw.format),
+        ),
+      ],
     };
   }
   if (Array.isArray(raw.nodes) && raw.nodes.length > LIMITS.maxNodes) {

@@ -14,6 +14,7 @@ import {
   VERTEX_SOURCE,
 } from './glsl/template.ts';
 import { type UniformEntry, uniformRows } from './glsl/values.ts';
+import { firstOutOfGpuRange } from './gpu-range.ts';
 import { structureKey } from './structure-key.ts';
 
 export { FRAME_UNIFORMS } from './glsl/template.ts';
@@ -55,6 +56,8 @@ export function compile(input: Scene, options: CompileOptions = {}): CompiledPro
   const variant = options.variant ?? 'color';
   const diagnostics: Diagnostic[] = [];
   const scene = withinElementLimit(input, diagnostics);
+  const far = firstOutOfGpuRange(scene);
+  if (far) diagnostics.push(diag('gpuRange', { nodeId: far.nodeId }, far.value, LIMITS.gpuMaxMagnitude));
   let baked = options.baked ?? false;
   let emitted = fragmentShader(scene, variant, baked);
   if (!baked) {

@@ -134,6 +134,12 @@ export const DIAGNOSTICS = table({
     text: (rows: number, max: number) =>
       `the scene needs ${rows} uniform vectors, more than the ${max} every WebGL2 GPU offers: its values are built into the shader instead (editing them recompiles it)`,
   },
+  gpuRange: {
+    code: 'KF405',
+    severity: 'warning',
+    text: (value: number, max: number) =>
+      `a value of ${value} is beyond what the GPU computes with (±${max.toExponential()}): the shader overflows to ∞ there, so this element does not draw as the CPU preview does`,
+  },
   importProblem: { code: 'KF501', severity: 'error', text: (detail: string) => detail },
   importNote: { code: 'KF502', severity: 'warning', text: (detail: string) => detail },
   migrated: {

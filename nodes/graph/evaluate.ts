@@ -44,8 +44,16 @@ export interface EvaluateOptions {
 export function allFinite(value: unknown, depth = 0): boolean {
   if (typeof value === 'number') return Number.isFinite(value);
   if (depth > 8 || value === null || typeof value !== 'object') return true;
-  if (Array.isArray(value)) return value.every((v) => allFinite(v, depth + 1));
-  return Object.values(value).every((v) => allFinite(v, depth + 1));
+  // Plain loops: this runs on every output of every node, closures here showed in profiles.
+  if (Array.isArray(value)) {
+    for (const v of value) if (!allFinite(v, depth + 1)) return false;
+    return true;
+  }
+  for (const key in value) {
+    if (Object.hasOwn(value, key) && !allFinite((value as Record<string, unknown>)[key], depth + 1))
+      return false;
+  }
+  return true;
 }
 
 export function evaluateGraph(
@@ -108,6 +116,8 @@ export function evaluateGraph(
   return { scene, nodes: results, diagnostics, analysis };
 }
 
+const NO_EDGES: ReadonlyMap<string, unknown> = new Map();
+
 function evaluateNode(
   def: NodeDef,
   nodeId: string,
@@ -118,8 +128,10 @@ function evaluateNode(
   time: number,
 ): NodeEvaluation & { render?: RenderSettings } {
   const edgesByPort = analysis.incoming.get(nodeId);
-  const connected = new Set(edgesByPort ? [...edgesByPort.keys()] : []);
-  const resolved = resolveParams(def, { id: nodeId, params: rawParams }, connected, ['nodes', index]);
+  const resolved = resolveParams(def, { id: nodeId, params: rawParams }, edgesByPort ?? NO_EDGES, [
+    'nodes',
+    index,
+  ]);
   const diagnostics: Diagnostic[] = [...resolved.diagnostics];
   const inputs: Record<string, unknown> = { ...resolved.inline };
 

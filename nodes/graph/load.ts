@@ -7,6 +7,7 @@ import { type Diagnostic, diag } from '../core/diagnostics.ts';
 import { LIMITS } from '../core/scene.ts';
 import { describeValue } from './describe-value.ts';
 import { DOC_VERSION, docSchema, FORMAT, type GraphDoc } from './document.ts';
+import { pathBeyondDepth } from './json-depth.ts';
 import { formatPath } from './json-path.ts';
 import { DOC_MIGRATIONS, type DocMigration, migrateDocument } from './migrate.ts';
 
@@ -57,6 +58,12 @@ export function loadDocument(
       ok: false,
       diagnostics: [diag('tooManyNodes', { path: 'nodes' }, raw.nodes.length, LIMITS.maxNodes)],
     };
+  }
+  const deep = pathBeyondDepth(raw, LIMITS.maxJsonDepth);
+  if (deep) {
+    const path = formatPath(deep);
+    const text = `${path}: nested deeper than ${LIMITS.maxJsonDepth} levels (no Kleinflow document needs that)`;
+    return { ok: false, diagnostics: [diag('schema', { path }, text)] };
   }
   // A newer document gets its own code (KF104), so the UI can say "update Kleinflow", not "broken file".
   const newest = target ?? DOC_VERSION;

@@ -31,6 +31,11 @@ export function checkNumber(
 const describe = (v: unknown) => describeValue(v);
 
 function parseInput(spec: InputSpec, raw: unknown): { value?: unknown; problem?: string } {
+  // Numbers are most inline values: checkNumber is the whole check, no schema run needed (speed).
+  if (spec.type === 'number' && Number.isFinite(raw)) {
+    const problem = checkNumber(spec, raw as number);
+    return problem ? { problem } : { value: raw };
+  }
   const schema = PORT_VALUE_SCHEMA[spec.type];
   if (!schema) return {};
   const parsed = schema.safeParse(raw);
@@ -79,7 +84,7 @@ function parseParam(spec: ParamSpec, raw: unknown): { value?: unknown; problem?:
 export function resolveParams(
   def: NodeDef,
   node: { id: string; params: Record<string, unknown> },
-  connected: ReadonlySet<string>,
+  connected: { has(name: string): boolean },
   path: readonly PropertyKey[],
 ): ResolvedParams {
   const inline: Record<string, unknown> = {};

@@ -2,7 +2,7 @@
  * GLSL twin of inversion.ts. Packing (1 vec4): d0 = (c.x, c.y, r, 0).
  */
 import type { InversionElement } from '../../nodes/core/scene.ts';
-import type { GlslElementTwin } from '../glsl/element-twin.ts';
+import { type GlslElementTwin, glslStepBlock } from '../glsl/element-twin.ts';
 import { glslFunction } from '../glsl/snippet.ts';
 
 /** invertState: p ← c + r²(p−c)/|p−c|², s ← s·r²/|p−c|² (same operations, same order). */
@@ -22,16 +22,14 @@ export const inversionGlsl: GlslElementTwin<InversionElement> = {
   kind: 'inversion',
   vec4s: 1,
   pack: (e) => [e.c[0], e.c[1], e.r, 0],
-  step: glslFunction(
-    'inversionStep',
+  step: glslStepBlock(
     `
-bool inversionStep(inout vec2 p, inout float s, inout int depth, vec4 d0) {
-  float dx = p.x - d0.x;
-  float dy = p.y - d0.y;
-  if (dx * dx + dy * dy >= d0.z * d0.z) return false;
+float dx = p.x - d0.x;
+float dy = p.y - d0.y;
+if (!(dx * dx + dy * dy >= d0.z * d0.z)) {
   invertState(p, s, d0.xy, d0.z);
   depth += 1;
-  return true;
+  continue;
 }`,
     [invertStateGlsl],
   ),

@@ -4,7 +4,7 @@
  *   d3 = (L.q.x, L.q.y, L.n.x, L.n.y), d4 = region A, d5 = region B (see disk-region.glsl.ts).
  */
 import type { LoxodromicElement } from '../../nodes/core/scene.ts';
-import type { GlslElementTwin } from '../glsl/element-twin.ts';
+import { type GlslElementTwin, glslStepBlock } from '../glsl/element-twin.ts';
 import { glslFunction } from '../glsl/snippet.ts';
 import { inRegionGlsl, packRegion, regionBoundaryDistanceGlsl } from './disk-region.glsl.ts';
 import { invertStateGlsl } from './inversion.glsl.ts';
@@ -27,23 +27,22 @@ export const loxodromicGlsl: GlslElementTwin<LoxodromicElement> = {
     ...packRegion(e.a),
     ...packRegion(e.b),
   ],
-  step: glslFunction(
-    'loxodromicStep',
+  step: glslStepBlock(
     `
-bool loxodromicStep(inout vec2 p, inout float s, inout int depth, ${ARGS}) {
-  if (inRegion(d4, p)) {
-    reflectState(p, d3.xy, d3.zw);
-    invertState(p, s, d2.xy, d2.z);
-    invertState(p, s, d0.xy, d0.z);
-    invertState(p, s, d1.xy, d1.z);
-  } else if (inRegion(d5, p)) {
-    invertState(p, s, d1.xy, d1.z);
-    invertState(p, s, d0.xy, d0.z);
-    invertState(p, s, d2.xy, d2.z);
-    reflectState(p, d3.xy, d3.zw);
-  } else return false;
+if (inRegion(d4, p)) {
+  reflectState(p, d3.xy, d3.zw);
+  invertState(p, s, d2.xy, d2.z);
+  invertState(p, s, d0.xy, d0.z);
+  invertState(p, s, d1.xy, d1.z);
   depth += 1;
-  return true;
+  continue;
+} else if (inRegion(d5, p)) {
+  invertState(p, s, d1.xy, d1.z);
+  invertState(p, s, d0.xy, d0.z);
+  invertState(p, s, d2.xy, d2.z);
+  reflectState(p, d3.xy, d3.zw);
+  depth += 1;
+  continue;
 }`,
     [inRegionGlsl, invertStateGlsl, reflectStateGlsl],
   ),

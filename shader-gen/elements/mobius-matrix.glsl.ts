@@ -3,7 +3,7 @@
  * d1 = (c.re, c.im, d.re, d.im), d2 = region I(g) (forward), d3 = region I(g⁻¹) (backward).
  */
 import type { MobiusMatrixElement } from '../../nodes/core/scene.ts';
-import type { GlslElementTwin } from '../glsl/element-twin.ts';
+import { type GlslElementTwin, glslStepBlock } from '../glsl/element-twin.ts';
 import { glslFunction } from '../glsl/snippet.ts';
 import { inRegionGlsl, packRegion, regionBoundaryDistanceGlsl } from './disk-region.glsl.ts';
 
@@ -30,15 +30,16 @@ export const mobiusMatrixGlsl: GlslElementTwin<MobiusMatrixElement> = {
   kind: 'mobius-matrix',
   vec4s: 4,
   pack: (e) => [...e.a, ...e.b, ...e.c, ...e.d, ...packRegion(e.forward), ...packRegion(e.backward)],
-  step: glslFunction(
-    'mobiusMatrixStep',
+  step: glslStepBlock(
     `
-bool mobiusMatrixStep(inout vec2 p, inout float s, inout int depth, ${ARGS}) {
-  if (inRegion(d2, p)) applyMobius(p, s, d0.xy, d0.zw, d1.xy, d1.zw, 1.0);
-  else if (inRegion(d3, p)) applyMobius(p, s, d1.zw, d0.zw, d1.xy, d0.xy, -1.0);
-  else return false;
+if (inRegion(d2, p)) {
+  applyMobius(p, s, d0.xy, d0.zw, d1.xy, d1.zw, 1.0);
   depth += 1;
-  return true;
+  continue;
+} else if (inRegion(d3, p)) {
+  applyMobius(p, s, d1.zw, d0.zw, d1.xy, d0.xy, -1.0);
+  depth += 1;
+  continue;
 }`,
     [inRegionGlsl, applyMobiusGlsl],
   ),

@@ -4,7 +4,7 @@
  *   d2 = region A, d3 = region B (each (c.x, c.y, r, outside), see disk-region.glsl.ts).
  */
 import type { MobiusElement } from '../../nodes/core/scene.ts';
-import type { GlslElementTwin } from '../glsl/element-twin.ts';
+import { type GlslElementTwin, glslStepBlock } from '../glsl/element-twin.ts';
 import { glslFunction } from '../glsl/snippet.ts';
 import { inRegionGlsl, packRegion, regionBoundaryDistanceGlsl } from './disk-region.glsl.ts';
 import { invertStateGlsl } from './inversion.glsl.ts';
@@ -24,19 +24,18 @@ export const mobiusGlsl: GlslElementTwin<MobiusElement> = {
     ...packRegion(e.a),
     ...packRegion(e.b),
   ],
-  step: glslFunction(
-    'mobiusStep',
+  step: glslStepBlock(
     `
-bool mobiusStep(inout vec2 p, inout float s, inout int depth, vec4 d0, vec4 d1, vec4 d2, vec4 d3) {
-  if (inRegion(d2, p)) {
-    invertState(p, s, d0.xy, d0.z);
-    invertState(p, s, d1.xy, d1.z);
-  } else if (inRegion(d3, p)) {
-    invertState(p, s, d1.xy, d1.z);
-    invertState(p, s, d0.xy, d0.z);
-  } else return false;
+if (inRegion(d2, p)) {
+  invertState(p, s, d0.xy, d0.z);
+  invertState(p, s, d1.xy, d1.z);
   depth += 1;
-  return true;
+  continue;
+} else if (inRegion(d3, p)) {
+  invertState(p, s, d1.xy, d1.z);
+  invertState(p, s, d0.xy, d0.z);
+  depth += 1;
+  continue;
 }`,
     [inRegionGlsl, invertStateGlsl],
   ),

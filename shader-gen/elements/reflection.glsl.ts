@@ -2,7 +2,7 @@
  * GLSL twin of reflection.ts. Packing (1 vec4): d0 = (q.x, q.y, n.x, n.y), n a unit normal.
  */
 import type { ReflectionElement } from '../../nodes/core/scene.ts';
-import type { GlslElementTwin } from '../glsl/element-twin.ts';
+import { type GlslElementTwin, glslStepBlock } from '../glsl/element-twin.ts';
 import { glslFunction } from '../glsl/snippet.ts';
 
 /** reflectState: h = 2((p−q)·n), p ← p − h n (same operations, same order). */
@@ -19,14 +19,12 @@ export const reflectionGlsl: GlslElementTwin<ReflectionElement> = {
   kind: 'reflection',
   vec4s: 1,
   pack: (e) => [e.q[0], e.q[1], e.n[0], e.n[1]],
-  step: glslFunction(
-    'reflectionStep',
+  step: glslStepBlock(
     `
-bool reflectionStep(inout vec2 p, inout float s, inout int depth, vec4 d0) {
-  if ((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0) return false;
+if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
   reflectState(p, d0.xy, d0.zw);
   depth += 1;
-  return true;
+  continue;
 }`,
     [reflectStateGlsl],
   ),

@@ -6,7 +6,7 @@
  * not cos/sin of mθ, so the final point keeps float32 accuracy.
  */
 import type { RotationElement } from '../../nodes/core/scene.ts';
-import type { GlslElementTwin } from '../glsl/element-twin.ts';
+import { type GlslElementTwin, glslStepBlock } from '../glsl/element-twin.ts';
 import { floatLiteral } from '../glsl/literal.ts';
 import { glslFunction } from '../glsl/snippet.ts';
 import { complexPowerGlsl } from './complex-power.glsl.ts';
@@ -44,18 +44,16 @@ export const rotationGlsl: GlslElementTwin<RotationElement> = {
     const t = (2 * Math.PI) / e.order;
     return [e.c[0], e.c[1], e.b1[0], e.b1[1], e.order, Math.cos(t), Math.sin(t), 0];
   },
-  step: glslFunction(
-    'rotationStep',
+  step: glslStepBlock(
     `
-bool rotationStep(inout vec2 p, inout float s, inout int depth, vec4 d0, vec4 d1) {
-  float dx = p.x - d0.x;
-  float dy = p.y - d0.y;
-  float m = wedgeIndex(d0, d1, dx, dy);
-  if (m <= 0.0) return false;
+float dx = p.x - d0.x;
+float dy = p.y - d0.y;
+float m = wedgeIndex(d0, d1, dx, dy);
+if (!(m <= 0.0)) {
   vec2 w = complexPower(vec2(d1.y, -d1.z), int(m));
   p = vec2(d0.x + w.x * dx - w.y * dy, d0.y + w.y * dx + w.x * dy);
   depth += int(m);
-  return true;
+  continue;
 }`,
     [wedgeIndexGlsl, complexPowerGlsl],
   ),

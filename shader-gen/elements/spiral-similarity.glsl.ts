@@ -7,7 +7,7 @@
  * scale λ^(−m) is |w^|m||.
  */
 import type { SpiralSimilarityElement } from '../../nodes/core/scene.ts';
-import type { GlslElementTwin } from '../glsl/element-twin.ts';
+import { type GlslElementTwin, glslStepBlock } from '../glsl/element-twin.ts';
 import { glslFunction } from '../glsl/snippet.ts';
 import { complexPowerGlsl } from './complex-power.glsl.ts';
 import { foldCountGlsl } from './strip-fold.glsl.ts';
@@ -37,26 +37,24 @@ export const spiralSimilarityGlsl: GlslElementTwin<SpiralSimilarityElement> = {
   kind: 'spiral-similarity',
   vec4s: 2,
   pack: (e) => [e.c[0], e.c[1], e.r1, e.r2, e.angle, Math.cos(2 * e.angle), Math.sin(2 * e.angle), 0],
-  step: glslFunction(
-    'spiralSimilarityStep',
+  step: glslStepBlock(
     `
-bool spiralSimilarityStep(inout vec2 p, inout float s, inout int depth, vec4 d0, vec4 d1) {
-  float dx = p.x - d0.x;
-  float dy = p.y - d0.y;
-  float rho = length(vec2(dx, dy));
-  if (rho == 0.0) {
-    depth += 1; // the fixed point: one step at a time until maxIterations (not escaped)
-    return true;
-  }
-  float m = annulusIndex(d0, rho);
-  if (m == 0.0) return false;
+float dx = p.x - d0.x;
+float dy = p.y - d0.y;
+float rho = length(vec2(dx, dy));
+if (rho == 0.0) {
+  depth += 1; // the fixed point: one step at a time until maxIterations (not escaped)
+  continue;
+}
+float m = annulusIndex(d0, rho);
+if (m != 0.0) {
   float lambda = spiralRatio(d0);
   vec2 w = m > 0.0 ? vec2(d1.y, -d1.z) / lambda : vec2(d1.y, d1.z) * lambda;
   vec2 wm = complexPower(w, foldCount(m));
   p = vec2(d0.x + wm.x * dx - wm.y * dy, d0.y + wm.y * dx + wm.x * dy);
   s *= length(wm);
   depth += foldCount(m);
-  return true;
+  continue;
 }`,
     [annulusIndexGlsl, spiralRatioGlsl, foldCountGlsl, complexPowerGlsl],
   ),

@@ -3,16 +3,8 @@
  * translation vector t in d1.yz: d0 = (q.x, q.y, n.x, n.y), d1 = (period D, t.x, t.y, 0).
  */
 import type { TranslationElement } from '../../nodes/core/scene.ts';
-import type { GlslElementTwin } from '../glsl/element-twin.ts';
-import { glslFunction } from '../glsl/snippet.ts';
-import {
-  foldCountGlsl,
-  packStrip,
-  STRIP_ARGS,
-  stripDistance,
-  stripIndexGlsl,
-  stripInside,
-} from './strip-fold.glsl.ts';
+import { type GlslElementTwin, glslStepBlock } from '../glsl/element-twin.ts';
+import { foldCountGlsl, packStrip, stripDistance, stripIndexGlsl, stripInside } from './strip-fold.glsl.ts';
 import { translationShift } from './translation.ts';
 
 export const translationGlsl: GlslElementTwin<TranslationElement> = {
@@ -23,15 +15,13 @@ export const translationGlsl: GlslElementTwin<TranslationElement> = {
     const t = translationShift(e);
     return [...strip.slice(0, 5), t[0], t[1], 0];
   },
-  step: glslFunction(
-    'translationStep',
+  step: glslStepBlock(
     `
-bool translationStep(inout vec2 p, inout float s, inout int depth, ${STRIP_ARGS}) {
-  float k = stripIndex(d0, d1, p);
-  if (k == 0.0) return false;
+float k = stripIndex(d0, d1, p);
+if (k != 0.0) {
   p = vec2(p.x - k * d1.y, p.y - k * d1.z);
   depth += foldCount(k);
-  return true;
+  continue;
 }`,
     [stripIndexGlsl, foldCountGlsl],
   ),

@@ -22,6 +22,8 @@ interface PlacedElement {
   readonly element: SceneElement;
   readonly twin: GlslElementTwin;
   /** GLSL expressions of its data vec4s (`u_el[i]` or literals). */
+  readonly data: readonly string[];
+  /** The same, joined as trailing call arguments. */
   readonly args: string;
 }
 
@@ -31,13 +33,18 @@ export function placeElements(elements: readonly SceneElement[], v: SceneValues)
     const twin = glslTwin(element) as GlslElementTwin;
     const data = twin.pack(element);
     if (data.length !== twin.vec4s * 4) throw new Error(`${twin.kind} packed ${data.length} numbers`);
-    return { element, twin, args: v.elementRows(data).join(', ') };
+    const rows = v.elementRows(data);
+    return { element, twin, data: rows, args: rows.join(', ') };
   });
 }
 
 /** Each kind's functions the loop calls (deduplicated by the assembler). */
 export function elementFunctions(placed: readonly PlacedElement[], edges: boolean): GlslFunction[] {
-  return placed.flatMap(({ twin }) => [twin.step, twin.inside, ...(edges ? [twin.boundaryDistance] : [])]);
+  return placed.flatMap(({ twin }) => [
+    ...twin.step.deps,
+    twin.inside,
+    ...(edges ? [twin.boundaryDistance] : []),
+  ]);
 }
 
 /**
@@ -51,8 +58,13 @@ export function emitRunIis(out: SourceBuilder, placed: readonly PlacedElement[],
     `  for (int iteration = 0; iteration < ${maxIter}; ++iteration) {`,
     `    if (depth >= ${maxIter}) break;`,
   );
-  placed.forEach(({ twin, args }, i) => {
-    out.block(i + 1, [`    if (${twin.step.name}(p, s, depth, ${args})) continue;`]);
+  placed.forEach(({ twin, data }, i) => {
+    out.block(i + 1, [
+      `    { // ${twin.kind}`,
+      ...data.map((expr, k) => `      vec4 d${k} = ${expr};`),
+      ...twin.step.code.split('\n').map((line) => `      ${line}`),
+      '    }',
+    ]);
   });
   out.push('    return true;', '  }', '  // depth ≥ maxIter: escaped only if no element holds p.');
   placed.forEach(({ twin, args }, i) => {

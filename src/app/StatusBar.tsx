@@ -18,7 +18,7 @@ export function StatusBar({ diagnostics, render, nodes, edges, saveState, onSele
   const warnings = diagnostics.filter((d) => d.severity === 'warning').length;
   const done = render && render.samples >= render.target;
   return (
-    <footer className="kf-status" aria-label="Status">
+    <footer className="kf-status">
       <button
         type="button"
         className={`kf-status__diag${errors ? ' kf-status__diag--error' : warnings ? ' kf-status__diag--warning' : ''}`}

@@ -26,7 +26,7 @@ export function TopBar(p: Props) {
   useEffect(() => setTitle(p.title), [p.title]);
   return (
     <header className="kf-topbar">
-      <div className="kf-brand" aria-label="Kleinflow">
+      <div className="kf-brand">
         <svg viewBox="0 0 24 24" width="20" height="20" aria-hidden="true">
           <circle cx="12" cy="12" r="9.5" fill="none" stroke="currentColor" strokeWidth="1.5" />
           <circle cx="12" cy="7" r="3.2" fill="#e85d75" />

@@ -19,25 +19,18 @@ import {
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { NodeDef } from '../../nodes/core/define-node.ts';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
-import type { GraphNode } from '../../nodes/graph/document.ts';
 import type { Evaluation } from '../../nodes/graph/evaluate.ts';
 import { registry } from '../../nodes/types/index.ts';
 import type { Change } from '../state/changes.ts';
-import { copyNodes, preparePaste } from '../state/clipboard.ts';
 import { idAllocator } from '../state/ids.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
-import { readClipboard, writeClipboard } from './clipboard-io.ts';
 import { checkConnection, portOfHandle } from './connection.ts';
 import { type EditorActions, EditorContext } from './editor-context.ts';
 import { diagnosticsByNode, type KfNode, type KfNodeData, toFlowEdges, toFlowNodes } from './flow-model.ts';
-import { compatiblePort, type WireFilter } from './fuzzy.ts';
-import { Inspector } from './Inspector.tsx';
-import { sizer, tidyPositions } from './layout.ts';
+import { GraphPanels } from './GraphPanels.tsx';
 import { NodeView } from './NodeView.tsx';
-import { newNode } from './new-node.ts';
 import { Palette } from './Palette.tsx';
 import { addNodeChange, type PaletteState } from './palette-actions.ts';
-import { isTyping } from './typing.ts';
 import { useGraphKeys } from './use-graph-keys.ts';
 import { useRememberedFlag } from './use-remembered-flag.ts';
 
@@ -55,7 +48,7 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
   const store = useStore();
   const doc = useEditorState((s) => s.doc);
   const selection = useEditorState((s) => s.selection);
-  const flow = useReactFlow();
+  const flow = useReactFlow<KfNode, Edge>();
   const [nodes, setNodes] = useState<KfNode[]>([]);
   const [selectedEdges, setSelectedEdges] = useState<ReadonlySet<string>>(new Set());
   const [palette, setPalette] = useState<PaletteState | null>(null);
@@ -221,24 +214,9 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
     toggleInspector,
   });
 
-  /** Tidy layout with the sizes React Flow measured (estimates for nodes not drawn yet): one undo step. */
-  const tidy = () => {
-    const current = store.getState().doc;
-    const estimate = sizer(current, registry);
-    const measured = new Map(nodes.map((n) => [n.id, n.measured]));
-    const size = (n: GraphNode) => {
-      const m = measured.get(n.id);
-      return m?.width && m.height ? { width: m.width, height: m.height } : estimate(n);
-    };
-    store.dispatch({ type: 'move-nodes', moves: tidyPositions(current, size) }, 'tidy layout');
-    requestAnimationFrame(() => void flow.fitView({ padding: 0.2, maxZoom: 1, duration: 200 }));
-  };
-
-  const inspected = selection.size === 1 ? doc.nodes.find((n) => selection.has(n.id)) : undefined;
-  const inspectedData = inspected ? nodes.find((n) => n.id === inspected.id)?.data : undefined;
-
   return (
     <EditorContext.Provider value={actions}>
+      {/* biome-ignore lint/a11y/noStaticElementInteractions: tracks the pointer (where new nodes land); React Flow is the interactive canvas */}
       <div
         className="kf-graph"
         ref={wrapper}
@@ -280,6 +258,7 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
         >
           <Background variant={BackgroundVariant.Dots} gap={22} size={1.2} color="#2c2f36" />
           <MiniMap
+            style={{ width: 150, height: 100 }}
             pannable
             zoomable
             nodeColor={(n) => (n.data as KfNodeData).def?.color ?? '#e5484d'}
@@ -289,49 +268,13 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
           />
           <Controls showInteractive={false} />
         </ReactFlow>
-        {doc.nodes.length === 0 && (
-          <div className="kf-empty-hint">
-            <p>
-              <kbd>Space</kbd> or double-click to add a node
-            </p>
-            <p>or open an example from the menu</p>
-          </div>
-        )}
-        <div className="kf-graph-tools">
-          <button
-            type="button"
-            className="kf-button"
-            title="Arrange the nodes in columns from sources to the render"
-            disabled={doc.nodes.length === 0}
-            onClick={tidy}
-          >
-            Tidy
-          </button>
-          <button
-            type="button"
-            className={`kf-button${inspectorOpen ? ' kf-button--active' : ''}`}
-            aria-pressed={inspectorOpen}
-            title="Show the inspector for the selected node (I)"
-            onClick={toggleInspector}
-          >
-            Inspector
-          </button>
-        </div>
-        {inspectorOpen && !inspected && (
-          <aside className="kf-inspector kf-inspector--empty" aria-label="Inspector">
-            Select one node to inspect it.
-          </aside>
-        )}
-        {inspectorOpen && inspected && (
-          <Inspector
-            node={inspected}
-            connected={inspectedData?.connected ?? new Set()}
-            evaluation={evaluation.nodes.get(inspected.id)}
-            diagnostics={diagnostics.get(inspected.id) ?? []}
-            onLabel={(label) => store.dispatch({ type: 'set-label', nodeId: inspected.id, label }, 'rename')}
-            onClose={() => setInspectorOpen(false)}
-          />
-        )}
+        <GraphPanels
+          nodes={nodes}
+          evaluation={evaluation}
+          diagnostics={diagnostics}
+          inspectorOpen={inspectorOpen}
+          toggleInspector={toggleInspector}
+        />
       </div>
       {palette && (
         <Palette

@@ -8,7 +8,8 @@ import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
 import type { GraphNode } from '../../nodes/graph/document.ts';
 import type { NodeEvaluation } from '../../nodes/graph/evaluate.ts';
 import { useEditorActions } from './editor-context.ts';
-import { hasInlineEditor, InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
+import { hasInlineEditor } from './widgets/inline-editor.ts';
+import { InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
 
 interface Props {
   readonly node: GraphNode;

@@ -10,7 +10,8 @@ import { canConnect, PORT_TYPE_INFO, type PortType } from '../../nodes/core/port
 import { inHandle, outHandle, portOfHandle } from './connection.ts';
 import { useEditorActions } from './editor-context.ts';
 import type { KfNode, KfNodeData } from './flow-model.ts';
-import { hasInlineEditor, InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
+import { hasInlineEditor } from './widgets/inline-editor.ts';
+import { InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
 
 /** "source:point:p1" while a wire is dragged from an output of type point on node p1. */
 function useWireInProgress(): { side: 'source' | 'target'; type: PortType; nodeId: string } | null {

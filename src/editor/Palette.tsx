@@ -2,7 +2,7 @@
  * The search palette: type to fuzzy-find a node type (label, id, category, doc), arrow keys to
  * move, Enter to add it where the palette was opened. Pre-filtered when opened by a dropped wire.
  */
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useMemo, useState } from 'react';
 import type { NodeDef } from '../../nodes/core/define-node.ts';
 import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
 import { searchNodeTypes, type WireFilter } from './fuzzy.ts';
@@ -20,11 +20,6 @@ export function Palette({ defs, at, filter, onPick, onClose }: Props) {
   const [query, setQuery] = useState('');
   const [active, setActive] = useState(0);
   const results = useMemo(() => searchNodeTypes(defs, query, filter), [defs, query, filter]);
-  const list = useRef<HTMLUListElement>(null);
-  useEffect(() => setActive(0), [query]);
-  useEffect(() => {
-    list.current?.querySelector('[aria-selected="true"]')?.scrollIntoView({ block: 'nearest' });
-  }, [active]);
 
   // Keep the palette on screen.
   const left = Math.max(8, Math.min(at.x, window.innerWidth - 360));
@@ -49,7 +44,10 @@ export function Palette({ defs, at, filter, onPick, onClose }: Props) {
           aria-expanded="true"
           aria-controls="kf-palette-list"
           value={query}
-          onChange={(e) => setQuery(e.target.value)}
+          onChange={(e) => {
+            setQuery(e.target.value);
+            setActive(0);
+          }}
           onKeyDown={(e) => {
             if (e.key === 'ArrowDown') setActive((a) => Math.min(results.length - 1, a + 1));
             else if (e.key === 'ArrowUp') setActive((a) => Math.max(0, a - 1));
@@ -66,25 +64,27 @@ export function Palette({ defs, at, filter, onPick, onClose }: Props) {
             wire: {filter.type} {filter.from === 'source' ? 'output' : 'input'}
           </div>
         )}
-        <ul className="kf-palette__list" id="kf-palette-list" role="listbox" ref={list}>
-          {results.length === 0 && <li className="kf-palette__empty">No node type matches “{query}”.</li>}
+        <div className="kf-palette__list" id="kf-palette-list" role="listbox">
+          {results.length === 0 && <div className="kf-palette__empty">No node type matches “{query}”.</div>}
           {results.map((def, i) => (
-            <li
+            <div
               key={def.type}
+              ref={i === active ? (el) => el?.scrollIntoView({ block: 'nearest' }) : undefined}
               role="option"
+              tabIndex={-1}
               aria-selected={i === active}
               className="kf-palette__item"
               onPointerEnter={() => setActive(i)}
               onClick={() => onPick(def)}
-              onKeyDown={undefined}
+              onKeyDown={(e) => e.key === 'Enter' && onPick(def)}
             >
               <span className="kf-dot" style={{ background: def.color }} />
               <span className="kf-palette__label">{def.label}</span>
               <span className="kf-palette__category">{def.category}</span>
               <span className="kf-palette__doc">{def.doc}</span>
-            </li>
+            </div>
           ))}
-        </ul>
+        </div>
       </div>
     </div>
   );

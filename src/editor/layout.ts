@@ -2,9 +2,10 @@
  * Tidy layout: nodes in columns by their depth in the graph (sources left, render right), stacked
  * without overlap. Used when a loaded document's nodes overlap, and by the Tidy button.
  */
-import type { NodeDef } from '../../nodes/core/define-node.ts';
+import type { InputSpec, NodeDef } from '../../nodes/core/define-node.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc, GraphNode } from '../../nodes/graph/document.ts';
+import { hasInlineEditor } from './widgets/inline-editor.ts';
 
 export interface Size {
   readonly width: number;
@@ -20,9 +21,11 @@ const READOUT = 27;
 const GAP_X = 80;
 const GAP_Y = 28;
 
-/** Rows an unconnected input's widget takes (a line or circle editor is two rows). */
-const inputRows = (def: NodeDef, port: string, connected: boolean) =>
-  !connected && (def.inputs[port].type === 'line' || def.inputs[port].type === 'circle') ? 2 : 1;
+/** Rows an input takes: a line or circle editor is two rows, everything else one. */
+function inputRows(spec: InputSpec, value: unknown, connected: boolean): number {
+  const twoRows = spec.type === 'line' || spec.type === 'circle';
+  return twoRows && !connected && hasInlineEditor(spec, value) ? 2 : 1;
+}
 
 /** The height the node component will have, estimated from its declaration. */
 export function estimateSize(
@@ -32,7 +35,8 @@ export function estimateSize(
 ): Size {
   if (!def) return { width: NODE_WIDTH, height: HEADER + BODY_PADDING + ROW * 3 };
   let rows = Object.keys(def.outputs).length + Object.keys(def.params).length;
-  for (const port of Object.keys(def.inputs)) rows += inputRows(def, port, connected.has(port));
+  for (const [port, spec] of Object.entries(def.inputs))
+    rows += inputRows(spec, node.params[port], connected.has(port));
   // Most nodes show a read-out; reserving its row for all keeps the estimate on the safe side.
   return { width: NODE_WIDTH, height: HEADER + BODY_PADDING + rows * ROW + READOUT };
 }

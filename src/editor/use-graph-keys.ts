@@ -2,7 +2,7 @@
  * Keyboard of the graph editor: palette (Space, Ctrl K), clipboard (Ctrl C/X/V), duplicate
  * (Ctrl D), select all (Ctrl A) and the inspector (I). Undo/redo live in the app shell.
  */
-import type { ReactFlowInstance } from '@xyflow/react';
+import type { Edge, ReactFlowInstance } from '@xyflow/react';
 import { type RefObject, useEffect } from 'react';
 import { type ClipboardData, copyNodes, preparePaste } from '../state/clipboard.ts';
 import type { EditorStore } from '../state/store.ts';
@@ -14,7 +14,7 @@ type Point = { x: number; y: number };
 
 interface Options {
   readonly store: EditorStore;
-  readonly flow: ReactFlowInstance<KfNode>;
+  readonly flow: ReactFlowInstance<KfNode, Edge>;
   /** Last pointer position over the graph (css px), null when outside. */
   readonly pointer: RefObject<Point | null>;
   readonly wrapper: RefObject<HTMLDivElement | null>;

@@ -12,7 +12,9 @@ import { parseDocumentText } from '../../nodes/graph/load.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { compile } from '../../shader-gen/compile.ts';
 
-const RUNS = 9;
+const RUNS = 15;
+/** Untimed runs first, so the JIT has compiled the hot paths (an editor evaluates on every drag). */
+const WARMUP = 5;
 const SIZES = [100, 1_000, 5_000] as const;
 /** Evaluating this many nodes should take under TARGET_MS. */
 const TARGET = { nodes: 1_000, ms: 5 } as const;
@@ -21,7 +23,7 @@ const TARGET = { nodes: 1_000, ms: 5 } as const;
 const BLOCK = 10;
 
 /**
- * About `nodes` nodes in blocks of ten: points P, Q, R; line PQ → reflection; numbers n1 → n2 →
+ * Exactly `nodes` nodes in blocks of ten (and a few loose numbers to make up the count): points P, Q, R; line PQ → reflection; numbers n1 → n2 →
  * n3 (a chain, n3 the radius) and circle (R, n3) → inversion; both elements into the render node.
  * Blocks sit on a spiral so no two mirrors coincide.
  */
@@ -60,30 +62,44 @@ export function scaleGraph(nodes: number): GraphDoc {
     wire(`m${b}.element`, 'out.elements');
     wire(`i${b}.element`, 'out.elements');
   }
+  // Pad with loose number nodes to exactly `nodes` (the render node included).
+  for (let i = out.length + 1; i < nodes; i++) add(`pad${i}`, 'number', { value: i });
   add('out', 'render', { maxIterations: 50 });
-  return { format: 'kleinflow', version: 1, meta: { title: `scale ${nodes}` }, nodes: out, edges, view: { center: [0, 0], scale: 8 } };
+  return {
+    format: 'kleinflow',
+    version: 1,
+    meta: { title: `scale ${nodes}` },
+    nodes: out,
+    edges,
+    view: { center: [0, 0], scale: 8 },
+  };
 }
 
 const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
-function time(fn: () => void): number {
-  const samples: number[] = [];
-  fn(); // warm-up (JIT)
+/** Median wall-clock and CPU milliseconds of RUNS calls (CPU time is steadier on a shared machine). */
+function time(fn: () => void): { wall: number; cpu: number } {
+  const wall: number[] = [];
+  const cpu: number[] = [];
+  for (let i = 0; i < WARMUP; i++) fn();
   for (let i = 0; i < RUNS; i++) {
+    const c0 = process.cpuUsage();
     const t0 = performance.now();
     fn();
-    samples.push(performance.now() - t0);
+    wall.push(performance.now() - t0);
+    const c = process.cpuUsage(c0);
+    cpu.push((c.user + c.system) / 1000);
   }
-  return median(samples);
+  return { wall: median(wall), cpu: median(cpu) };
 }
 
 export interface ScaleRow {
   readonly nodes: number;
   readonly edges: number;
   readonly elements: number;
-  readonly loadMs: number;
-  readonly evaluateMs: number;
-  readonly compileMs: number;
+  readonly load: { wall: number; cpu: number };
+  readonly evaluate: { wall: number; cpu: number };
+  readonly compile: { wall: number; cpu: number };
 }
 
 export function measure(nodes: number): ScaleRow {
@@ -99,23 +115,28 @@ export function measure(nodes: number): ScaleRow {
     nodes: loaded.doc.nodes.length,
     edges: loaded.doc.edges.length,
     elements: scene.elements.length,
-    loadMs: time(() => parseDocumentText(text)),
-    evaluateMs: time(() => evaluateGraph(loaded.doc, registry)),
-    compileMs: time(() => compile(scene)),
+    load: time(() => parseDocumentText(text)),
+    evaluate: time(() => evaluateGraph(loaded.doc, registry)),
+    compile: time(() => compile(scene)),
   };
 }
 
+const ms = (t: { wall: number; cpu: number }) => `${t.wall.toFixed(2)} (${t.cpu.toFixed(2)})`.padStart(15);
+
 export async function run(): Promise<void> {
-  console.log(`\nGraph scale (median of ${RUNS} runs; scene capped at ${LIMITS.maxElements} elements)`);
-  console.log('nodes  edges  elements  load ms  evaluate ms  compile ms');
+  console.log(
+    `\nGraph scale: median of ${RUNS} runs, wall ms (CPU ms); scene capped at ${LIMITS.maxElements} elements`,
+  );
+  console.log(
+    `${'nodes  edges  elements'} ${'load'.padStart(15)} ${'evaluate'.padStart(15)} ${'compile'.padStart(15)}`,
+  );
   for (const n of SIZES) {
     const r = measure(n);
     const cols = [r.nodes, r.edges, r.elements].map((v, i) => String(v).padStart([5, 6, 9][i]));
-    const ms = [r.loadMs, r.evaluateMs, r.compileMs].map((v, i) => v.toFixed(2).padStart([8, 12, 11][i]));
-    console.log(`${cols.join(' ')} ${ms.join(' ')}`);
+    console.log(`${cols.join(' ')} ${ms(r.load)} ${ms(r.evaluate)} ${ms(r.compile)}`);
     if (n === TARGET.nodes) {
-      const verdict = r.evaluateMs < TARGET.ms ? 'within' : 'OVER';
-      console.log(`       (evaluating ${n} nodes: ${verdict} the ${TARGET.ms} ms target)`);
+      const verdict = r.evaluate.cpu < TARGET.ms ? 'within' : 'OVER';
+      console.log(`       (evaluating ${n} nodes: ${verdict} the ${TARGET.ms} ms target, by CPU time)`);
     }
   }
 }

@@ -123,3 +123,20 @@ export async function renderPixels(page: Page): Promise<PixelStats> {
 /** Mean absolute difference of two thumbnails (0 = identical). */
 export const thumbDiff = (a: PixelStats, b: PixelStats) =>
   a.thumb.reduce((sum, v, i) => sum + Math.abs(v - b.thumb[i]), 0) / a.thumb.length;
+
+/** A point of the graph pane with empty canvas around it (60 px each way), scanning from the top-left. */
+export async function emptyCanvasPoint(page: Page): Promise<{ x: number; y: number }> {
+  const found = await page.evaluate(() => {
+    const pane = document.querySelector('.kf-graph')!.getBoundingClientRect();
+    const free = (x: number, y: number) =>
+      document.elementFromPoint(x, y)?.classList.contains('react-flow__pane') ?? false;
+    for (let y = pane.top + 120; y < pane.bottom - 160; y += 40) {
+      for (let x = pane.left + 80; x < pane.right - 220; x += 40) {
+        if ([-60, 0, 60].every((dx) => [-60, 0, 60].every((dy) => free(x + dx, y + dy)))) return { x, y };
+      }
+    }
+    return null;
+  });
+  if (!found) throw new Error('no empty canvas left in the graph pane');
+  return found;
+}

@@ -9,11 +9,13 @@ import type { Browser, BrowserContext, Page } from 'playwright-core';
 import { build, type PreviewServer, preview } from 'vite';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
+import { decodePng, readPngText } from '../../src/io/png.ts';
 import { launchChromium } from '../support/browser.ts';
 import {
   addNode,
   connect,
   edgeCount,
+  emptyCanvasPoint,
   graphBox,
   handle,
   nodeCount,
@@ -103,6 +105,48 @@ describe('editor', () => {
     expect(await nodeCount(page)).toBe(nodes + 1);
     await connect(page, refl, 'element', 'out', 'elements');
     await expect.poll(() => edgeCount(page)).toBe(edges + 1);
+  });
+
+  it('a wire dropped on empty canvas opens the palette for fitting types and wires the pick', async () => {
+    const nodes = await nodeCount(page);
+    const edges = await edgeCount(page);
+    const refl = await page.locator('.react-flow__node.selected').getAttribute('data-id');
+    const from = (await handle(page, refl!, 'in', 'line').boundingBox())!;
+    const empty = await emptyCanvasPoint(page);
+    await page.mouse.move(from.x + 5, from.y + 5);
+    await page.mouse.down();
+    await page.mouse.move((from.x + empty.x) / 2, (from.y + empty.y) / 2, { steps: 5 });
+    await page.mouse.move(empty.x, empty.y, { steps: 5 });
+    await page.mouse.up();
+    const input = page.getByRole('combobox', { name: 'Search node types' });
+    await input.waitFor();
+    const offered = await page.getByRole('option').allTextContents();
+    expect(offered.length).toBeGreaterThan(0);
+    expect(offered.some((t) => t.startsWith('Line'))).toBe(true);
+    expect(offered.some((t) => t.startsWith('Point'))).toBe(false); // a point gives no line
+    await input.fill('line');
+    await page.keyboard.press('Enter');
+    await expect.poll(() => nodeCount(page)).toBe(nodes + 1);
+    await expect.poll(() => edgeCount(page)).toBe(edges + 1);
+    // Delete removes the new node (and its wire) as one step; undo brings both back.
+    await page.keyboard.press('Delete');
+    await expect.poll(() => nodeCount(page)).toBe(nodes);
+    expect(await edgeCount(page)).toBe(edges);
+    await page.keyboard.press('Control+z');
+    await expect.poll(() => edgeCount(page)).toBe(edges + 1);
+  });
+
+  it('scrubbing a number by dragging its label is one undo step', async () => {
+    const field = nodeEl(page, 'k').locator('input[aria-label="size"]');
+    const before = await field.inputValue();
+    const label = (await nodeEl(page, 'k').locator('.kf-scrub', { hasText: 'size' }).boundingBox())!;
+    await page.mouse.move(label.x + 5, label.y + label.height / 2);
+    await page.mouse.down();
+    for (let dx = 10; dx <= 60; dx += 10) await page.mouse.move(label.x + 5 + dx, label.y + label.height / 2);
+    await page.mouse.up();
+    await expect.poll(() => field.inputValue()).not.toBe(before);
+    await page.keyboard.press('Control+z');
+    await expect.poll(() => field.inputValue()).toBe(before);
   });
 
   it('refuses an invalid connection, dimming the ports that cannot take it', async () => {
@@ -223,6 +267,47 @@ describe('editor', () => {
       expect(saved.doc.edges).toHaveLength(12);
     }
   }, 150_000);
+
+  it('exports a PNG that carries its graph, and opening that PNG brings the graph back', async () => {
+    await page.getByRole('button', { name: 'Export' }).click();
+    const [download] = await Promise.all([
+      page.waitForEvent('download', { timeout: 120_000 }),
+      page.getByRole('menuitem', { name: 'PNG 1920 × 1080' }).click(),
+    ]);
+    const path = (await download.path())!;
+    const bytes = new Uint8Array(readFileSync(path));
+    const png = decodePng(bytes);
+    expect([png.width, png.height]).toEqual([1920, 1080]);
+    const embedded = parseDocumentText(readPngText(bytes)!.kleinflow);
+    expect(embedded.ok && embedded.doc.nodes.length).toBe(10);
+
+    await page.getByRole('button', { name: 'New' }).click();
+    await expect.poll(() => nodeCount(page)).toBe(0);
+    await page
+      .getByTestId('open-file')
+      .setInputFiles({ name: 'star333.png', mimeType: 'image/png', buffer: Buffer.from(bytes) });
+    await expect.poll(() => nodeCount(page)).toBe(10);
+    expect(await edgeCount(page)).toBe(12);
+  }, 150_000);
+
+  it('an unreadable autosave is reported and offered for download, not thrown away', async () => {
+    await page.evaluate(() =>
+      localStorage.setItem('kleinflow.autosave', '{"format":"kleinflow","nodes":[oops'),
+    );
+    await page.reload();
+    const banner = page.getByRole('alert').filter({ hasText: 'could not be restored' });
+    await banner.waitFor();
+    const [download] = await Promise.all([
+      page.waitForEvent('download'),
+      banner.getByRole('button', { name: 'Download it' }).click(),
+    ]);
+    expect(readFileSync((await download.path())!, 'utf8')).toBe('{"format":"kleinflow","nodes":[oops');
+    expect(await page.evaluate(() => localStorage.getItem('kleinflow.autosave.unreadable'))).toContain(
+      'oops',
+    );
+    // The editor still works: it opened the default example.
+    expect(await nodeCount(page)).toBeGreaterThan(0);
+  });
 
   it('logged no console errors and no page errors', () => {
     expect(problems).toEqual([]);

@@ -23,7 +23,9 @@ function sampleFiles(): { path: string; text: string }[] {
     ...fc.sample(skeletonDocument, { seed: 7, numRuns: 10 }).map((v) => JSON.stringify(v)),
     ...fc.sample(mutatedExample(readExamples()), { seed: 7, numRuns: 10 }).map((m) => m.text),
   ];
-  texts[0] = `${'['.repeat(10_000)}${']'.repeat(10_000)}`; // and one pathological file
+  // And pathological files: 10,000-level nesting, a 10 MB title.
+  texts[0] = `${'['.repeat(10_000)}${']'.repeat(10_000)}`;
+  texts[1] = JSON.stringify({ ...readExamples()[0].doc, meta: { title: 'x'.repeat(10 * 1024 * 1024) } });
   return texts.map((text, i) => {
     const path = join(dir, `fuzz-${String(i).padStart(2, '0')}.kleinflow.json`);
     writeFileSync(path, text);

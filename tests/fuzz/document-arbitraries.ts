@@ -16,8 +16,24 @@ type JsonObject = { [key: string]: Json };
 
 /** Numbers at the edges of float64 and of what the geometry accepts. */
 export const EXTREME_NUMBERS = [
-  0, -0, 1, -1, 2, 0.5, 1e308, -1e308, 5e-324, -5e-324, 1e-300, 1e300, 1.7976931348623157e308,
-  Number.MAX_SAFE_INTEGER, 1e6, 1e-9, 3.4028235e38, 1e39,
+  0,
+  -0,
+  1,
+  -1,
+  2,
+  0.5,
+  1e308,
+  -1e308,
+  5e-324,
+  -5e-324,
+  1e-300,
+  1e300,
+  1.7976931348623157e308,
+  Number.MAX_SAFE_INTEGER,
+  1e6,
+  1e-9,
+  3.4028235e38,
+  1e39,
 ] as const;
 
 /** Strings that a careless reader might turn into numbers or special values. */
@@ -26,7 +42,9 @@ const TRICKY_STRINGS = ['NaN', 'Infinity', '-Infinity', '1e999', '', ' ', '0x10'
 const TYPES = registry.all.map((d) => d.type);
 const INPUT_NAMES = [...new Set(registry.all.flatMap((d) => Object.keys(d.inputs)))];
 const OUTPUT_NAMES = [...new Set(registry.all.flatMap((d) => Object.keys(d.outputs)))];
-const PARAM_NAMES = [...new Set(registry.all.flatMap((d) => [...Object.keys(d.inputs), ...Object.keys(d.params)]))];
+const PARAM_NAMES = [
+  ...new Set(registry.all.flatMap((d) => [...Object.keys(d.inputs), ...Object.keys(d.params)])),
+];
 
 /** A value for a hostile field: extreme numbers, tricky strings, or any small JSON. */
 export const hostileValue: fc.Arbitrary<Json> = fc.oneof(
@@ -42,7 +60,10 @@ function json(v: unknown): Json {
   return JSON.parse(JSON.stringify(v)) as Json;
 }
 
-const nodeId = fc.oneof(fc.constantFrom('a', 'b', 'c', 'd', 'e', 'out', 't'), fc.string({ minLength: 1, maxLength: 4 }));
+const nodeId = fc.oneof(
+  fc.constantFrom('a', 'b', 'c', 'd', 'e', 'out', 't'),
+  fc.string({ minLength: 1, maxLength: 4 }),
+);
 
 /** Right skeleton, arbitrary contents: real types, real port names, random wiring and params. */
 export const skeletonDocument: fc.Arbitrary<Json> = fc
@@ -88,9 +109,17 @@ export function readExamples(): Example[] {
 function slots(root: Json): [Json[] | JsonObject, string | number][] {
   const out: [Json[] | JsonObject, string | number][] = [];
   const walk = (v: Json) => {
-    if (Array.isArray(v)) v.forEach((x, i) => (out.push([v, i]), walk(x)));
-    else if (v !== null && typeof v === 'object')
-      for (const [k, x] of Object.entries(v)) out.push([v, k]), walk(x);
+    if (Array.isArray(v)) {
+      for (let i = 0; i < v.length; i++) {
+        out.push([v, i]);
+        walk(v[i]);
+      }
+    } else if (v !== null && typeof v === 'object') {
+      for (const [k, x] of Object.entries(v)) {
+        out.push([v, k]);
+        walk(x);
+      }
+    }
   };
   walk(root);
   return out;
@@ -143,7 +172,8 @@ function compatibleEdge(from: Node, to: Node, id: string): Edge | undefined {
   if (!src || !dst) return undefined;
   for (const [out, o] of Object.entries(src.outputs))
     for (const [inp, i] of Object.entries(dst.inputs))
-      if (canConnect(o.type, i.type)) return { id, from: { node: from.id, port: out }, to: { node: to.id, port: inp } };
+      if (canConnect(o.type, i.type))
+        return { id, from: { node: from.id, port: out }, to: { node: to.id, port: inp } };
   return undefined;
 }
 
@@ -177,19 +207,33 @@ export function applyMutation(doc: JsonObject, m: Mutation): void {
       return;
     }
     case 'extremeNumber': {
-      const numeric = slots(doc).filter(([c, k]) => typeof (c as Record<string | number, Json>)[k] === 'number');
+      const numeric = slots(doc).filter(
+        ([c, k]) => typeof (c as Record<string | number, Json>)[k] === 'number',
+      );
       const s = at(numeric, m.pick);
-      if (s) (s[0] as Record<string | number, Json>)[s[1]] = EXTREME_NUMBERS[m.pick2 % EXTREME_NUMBERS.length];
+      if (s)
+        (s[0] as Record<string | number, Json>)[s[1]] = EXTREME_NUMBERS[m.pick2 % EXTREME_NUMBERS.length];
       return;
     }
     case 'danglingEdge': {
       const to = at(nodes, m.pick);
-      newEdge({ id: `fz${m.pick}`, from: { node: `ghost${m.word}`, port: 'point' }, to: { node: to?.id ?? 'x', port: m.word } });
+      newEdge({
+        id: `fz${m.pick}`,
+        from: { node: `ghost${m.word}`, port: 'point' },
+        to: { node: to?.id ?? 'x', port: m.word },
+      });
       return;
     }
     case 'selfEdge': {
       const n = at(nodes, m.pick);
-      if (n) newEdge(compatibleEdge(n, n, `fz${m.pick}`) ?? { id: `fz${m.pick}`, from: { node: n.id, port: m.word }, to: { node: n.id, port: m.word } });
+      if (n)
+        newEdge(
+          compatibleEdge(n, n, `fz${m.pick}`) ?? {
+            id: `fz${m.pick}`,
+            from: { node: n.id, port: m.word },
+            to: { node: n.id, port: m.word },
+          },
+        );
       return;
     }
     case 'cycleEdge': {

@@ -24,7 +24,12 @@ function wiredDoc(type: string, params: Record<string, unknown>): GraphDoc {
   const nodes: GraphNode[] = [node('n', type, params), node('out', 'render')];
   const edges: GraphEdge[] = [];
   for (const [port, spec] of Object.entries(def.outputs)) {
-    const to = spec.type === 'element' ? 'elements' : spec.type === 'circle' && !edges.some((e) => e.to.port === 'clip') ? 'clip' : null;
+    const to =
+      spec.type === 'element'
+        ? 'elements'
+        : spec.type === 'circle' && !edges.some((e) => e.to.port === 'clip')
+          ? 'clip'
+          : null;
     if (to) edges.push({ id: `e${edges.length}`, from: { node: 'n', port }, to: { node: 'out', port: to } });
   }
   return doc(nodes, edges);
@@ -60,9 +65,21 @@ describe('degenerate constructions are reported on their node', () => {
     ['perpendicular to a degenerate line', 'perpendicular-line', { line: line(0, 0, 0, 0) }],
     ['intersection of parallel lines', 'intersect-lines', { l1: line(0, 0, 1, 0), l2: line(0, 1, 1, 1) }],
     ['intersection of a line with itself', 'intersect-lines', { l1: line(0, 0, 1, 0), l2: line(0, 0, 1, 0) }],
-    ['intersection with a degenerate line', 'intersect-lines', { l1: line(0, 0, 0, 0), l2: line(0, 1, 1, 1) }],
-    ['line missing the circle', 'intersect-line-circle', { line: line(-2, 3, 2, 3), circle: circle(0, 0, 1) }],
-    ['degenerate line and a circle', 'intersect-line-circle', { line: line(0, 0, 0, 0), circle: circle(0, 0, 1) }],
+    [
+      'intersection with a degenerate line',
+      'intersect-lines',
+      { l1: line(0, 0, 0, 0), l2: line(0, 1, 1, 1) },
+    ],
+    [
+      'line missing the circle',
+      'intersect-line-circle',
+      { line: line(-2, 3, 2, 3), circle: circle(0, 0, 1) },
+    ],
+    [
+      'degenerate line and a circle',
+      'intersect-line-circle',
+      { line: line(0, 0, 0, 0), circle: circle(0, 0, 1) },
+    ],
     ['concentric circles meet nowhere', 'intersect-circles', { c1: circle(0, 0, 1), c2: circle(0, 0, 2) }],
     ['identical circles', 'intersect-circles', { c1: circle(0, 0, 1), c2: circle(0, 0, 1) }],
     ['disjoint circles', 'intersect-circles', { c1: circle(0, 0, 1), c2: circle(5, 0, 1) }],
@@ -123,17 +140,26 @@ describe('special but valid configurations stay finite', () => {
     ['Möbius with concentric circles', 'mobius', { c1: circle(0, 0, 1), c2: circle(0, 0, 2) }],
     ['Möbius with circles far apart', 'mobius', { c1: circle(-1e6, 0, 1), c2: circle(1e6, 0, 1) }],
     ['Möbius with tiny circles', 'mobius', { c1: circle(0, 0, 1e-150), c2: circle(1e-150, 0, 2e-150) }],
-    ['line tangent to the circle', 'intersect-line-circle', { line: line(-2, 1, 2, 1), circle: circle(0, 0, 1) }],
+    [
+      'line tangent to the circle',
+      'intersect-line-circle',
+      { line: line(-2, 1, 2, 1), circle: circle(0, 0, 1) },
+    ],
     ['tangent circles meet once', 'intersect-circles', { c1: circle(0, 0, 1), c2: circle(2, 0, 1) }],
     ['kaleidoscope with ideal vertices', 'kaleidoscope', { p: 2, q: 0, r: 0 }],
     ['kaleidoscope (2, 2, 0)', 'kaleidoscope', { p: 2, q: 2, r: 0 }],
     ['Euclidean kaleidoscope (3, 3, 3)', 'kaleidoscope', { p: 3, q: 3, r: 3 }],
-    ['parabolic matrix', 'mobius-matrix', { a_re: 1, a_im: 0, b_re: 1, b_im: 0, c_re: 0, c_im: 0, d_re: 1, d_im: 0 }],
+    [
+      'parabolic matrix',
+      'mobius-matrix',
+      { a_re: 1, a_im: 0, b_re: 1, b_im: 0, c_re: 0, c_im: 0, d_re: 1, d_im: 0 },
+    ],
   ];
   for (const [title, type, params] of cases) {
     it.skipIf(!registry.get(type))(title, () => {
       const report = run(type, params);
-      for (const d of report.diagnostics.filter((x) => x.severity !== 'info')) expect(d.path || d.nodeId).toBeTruthy();
+      for (const d of report.diagnostics.filter((x) => x.severity !== 'info'))
+        expect(d.path || d.nodeId).toBeTruthy();
     });
   }
 });
@@ -149,12 +175,15 @@ describe('every node type with an extreme number in one input at a time', () => 
         const variants: unknown[] = [];
         if (spec.type === 'number') variants.push(...EXTREMES);
         if (spec.type === 'point') for (const v of EXTREMES) variants.push([v, 0], [0, v]);
-        if (spec.type === 'circle') for (const v of EXTREMES) variants.push({ c: [v, 0], r: 1 }, { c: [0, 0], r: v });
-        if (spec.type === 'line') for (const v of EXTREMES) variants.push({ a: [v, 0], b: [1, 1] }, { a: [0, 0], b: [0, v] });
+        if (spec.type === 'circle')
+          for (const v of EXTREMES) variants.push({ c: [v, 0], r: 1 }, { c: [0, 0], r: v });
+        if (spec.type === 'line')
+          for (const v of EXTREMES) variants.push({ a: [v, 0], b: [1, 1] }, { a: [0, 0], b: [0, v] });
         for (const value of variants) {
           const report = run(def.type, { [name]: value });
           // Refused values say so on the node: an error or warning carrying its id.
-          for (const d of report.diagnostics.filter((x) => x.severity !== 'info')) expect(d.path || d.nodeId).toBeTruthy();
+          for (const d of report.diagnostics.filter((x) => x.severity !== 'info'))
+            expect(d.path || d.nodeId).toBeTruthy();
         }
       }
       for (const [name, spec] of Object.entries(def.params)) {

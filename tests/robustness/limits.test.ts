@@ -14,6 +14,7 @@ import { compile } from '../../shader-gen/compile.ts';
 import { uniformRows } from '../../shader-gen/glsl/values.ts';
 import { parseSizeOption } from '../../src/cli/args.ts';
 import { decodeShareFragment, encodeShareFragment } from '../../src/io/share-url.ts';
+import { scaleGraph } from '../bench/scale.ts';
 import { checkPipeline } from '../fuzz/pipeline-check.ts';
 import { doc, edge, node } from '../nodes/support/doc.ts';
 
@@ -52,6 +53,15 @@ describe('document size', () => {
     expect(r.ok).toBe(true);
   });
 
+  it(`evaluates and compiles a graph of exactly ${LIMITS.maxNodes} nodes, warning only about the element cap`, () => {
+    const report = checkPipeline({ text: JSON.stringify(scaleGraph(LIMITS.maxNodes)) });
+    expect(report.problems).toEqual([]);
+    expect(report.stage).toBe('compile');
+    expect(report.scene!.elements).toHaveLength(LIMITS.maxElements);
+    const notable = report.diagnostics.filter((d) => d.severity !== 'info').map((d) => d.code);
+    expect([...new Set(notable)].sort()).toEqual(['KF401', 'KF404']);
+  }, 60_000);
+
   it('lists at most 50 schema problems and counts the rest', () => {
     const nodes = Array.from({ length: 200 }, (_, i) => ({ id: `n${i}`, type: 'point', params: {} }));
     const r = loadDocument({ ...doc([]), nodes });
@@ -62,10 +72,22 @@ describe('document size', () => {
   });
 
   it.each([
-    ['a node id', (d: ReturnType<typeof doc>) => ({ ...d, nodes: [node('x'.repeat(201), 'point')] }), 'nodes[0].id'],
-    ['a label', (d: ReturnType<typeof doc>) => ({ ...d, nodes: [{ ...node('p', 'point'), label: 'x'.repeat(201) }] }), 'nodes[0].label'],
+    [
+      'a node id',
+      (d: ReturnType<typeof doc>) => ({ ...d, nodes: [node('x'.repeat(201), 'point')] }),
+      'nodes[0].id',
+    ],
+    [
+      'a label',
+      (d: ReturnType<typeof doc>) => ({ ...d, nodes: [{ ...node('p', 'point'), label: 'x'.repeat(201) }] }),
+      'nodes[0].label',
+    ],
     ['the title', (d: ReturnType<typeof doc>) => ({ ...d, meta: { title: 'x'.repeat(501) } }), 'meta.title'],
-    ['the description', (d: ReturnType<typeof doc>) => ({ ...d, meta: { description: 'x'.repeat(20_001) } }), 'meta.description'],
+    [
+      'the description',
+      (d: ReturnType<typeof doc>) => ({ ...d, meta: { description: 'x'.repeat(20_001) } }),
+      'meta.description',
+    ],
   ])('refuses an over-long %s with its path', (_what, mutate, path) => {
     const r = loadDocument(mutate(doc([])));
     expect(r.ok).toBe(false);
@@ -118,7 +140,10 @@ describe('scene size', () => {
   it('compile itself truncates an over-long scene it is handed, naming the first dropped element', () => {
     const ev = evaluateGraph(inversionsDoc(3), registry);
     const one = ev.scene.elements[0];
-    const big: Scene = { ...ev.scene, elements: Array.from({ length: n }, (_, i) => ({ ...one, nodeId: `x${i}` })) };
+    const big: Scene = {
+      ...ev.scene,
+      elements: Array.from({ length: n }, (_, i) => ({ ...one, nodeId: `x${i}` })),
+    };
     const program = compile(big);
     const d = program.diagnostics.find((x) => x.code === 'KF401');
     expect(d).toMatchObject({ nodeId: `x${LIMITS.maxElements}` });
@@ -135,6 +160,38 @@ describe('scene size', () => {
     expect(d!.message).toMatch(/uniform vectors, more than the 208/);
     const rows = program.uniforms.reduce((sum, u) => sum + uniformRows(u), 0);
     expect(rows).toBeLessThanOrEqual(LIMITS.maxUniformVectors);
+  });
+});
+
+describe('numbers the GPU cannot compute with', () => {
+  it.each([
+    [1e20, 0.5],
+    [0, 3.5e38],
+    [-1e308, 1],
+  ])('circle at (%s, 0) with radius %s: compiles, warns KF405 on the element’s node', (x, r) => {
+    const d = doc(
+      [node('c', 'circle', { center: [x, 0], radius: r }), node('i', 'inversion'), node('out', 'render')],
+      [edge('e1', 'c.circle', 'i.circle'), edge('e2', 'i.element', 'out.elements')],
+    );
+    const report = checkPipeline({ value: d });
+    expect(report.problems).toEqual([]);
+    const program = compile(report.scene!);
+    const warning = program.diagnostics.find((x) => x.code === 'KF405');
+    expect(warning).toMatchObject({ severity: 'warning', nodeId: 'i' });
+    expect(warning!.message).toContain('beyond what the GPU computes with (±1e+19)');
+  });
+
+  it(`stays quiet up to ${LIMITS.gpuMaxMagnitude}`, () => {
+    const d = doc(
+      [
+        node('c', 'circle', { center: [LIMITS.gpuMaxMagnitude, 0], radius: 1 }),
+        node('i', 'inversion'),
+        node('out', 'render'),
+      ],
+      [edge('e1', 'c.circle', 'i.circle'), edge('e2', 'i.element', 'out.elements')],
+    );
+    const program = compile(evaluateGraph(d, registry).scene);
+    expect(program.diagnostics.filter((x) => x.code === 'KF405')).toEqual([]);
   });
 });
 

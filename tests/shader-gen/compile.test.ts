@@ -170,6 +170,7 @@ describe('determinism and #line markers', () => {
   });
 
   it('each element block starts with #line 1 <index + 1>, and lineMap names its node', () => {
+    // The loop holds each element's step inline; its inside and edge distance are calls.
     const scene = HAND_MADE_SCENES['every-kind-cosine-edges-clip'];
     const p = compile(scene);
     const lines = p.source.split('\n');
@@ -178,7 +179,7 @@ describe('determinism and #line markers', () => {
       // Each element has its blocks in the loop (step), after it (inside) and in the edge distance.
       const blocks = lines.flatMap((l, k) => (l === `#line 1 ${i + 1}` ? [lines[k + 1]] : []));
       expect(blocks).toHaveLength(3);
-      expect(blocks[0]).toContain(`if (${glslTwin(e).step.name}(p, s, depth,`);
+      expect(blocks[0]).toBe(`    { // ${e.kind}`);
       expect(blocks[1]).toContain(`if (${glslTwin(e).inside.name}(p,`);
       expect(blocks[2]).toContain(`${glslTwin(e).boundaryDistance.name}(p,`);
     });

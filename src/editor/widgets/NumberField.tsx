@@ -80,7 +80,7 @@ export function NumberField({ label, value, spec, onEdit, title, compact }: Prop
           onPointerMove={onPointerMove}
           onPointerUp={onPointerUp}
           onPointerCancel={onPointerUp}
-          title={`${title ? `${title}\n` : ''}Drag to change (Shift: finer)`}
+          title={`${label}${title ? ` — ${title}` : ''}\nDrag to change (Shift: finer)`}
         >
           {label}
         </span>

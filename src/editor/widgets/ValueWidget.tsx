@@ -5,11 +5,9 @@
 import type { InputSpec, ParamSpec } from '../../../nodes/core/define-node.ts';
 import type { Circle, Line, Vec2 } from '../../../nodes/core/values.ts';
 import type { OnEdit } from './edit.ts';
+import { isVec2 } from './inline-editor.ts';
 import { NumberField } from './NumberField.tsx';
 import { ColorField, EnumField, ToggleField } from './simple-fields.tsx';
-
-const isVec2 = (v: unknown): v is Vec2 =>
-  Array.isArray(v) && v.length === 2 && typeof v[0] === 'number' && typeof v[1] === 'number';
 
 function PointField({
   label,
@@ -43,25 +41,6 @@ function PointField({
       </span>
     </div>
   );
-}
-
-/** Whether an unconnected input gets an inline editor (types with a value and a usable default). */
-export function hasInlineEditor(spec: InputSpec, value: unknown): boolean {
-  const v = value === undefined ? spec.default : value;
-  switch (spec.type) {
-    case 'number':
-      return typeof v === 'number';
-    case 'point':
-      return isVec2(v);
-    case 'color':
-      return typeof v === 'string';
-    case 'line':
-      return isVec2((v as Line | undefined)?.a) && isVec2((v as Line | undefined)?.b);
-    case 'circle':
-      return isVec2((v as Circle | undefined)?.c) && typeof (v as Circle).r === 'number';
-    default:
-      return false;
-  }
 }
 
 interface InputProps {

@@ -12,25 +12,23 @@ uniform vec2 u_jitter;
 out vec4 outProbe;
 
 const int MAX_ITER = 300;
-// The four inversion circles through the kissing points, in graph order: (centre, radius²).
-const vec3 CIRCLES[4] = vec3[4](
-  vec3(-1.732053943343968, 1.00000157731464, 3.000010862655876),
-  vec3(0.0, 3.739823947190857e-7, 0.07179686701755719),
-  vec3(0.0, -1.9999970567332186, 2.999990470833319),
-  vec3(1.732053943343968, 1.00000157731464, 3.000010862655876)
-);
+// The four inversion circles through the kissing points, in graph order: centre Ck, radius² Rk.
+const vec2 C1 = vec2(-1.732053943343968, 1.00000157731464);
+const float R1 = 3.000010862655876;
+const vec2 C2 = vec2(0.0, 3.739823947190857e-7);
+const float R2 = 0.07179686701755719;
+const vec2 C3 = vec2(0.0, -1.9999970567332186);
+const float R3 = 2.999990470833319;
+const vec2 C4 = vec2(1.732053943343968, 1.00000157731464);
+const float R4 = 3.000010862655876;
 
-/** Inverts p in the first circle that holds it; false when p is in the tile (outside all four). */
-bool invertFirst(inout vec2 p) {
-  for (int k = 0; k < 4; k++) {
-    vec2 q = p - CIRCLES[k].xy;
-    float qq = dot(q, q);
-    if (qq < CIRCLES[k].z) {
-      p = CIRCLES[k].xy + q * (CIRCLES[k].z / qq);
-      return true;
-    }
-  }
-  return false;
+/** Whether p is inside one of the four circles (not in the tile). */
+bool inCircle(vec2 p) {
+  vec2 q1 = p - C1;
+  vec2 q2 = p - C2;
+  vec2 q3 = p - C3;
+  vec2 q4 = p - C4;
+  return dot(q1, q1) < R1 || dot(q2, q2) < R2 || dot(q3, q3) < R3 || dot(q4, q4) < R4;
 }
 
 void main() {
@@ -38,16 +36,35 @@ void main() {
   vec2 p = u_view.xy + (px + u_jitter - 0.5 * u_resolution) / u_resolution.y * u_view.z;
   int depth = 0;
   bool escaped = false;
+  // Invert in the first circle that holds p and start over, until none does.
   for (; depth < MAX_ITER; depth++) {
-    if (!invertFirst(p)) {
-      escaped = true;
-      break;
+    vec2 q = p - C1;
+    float qq = dot(q, q);
+    if (qq < R1) {
+      p = C1 + q * (R1 / qq);
+      continue;
     }
+    q = p - C2;
+    qq = dot(q, q);
+    if (qq < R2) {
+      p = C2 + q * (R2 / qq);
+      continue;
+    }
+    q = p - C3;
+    qq = dot(q, q);
+    if (qq < R3) {
+      p = C3 + q * (R3 / qq);
+      continue;
+    }
+    q = p - C4;
+    qq = dot(q, q);
+    if (qq < R4) {
+      p = C4 + q * (R4 / qq);
+      continue;
+    }
+    escaped = true;
+    break;
   }
-  if (!escaped) {
-    // At MAX_ITER: escaped only if p is already in the tile.
-    vec2 probe = p;
-    escaped = !invertFirst(probe);
-  }
+  if (!escaped) escaped = !inCircle(p); // at MAX_ITER: escaped only if p is in the tile
   outProbe = vec4(float(depth), p, escaped ? 1.0 : 0.0);
 }

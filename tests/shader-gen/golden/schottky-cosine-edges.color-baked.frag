@@ -26,18 +26,6 @@ void invertState(inout vec2 p, inout float s, vec2 c, float r) {
   s *= k;
 }
 
-bool mobiusStep(inout vec2 p, inout float s, inout int depth, vec4 d0, vec4 d1, vec4 d2, vec4 d3) {
-  if (inRegion(d2, p)) {
-    invertState(p, s, d0.xy, d0.z);
-    invertState(p, s, d1.xy, d1.z);
-  } else if (inRegion(d3, p)) {
-    invertState(p, s, d1.xy, d1.z);
-    invertState(p, s, d0.xy, d0.z);
-  } else return false;
-  depth += 1;
-  return true;
-}
-
 bool mobiusInside(vec2 p, vec4 d0, vec4 d1, vec4 d2, vec4 d3) {
   return inRegion(d2, p) || inRegion(d3, p);
 }
@@ -48,15 +36,6 @@ float regionBoundaryDistance(vec4 g, vec2 p) {
 
 float mobiusBoundaryDistance(vec2 p, vec4 d0, vec4 d1, vec4 d2, vec4 d3) {
   return min(regionBoundaryDistance(d2, p), regionBoundaryDistance(d3, p));
-}
-
-bool inversionStep(inout vec2 p, inout float s, inout int depth, vec4 d0) {
-  float dx = p.x - d0.x;
-  float dy = p.y - d0.y;
-  if (dx * dx + dy * dy >= d0.z * d0.z) return false;
-  invertState(p, s, d0.xy, d0.z);
-  depth += 1;
-  return true;
 }
 
 bool inversionInside(vec2 p, vec4 d0) {
@@ -103,10 +82,35 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   for (int iteration = 0; iteration < 60; ++iteration) {
     if (depth >= 60) break;
 #line 1 1
-    if (mobiusStep(p, s, depth, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0))) continue;
+    { // mobius
+      vec4 d0 = vec4(-1.0, 0.0, 0.6, 0.0);
+      vec4 d1 = vec4(0.2, 0.1, 1.0, 0.0);
+      vec4 d2 = vec4(-1.0, 0.0, 0.6, 0.0);
+      vec4 d3 = vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0);
+      if (inRegion(d2, p)) {
+        invertState(p, s, d0.xy, d0.z);
+        invertState(p, s, d1.xy, d1.z);
+        depth += 1;
+        continue;
+      } else if (inRegion(d3, p)) {
+        invertState(p, s, d1.xy, d1.z);
+        invertState(p, s, d0.xy, d0.z);
+        depth += 1;
+        continue;
+      }
+    }
 #line 1 2
-    if (inversionStep(p, s, depth, vec4(0.0, 1.6, 0.5, 0.0))) continue;
-#line 110 0
+    { // inversion
+      vec4 d0 = vec4(0.0, 1.6, 0.5, 0.0);
+      float dx = p.x - d0.x;
+      float dy = p.y - d0.y;
+      if (!(dx * dx + dy * dy >= d0.z * d0.z)) {
+        invertState(p, s, d0.xy, d0.z);
+        depth += 1;
+        continue;
+      }
+    }
+#line 114 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
@@ -114,7 +118,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   if (mobiusInside(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0))) return false;
 #line 1 2
   if (inversionInside(p, vec4(0.0, 1.6, 0.5, 0.0))) return false;
-#line 118 0
+#line 122 0
   return true;
 }
 
@@ -124,7 +128,7 @@ float sceneBoundaryDistance(vec2 p) {
   d = min(d, mobiusBoundaryDistance(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0)));
 #line 1 2
   d = min(d, inversionBoundaryDistance(p, vec4(0.0, 1.6, 0.5, 0.0)));
-#line 128 0
+#line 132 0
   return d;
 }
 

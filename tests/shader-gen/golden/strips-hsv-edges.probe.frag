@@ -21,32 +21,12 @@ int foldCount(float k) {
   return int(min(abs(k), 1.0e9));
 }
 
-bool parallelMirrorsStep(inout vec2 p, inout float s, inout int depth, vec4 d0, vec4 d1) {
-  float D = d1.x;
-  float h = stripHeight(d0, p);
-  float k = floor(h / D);
-  if (k == 0.0) return false;
-  float r = h - k * D;
-  float target = mod(k, 2.0) == 0.0 ? r : D - r;
-  p = vec2(p.x + (target - h) * d0.z, p.y + (target - h) * d0.w);
-  depth += foldCount(k);
-  return true;
-}
-
 float stripIndex(vec4 d0, vec4 d1, vec2 p) {
   return floor(stripHeight(d0, p) / d1.x);
 }
 
 bool parallelMirrorsInside(vec2 p, vec4 d0, vec4 d1) {
   return stripIndex(d0, d1, p) != 0.0;
-}
-
-bool translationStep(inout vec2 p, inout float s, inout int depth, vec4 d0, vec4 d1) {
-  float k = stripIndex(d0, d1, p);
-  if (k == 0.0) return false;
-  p = vec2(p.x - k * d1.y, p.y - k * d1.z);
-  depth += foldCount(k);
-  return true;
 }
 
 bool translationInside(vec2 p, vec4 d0, vec4 d1) {
@@ -62,10 +42,32 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   for (int iteration = 0; iteration < u_maxIterations; ++iteration) {
     if (depth >= u_maxIterations) break;
 #line 1 1
-    if (parallelMirrorsStep(p, s, depth, u_el[0], u_el[1])) continue;
+    { // parallel-mirrors
+      vec4 d0 = u_el[0];
+      vec4 d1 = u_el[1];
+      float D = d1.x;
+      float h = stripHeight(d0, p);
+      float k = floor(h / D);
+      if (k != 0.0) {
+        float r = h - k * D;
+        float target = mod(k, 2.0) == 0.0 ? r : D - r;
+        p = vec2(p.x + (target - h) * d0.z, p.y + (target - h) * d0.w);
+        depth += foldCount(k);
+        continue;
+      }
+    }
 #line 1 2
-    if (translationStep(p, s, depth, u_el[2], u_el[3])) continue;
-#line 69 0
+    { // translation
+      vec4 d0 = u_el[2];
+      vec4 d1 = u_el[3];
+      float k = stripIndex(d0, d1, p);
+      if (k != 0.0) {
+        p = vec2(p.x - k * d1.y, p.y - k * d1.z);
+        depth += foldCount(k);
+        continue;
+      }
+    }
+#line 71 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
@@ -73,7 +75,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   if (parallelMirrorsInside(p, u_el[0], u_el[1])) return false;
 #line 1 2
   if (translationInside(p, u_el[2], u_el[3])) return false;
-#line 77 0
+#line 79 0
   return true;
 }
 

@@ -23,13 +23,6 @@ void reflectState(inout vec2 p, vec2 q, vec2 n) {
   p = vec2(p.x - h * n.x, p.y - h * n.y);
 }
 
-bool reflectionStep(inout vec2 p, inout float s, inout int depth, vec4 d0) {
-  if ((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0) return false;
-  reflectState(p, d0.xy, d0.zw);
-  depth += 1;
-  return true;
-}
-
 bool reflectionInside(vec2 p, vec4 d0) {
   return (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w < 0.0;
 }
@@ -62,12 +55,33 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   for (int iteration = 0; iteration < u_maxIterations; ++iteration) {
     if (depth >= u_maxIterations) break;
 #line 1 1
-    if (reflectionStep(p, s, depth, u_el[0])) continue;
+    { // reflection
+      vec4 d0 = u_el[0];
+      if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
+        reflectState(p, d0.xy, d0.zw);
+        depth += 1;
+        continue;
+      }
+    }
 #line 1 2
-    if (reflectionStep(p, s, depth, u_el[1])) continue;
+    { // reflection
+      vec4 d0 = u_el[1];
+      if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
+        reflectState(p, d0.xy, d0.zw);
+        depth += 1;
+        continue;
+      }
+    }
 #line 1 3
-    if (reflectionStep(p, s, depth, u_el[2])) continue;
-#line 71 0
+    { // reflection
+      vec4 d0 = u_el[2];
+      if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
+        reflectState(p, d0.xy, d0.zw);
+        depth += 1;
+        continue;
+      }
+    }
+#line 85 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
@@ -77,7 +91,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   if (reflectionInside(p, u_el[1])) return false;
 #line 1 3
   if (reflectionInside(p, u_el[2])) return false;
-#line 81 0
+#line 95 0
   return true;
 }
 

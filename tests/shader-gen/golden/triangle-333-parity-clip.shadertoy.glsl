@@ -5,13 +5,6 @@ void reflectState(inout vec2 p, vec2 q, vec2 n) {
   p = vec2(p.x - h * n.x, p.y - h * n.y);
 }
 
-bool reflectionStep(inout vec2 p, inout float s, inout int depth, vec4 d0) {
-  if ((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0) return false;
-  reflectState(p, d0.xy, d0.zw);
-  depth += 1;
-  return true;
-}
-
 bool reflectionInside(vec2 p, vec4 d0) {
   return (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w < 0.0;
 }
@@ -56,9 +49,30 @@ vec3 toSrgb(vec3 c) {
 bool runIis(inout vec2 p, inout float s, inout int depth) {
   for (int iteration = 0; iteration < 100; ++iteration) {
     if (depth >= 100) break;
-    if (reflectionStep(p, s, depth, vec4(0.0, 0.0, 0.0, 1.0))) continue;
-    if (reflectionStep(p, s, depth, vec4(0.0, 0.0, 0.8660254037844386, -0.5000000000000001))) continue;
-    if (reflectionStep(p, s, depth, vec4(1.0, 0.0, -0.8660254037844386, -0.5000000000000001))) continue;
+    { // reflection
+      vec4 d0 = vec4(0.0, 0.0, 0.0, 1.0);
+      if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
+        reflectState(p, d0.xy, d0.zw);
+        depth += 1;
+        continue;
+      }
+    }
+    { // reflection
+      vec4 d0 = vec4(0.0, 0.0, 0.8660254037844386, -0.5000000000000001);
+      if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
+        reflectState(p, d0.xy, d0.zw);
+        depth += 1;
+        continue;
+      }
+    }
+    { // reflection
+      vec4 d0 = vec4(1.0, 0.0, -0.8660254037844386, -0.5000000000000001);
+      if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
+        reflectState(p, d0.xy, d0.zw);
+        depth += 1;
+        continue;
+      }
+    }
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.

@@ -1,0 +1,36 @@
+/**
+ * Scene numbers the GPU cannot compute with. The evaluator accepts any finite float64, but the
+ * shader works in float32 and squares coordinates and radii, so a value beyond
+ * LIMITS.gpuMaxMagnitude becomes ∞ on the GPU while the CPU interpreter (float64) still draws it.
+ */
+import { LIMITS, type Scene } from '../nodes/core/scene.ts';
+
+export interface OutOfRange {
+  /** The node whose element (or the render node, for the clip disk) holds the value. */
+  readonly nodeId: string | undefined;
+  readonly value: number;
+}
+
+/** The first number with |v| > max inside `value` (iterative: no recursion limit), or undefined. */
+function firstBeyond(value: unknown, max: number): number | undefined {
+  const stack: unknown[] = [value];
+  while (stack.length > 0) {
+    const v = stack.pop();
+    if (typeof v === 'number') {
+      if (Math.abs(v) > max) return v;
+    } else if (Array.isArray(v)) stack.push(...v);
+    else if (v !== null && typeof v === 'object') stack.push(...Object.values(v));
+  }
+  return undefined;
+}
+
+/** The first element (then the clip disk) holding a number beyond LIMITS.gpuMaxMagnitude. */
+export function firstOutOfGpuRange(scene: Scene, max: number = LIMITS.gpuMaxMagnitude): OutOfRange | null {
+  for (const e of scene.elements) {
+    const value = firstBeyond(e, max);
+    if (value !== undefined) return { nodeId: e.nodeId, value };
+  }
+  const clip = firstBeyond(scene.clip, max);
+  if (clip !== undefined) return { nodeId: scene.renderNodeId ?? undefined, value: clip };
+  return null;
+}

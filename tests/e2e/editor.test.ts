@@ -287,7 +287,7 @@ describe('editor', () => {
       .getByTestId('open-file')
       .setInputFiles({ name: 'star333.png', mimeType: 'image/png', buffer: Buffer.from(bytes) });
     await expect.poll(() => nodeCount(page)).toBe(10);
-    expect(await edgeCount(page)).toBe(12);
+    await expect.poll(() => edgeCount(page)).toBe(12);
   }, 150_000);
 
   it('an unreadable autosave is reported and offered for download, not thrown away', async () => {

@@ -4,6 +4,9 @@
  */
 import type { Coloring, TileSpec } from '../nodes/core/scene.ts';
 import type { Color } from '../nodes/core/values.ts';
+import { type PictureMap, resolvePicture, samplePicture } from './picture.ts';
+import { placeUv, rotationPair } from './placement.ts';
+import { seedColour } from './seeds.ts';
 
 export type Rgb = [number, number, number];
 
@@ -30,8 +33,8 @@ export function cosinePalette(a: Color, b: Color, c: Color, d: Color, t: number)
   return [ch(0), ch(1), ch(2)];
 }
 
-/** The sRGB colour of an escaped point that needed `depth` steps. */
-export function depthColour(coloring: Coloring, depth: number): Rgb {
+/** The sRGB colour of an escaped point that needed `depth` steps (modes coloured by depth). */
+export function depthColour(coloring: DepthColoring, depth: number): Rgb {
   switch (coloring.mode) {
     case 'depth-hsv':
       return hsvToRgb(coloring.hueOffset + coloring.hueStep * depth, coloring.saturation, coloring.value);
@@ -42,6 +45,34 @@ export function depthColour(coloring: Coloring, depth: number): Rgb {
   }
 }
 
+/** The colouring modes whose colour depends on the depth alone. */
+export type DepthColoring = Extract<Coloring, { mode: 'depth-hsv' | 'cosine' | 'parity' }>;
+
+/**
+ * Linear colour of an escaped point from its final point (x, y) and depth: the picture's texel
+ * (image mode: a picture `size` high and size·width/height wide), else depthColour.
+ */
+export function finalColour(
+  coloring: Exclude<Coloring, { mode: 'limit-set' }>,
+  depth: number,
+  x: number,
+  y: number,
+  pictures: PictureMap | undefined,
+): Rgb {
+  if (coloring.mode !== 'image') return toLinear(depthColour(coloring, depth));
+  const { image, center, size, rotation } = coloring;
+  const [cos, sin] = rotationPair(rotation);
+  const [u, v] = placeUv(center[0], center[1], (size * image.width) / image.height, size, cos, sin, x, y);
+  return samplePicture(resolvePicture(image.src, pictures), u, v);
+}
+
+/** a + (b − a)·t per channel. */
+const mixRgb = (a: Rgb, b: Rgb, t: number): Rgb => [
+  a[0] + (b[0] - a[0]) * t,
+  a[1] + (b[1] - a[1]) * t,
+  a[2] + (b[2] - a[2]) * t,
+];
+
 export interface ShadeInput {
   readonly escaped: boolean;
   readonly depth: number;
@@ -49,13 +80,43 @@ export interface ShadeInput {
   readonly clipped: boolean;
   /** Distance to the nearest tile edge in pixels (Infinity when edges are off). */
   readonly edgePixels: number;
+  /** The final point (where the run stopped: in the tile, at a seed, or at maxIterations). */
+  readonly x: number;
+  readonly y: number;
+  /**
+   * Estimated distance to the limit set in pixels, (edge distance + reach) / s / pixelWorld
+   * (far-disk.ts limitReach; Infinity when not estimated).
+   */
+  readonly limitPixels: number;
+  /** Index of the seed the run stopped at, −1 for none. */
+  readonly seed: number;
 }
 
-/** Linear colour of one sample. Edges are drawn with a 1-pixel antialiased falloff. */
-export function shade(tile: TileSpec, r: ShadeInput): Rgb {
+/**
+ * Linear colour of one sample, decided in this order: clipped → background; a seed → its colour;
+ * `seedsOnly` → background; limit-set mode → limit colour where not escaped, else the
+ * background blended towards it by max(clamp(1 − L, 0, 1), exp(−L/glow)) (L = limitPixels);
+ * not escaped → limit colour; outside the `inner` circle → background; depth 0 with a `fill` →
+ * the fill; else the mode's colour. Edges are drawn with a 1-pixel antialiased falloff.
+ */
+export function shade(tile: TileSpec, r: ShadeInput, pictures?: PictureMap): Rgb {
   if (r.clipped) return toLinear(tile.background);
+  if (r.seed >= 0 && tile.seeds) return seedColour(tile.seeds[r.seed], r.x, r.y, pictures);
+  if (tile.seedsOnly) return toLinear(tile.background);
+  const coloring = tile.coloring;
+  if (coloring.mode === 'limit-set') {
+    if (!r.escaped) return toLinear(tile.limitColor);
+    // A line about one pixel wide where the estimate falls below a pixel, plus the glow.
+    const line = clamp01(1 - r.limitPixels);
+    const glow = coloring.glow > 0 ? Math.exp(-r.limitPixels / coloring.glow) : 0;
+    return mixRgb(toLinear(tile.background), toLinear(tile.limitColor), Math.max(line, glow));
+  }
   if (!r.escaped) return toLinear(tile.limitColor);
-  const base = toLinear(depthColour(tile.coloring, r.depth) as unknown as Color);
+  const inner = tile.inner;
+  if (inner && (r.x - inner.c[0]) ** 2 + (r.y - inner.c[1]) ** 2 >= inner.r * inner.r)
+    return toLinear(tile.background);
+  const base =
+    r.depth === 0 && tile.fill ? toLinear(tile.fill) : finalColour(coloring, r.depth, r.x, r.y, pictures);
   if (tile.edgeWidth <= 0) return base;
   const t = clamp01(r.edgePixels - tile.edgeWidth / 2 + 0.5);
   const edge = toLinear(tile.edgeColor);

@@ -38,6 +38,11 @@ export interface CompiledProgram {
   uniforms: UniformEntry[];
   /** `#line` source-string number → id of the node that produced that element. */
   lineMap: Record<number, string>;
+  /**
+   * The pictures' srcs by sampler: texture unit N must hold pictures[N] (sampler `u_imageN`),
+   * uploaded as SRGB8_ALPHA8, LINEAR filtering, REPEAT wrap, row 0 = the top row.
+   */
+  pictures: string[];
   diagnostics: Diagnostic[];
 }
 
@@ -77,6 +82,7 @@ export function compile(input: Scene, options: CompileOptions = {}): CompiledPro
     structureKey: structureKey(scene, { variant, baked }),
     uniforms: emitted.uniforms,
     lineMap: emitted.lineMap,
+    pictures: emitted.pictures,
     diagnostics,
   };
 }

@@ -36,18 +36,20 @@ export function prepare(elements: readonly SceneElement[]): PreparedElements {
 /**
  * Runs the loop on `st` in place; returns whether the point escaped (reached the tile). A closed-form
  * element may add several steps at once, so depth can pass maxIter by that last fold. `visit`, when
- * given, sees the state at the start of every pass (every point of the path, the final one included).
+ * given, sees the state at the start of every pass (every point of the path, the final one included);
+ * when it returns true the run stops there, not escaped (orbit seeds: math.md "tested at the start
+ * of every step").
  */
 export function runIis(
   prepared: PreparedElements,
   maxIter: number,
   st: IisState,
-  visit?: (st: IisState) => void,
+  visit?: (st: IisState) => boolean | undefined,
 ): boolean {
   const { elements, kinds } = prepared;
   const n = elements.length;
   for (;;) {
-    visit?.(st);
+    if (visit?.(st) === true) return false;
     if (st.depth >= maxIter) {
       for (let i = 0; i < n; i++) if (kinds[i].inside(elements[i], st.x, st.y)) return false;
       return true;

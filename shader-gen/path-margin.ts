@@ -22,6 +22,7 @@ export function pathMargin(prepared: PreparedElements, maxIter: number, p: Vec2)
     for (let i = 0; i < elements.length; i++) {
       margin = Math.min(margin, kinds[i].boundaryDistance(elements[i], at.x, at.y) / at.s);
     }
+    return undefined;
   });
   return { depth: st.depth, final: [st.x, st.y], escaped, scale: st.s, margin };
 }

@@ -3,9 +3,13 @@
  * light, averaged, encoded as 8-bit sRGB RGBA with the first row at the top (PNG order).
  */
 import type { Scene } from '../nodes/core/scene.ts';
+import type { Circle } from '../nodes/core/values.ts';
 import { linearToSrgb, type Rgb, shade } from './colour.ts';
 import type { IisState } from './elements/element-kind.ts';
+import { farDisk, farDistance, limitReach } from './far-disk.ts';
 import { type PreparedElements, prepare, runIis } from './interpret.ts';
+import type { PictureMap } from './picture.ts';
+import { seedAt } from './seeds.ts';
 import { pixelToWorld, sampleOffset } from './view.ts';
 
 export interface RasterOptions {
@@ -15,6 +19,8 @@ export interface RasterOptions {
   readonly samples?: number;
   /** Called after each row with the fraction done; return false to cancel. */
   readonly onProgress?: (done: number) => boolean | undefined;
+  /** Decoded pixels of the pictures the scene uses, by src (the built-in one needs none). */
+  readonly pictures?: PictureMap;
 }
 
 export interface Raster {
@@ -24,42 +30,75 @@ export interface Raster {
   readonly data: Uint8ClampedArray;
 }
 
+/** Per-image data sampleColour reads (prepared once by rasterize; tests prepare it too). */
+export interface SampleContext {
+  readonly prepared: PreparedElements;
+  /** The bounding circle of all insides when ∞ lies in the tile (far-disk.ts), else null. */
+  readonly far: Circle | null;
+  /** far-disk.ts limitReach (the limit-set colouring's distance estimate). */
+  readonly reach: number | null;
+  readonly pictures?: PictureMap;
+}
+
+export function sampleContext(scene: Scene, pictures?: PictureMap): SampleContext {
+  return {
+    prepared: prepare(scene.elements),
+    far: farDisk(scene.elements),
+    reach: limitReach(scene.elements),
+    pictures,
+  };
+}
+
 /**
- * Linear colour of one sample at world point (x, y): clip test, IIS run, distance to the nearest
- * tile edge in pixels (d / s / pixelWorld, pixelWorld = world units per pixel), shade. `st` is
+ * Linear colour of one sample at world point (x, y): clip test, IIS run (stopping at the first
+ * seed that holds the point at the start of a step), distance to the nearest tile edge in pixels
+ * (max(d, far distance) / s / pixelWorld, pixelWorld = world units per pixel) and, in limit-set
+ * mode, to the limit set ((that + reach) / s / pixelWorld), shade. `st` is
  * scratch state (left holding the run's result). The shader's shadeSample is its GLSL twin.
  */
 export function sampleColour(
   scene: Scene,
-  prepared: PreparedElements,
+  ctx: SampleContext,
   x: number,
   y: number,
   pixelWorld: number,
   st: IisState,
 ): Rgb {
   const { tile, clip } = scene;
+  const { prepared, far } = ctx;
   const clipped = clip !== null && (x - clip.c[0]) ** 2 + (y - clip.c[1]) ** 2 > clip.r * clip.r;
   st.x = x;
   st.y = y;
   st.s = 1;
   st.depth = 0;
-  const escaped = clipped ? false : runIis(prepared, scene.maxIterations, st);
+  const seeds = tile.seeds ?? [];
+  let seed = -1;
+  const atSeed = seeds.length > 0 ? (at: IisState) => (seed = seedAt(seeds, at.x, at.y)) >= 0 : undefined;
+  const escaped = clipped ? false : runIis(prepared, scene.maxIterations, st, atSeed);
+  const limitSet = tile.coloring.mode === 'limit-set';
   let edgePixels = Number.POSITIVE_INFINITY;
-  if (tile.edgeWidth > 0 && escaped) {
+  let limitPixels = Number.POSITIVE_INFINITY;
+  if ((tile.edgeWidth > 0 || limitSet) && escaped) {
     let d = Number.POSITIVE_INFINITY;
     for (let i = 0; i < prepared.elements.length; i++) {
       d = Math.min(d, prepared.kinds[i].boundaryDistance(prepared.elements[i], st.x, st.y));
     }
+    if (far) d = Math.max(d, farDistance(far, st.x, st.y));
     edgePixels = d / st.s / pixelWorld;
+    if (limitSet && ctx.reach !== null) limitPixels = (d + ctx.reach) / st.s / pixelWorld;
   }
-  return shade(tile, { escaped, depth: st.depth, clipped, edgePixels });
+  return shade(
+    tile,
+    { escaped, depth: st.depth, clipped, edgePixels, x: st.x, y: st.y, limitPixels, seed },
+    ctx.pictures,
+  );
 }
 
 export function rasterize(scene: Scene, options: RasterOptions): Raster {
   const { width, height } = options;
   const samples = Math.max(1, Math.round(options.samples ?? scene.samples));
   const data = new Uint8ClampedArray(width * height * 4);
-  const prepared = prepare(scene.elements);
+  const ctx = sampleContext(scene, options.pictures);
   const { view } = scene;
   const pixelWorld = view.scale / height;
   const offsets = Array.from({ length: samples }, (_, k) => sampleOffset(k));
@@ -71,7 +110,7 @@ export function rasterize(scene: Scene, options: RasterOptions): Raster {
       acc[0] = acc[1] = acc[2] = 0;
       for (const [ox, oy] of offsets) {
         const [x, y] = pixelToWorld(view, width, height, px, py, ox, oy);
-        const c = sampleColour(scene, prepared, x, y, pixelWorld, st);
+        const c = sampleColour(scene, ctx, x, y, pixelWorld, st);
         acc[0] += c[0];
         acc[1] += c[1];
         acc[2] += c[2];

@@ -8,6 +8,8 @@
  * maxIterations and a hash of all the baked values.
  */
 import type { Scene } from '../nodes/core/scene.ts';
+import type { ImageRef } from '../nodes/core/values.ts';
+import { farDisk, limitReach } from './far-disk.ts';
 
 export interface StructureKeyOptions {
   readonly variant: 'color' | 'probe';
@@ -39,11 +41,45 @@ function kindRuns(scene: Pick<Scene, 'elements'>): string {
   return runs.join(',');
 }
 
+/** A picture as a baked program sees it: its size (the pixels are a texture, never literals). */
+const pictureShape = (key: string, value: unknown) =>
+  key === 'image' && value && typeof value === 'object' && 'src' in value
+    ? { width: (value as unknown as ImageRef).width, height: (value as unknown as ImageRef).height }
+    : value;
+
 /** Every value a baked program writes as a literal, in a fixed order (elements without node ids). */
 function bakedValues(scene: Scene): string {
   const elements = scene.elements.map(({ nodeId: _, ...rest }) => rest);
-  const { coloring, limitColor, background, edgeWidth, edgeColor } = scene.tile;
-  return JSON.stringify([elements, coloring, limitColor, background, edgeWidth, edgeColor, scene.clip]);
+  const { coloring, limitColor, background, edgeWidth, edgeColor, fill, inner } = scene.tile;
+  const seeds = (scene.tile.seeds ?? []).map(({ nodeId: _, ...rest }) => rest);
+  return JSON.stringify(
+    [elements, coloring, limitColor, background, edgeWidth, edgeColor, scene.clip, fill, inner, seeds],
+    pictureShape,
+  );
+}
+
+/**
+ * The tile options that change the code: fill, seeds (kinds in order; with seedsOnly), inner
+ * circle, glow and the limit-set estimate, the far-chart edge distance, and which sampler each picture uses (pictures with
+ * the same src share one).
+ */
+function tileOptions(scene: Scene): string[] {
+  const { tile } = scene;
+  const parts: string[] = [];
+  if (tile.fill) parts.push('fill:on');
+  const seeds = tile.seeds ?? [];
+  if (seeds.length > 0) parts.push(`seeds:${seeds.map((s) => s.kind).join(',')}${tile.seedsOnly ? ':only' : ''}`);
+  if (tile.inner) parts.push('inner:on');
+  if (tile.coloring.mode === 'limit-set') {
+    if (tile.coloring.glow > 0) parts.push('glow:on');
+    if (limitReach(scene.elements) !== null) parts.push('reach:on');
+  }
+  if ((tile.edgeWidth > 0 || tile.coloring.mode === 'limit-set') && farDisk(scene.elements)) parts.push('far:on');
+  const srcs: string[] = [];
+  if (tile.coloring.mode === 'image') srcs.push(tile.coloring.image.src);
+  for (const s of seeds) if (s.kind === 'image') srcs.push(s.image.src);
+  if (srcs.length > 0) parts.push(`pictures:${srcs.map((src) => srcs.indexOf(src)).join(',')}`);
+  return parts;
 }
 
 export function structureKey(scene: Scene, options: StructureKeyOptions): string {
@@ -54,6 +90,7 @@ export function structureKey(scene: Scene, options: StructureKeyOptions): string
     `colouring:${scene.tile.coloring.mode}`,
     `edges:${scene.tile.edgeWidth > 0 ? 'on' : 'off'}`,
     `clip:${scene.clip ? 'on' : 'off'}`,
+    ...tileOptions(scene),
   ];
   if (options.baked)
     parts.push(`maxIterations:${scene.maxIterations}`, `values:${fnv1a64(bakedValues(scene))}`);

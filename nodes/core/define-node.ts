@@ -49,7 +49,14 @@ export type ParamSpec =
       readonly doc?: string;
     }
   | { readonly kind: 'color'; readonly default: string; readonly label?: string; readonly doc?: string }
-  | { readonly kind: 'string'; readonly default: string; readonly label?: string; readonly doc?: string };
+  | {
+      readonly kind: 'string';
+      readonly default: string;
+      /** Longest text accepted (default 10 000 characters; a picture's data: URL needs more). */
+      readonly maxLength?: number;
+      readonly label?: string;
+      readonly doc?: string;
+    };
 
 export type InputValues = Readonly<Record<string, PortValueMap[PortType] | undefined>>;
 export type ParamValues = Readonly<Record<string, unknown>>;

@@ -116,6 +116,22 @@ export const DIAGNOSTICS = table({
       `input "${port}" gets no value: node "${node}" has no "${output}" output in its current set-up`,
   },
   nodeVersion: { code: 'KF309', severity: 'error', text: (detail: string) => detail },
+  pictureTooBig: {
+    code: 'KF310',
+    severity: 'warning',
+    text: (what: string, limit: string) =>
+      `the picture is too big (${what}; the limit is ${limit}): choose a smaller one; the built-in picture is shown instead`,
+  },
+  badPicture: {
+    code: 'KF311',
+    severity: 'warning',
+    text: (detail: string) => `not a usable picture: ${detail}; the built-in picture is shown instead`,
+  },
+  tooManySeeds: {
+    code: 'KF312',
+    severity: 'warning',
+    text: (n: number, max: number) => `${n} seeds are wired; only the first ${max} are drawn`,
+  },
   tooManyElements: {
     code: 'KF401',
     severity: 'error',

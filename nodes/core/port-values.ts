@@ -37,6 +37,7 @@ export const PORT_VALUE_SCHEMA: Readonly<Record<PortType, z.ZodType | null>> = {
   tile: null,
   color: hexColor,
   image: z.object({ src: z.string(), width: finite, height: finite }),
+  seed: null,
 };
 
 /** Runtime value → the JSON that PORT_VALUE_SCHEMA reads back (the inverse of parsing). */

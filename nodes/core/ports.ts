@@ -2,7 +2,7 @@
  * Port (socket) types: the single table that the UI (colours, connection rules), the validator
  * and the evaluator read.
  */
-export const PORT_TYPES = ['number', 'point', 'line', 'circle', 'element', 'tile', 'color', 'image'] as const;
+export const PORT_TYPES = ['number', 'point', 'line', 'circle', 'element', 'tile', 'color', 'image', 'seed'] as const;
 export type PortType = (typeof PORT_TYPES)[number];
 
 interface PortTypeInfo {
@@ -29,6 +29,12 @@ export const PORT_TYPE_INFO: Readonly<Record<PortType, PortTypeInfo>> = {
   tile: { color: '#b07cf0', many: false, accepts: [], doc: 'how the tile and its images are coloured' },
   color: { color: '#f08a5d', many: false, accepts: [], doc: 'an sRGB colour' },
   image: { color: '#7bc96f', many: false, accepts: [], doc: 'a picture' },
+  seed: {
+    color: '#e0b0ff',
+    many: true,
+    accepts: [],
+    doc: 'one or more orbit seeds (disks or picture rectangles) whose images the tile paints',
+  },
 };
 
 /** Whether an output of type `from` may be connected to an input of type `to`. */

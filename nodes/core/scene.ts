@@ -3,7 +3,7 @@
  * GLSL compiler). Every construction is already done; only element data with numbers remains.
  * Element kinds are implemented (CPU + GLSL, side by side) in shader-gen/elements/.
  */
-import type { Circle, Color, Line, Vec2 } from './values.ts';
+import type { Circle, Color, ImageRef, Line, Vec2 } from './values.ts';
 
 /** A disk (|p−c| < r) or, when `outside`, the open complement of the closed disk (|p−c| > r). */
 export interface DiskRegion {
@@ -154,7 +154,50 @@ export type Coloring =
       readonly step: number;
     }
   /** Two tones by the parity of depth. */
-  | { readonly mode: 'parity'; readonly even: Color; readonly odd: Color };
+  | { readonly mode: 'parity'; readonly even: Color; readonly odd: Color }
+  /**
+   * A true kaleidoscope of a picture: the picture's texel at the final point (math.md "by final
+   * position"). The picture is `size` world units high, centred at `center`, turned by `rotation`
+   * radians counter-clockwise, and repeats beyond its edges.
+   */
+  | {
+      readonly mode: 'image';
+      readonly image: ImageRef;
+      readonly center: Vec2;
+      readonly size: number;
+      readonly rotation: number;
+    }
+  /**
+   * Only the limit set: points still moving at maxIterations in the limit colour, escaped ones in
+   * the background, except within about a pixel of the limit set (distance estimate: (tile-edge
+   * distance + smallest inside radius) / s) and, when glow > 0, a glow exp(−L/glow) around it
+   * (L that distance in pixels, glow in pixels).
+   */
+  | { readonly mode: 'limit-set'; readonly glow: number };
+
+/**
+ * An orbit seed (math.md "orbit seeds", the paper's Figs. 2 and 11): tested at the start of every
+ * step, so every image of the seed under the group is painted. A disk paints its colour; an image
+ * rectangle (centre, width × height world units, turned by `rotation` radians) paints its picture.
+ */
+export type SeedSpec =
+  | {
+      readonly kind: 'disk';
+      readonly nodeId: string;
+      readonly c: Vec2;
+      readonly r: number;
+      readonly color: Color;
+    }
+  | {
+      readonly kind: 'image';
+      readonly nodeId: string;
+      readonly center: Vec2;
+      readonly width: number;
+      readonly height: number;
+      readonly rotation: number;
+      readonly image: ImageRef;
+    };
+export type SeedKind = SeedSpec['kind'];
 
 export interface TileSpec {
   readonly nodeId: string;
@@ -166,6 +209,17 @@ export interface TileSpec {
   /** Tile edges drawn this many pixels wide using the accumulated scale (0 = none). */
   readonly edgeWidth: number;
   readonly edgeColor: Color;
+  /** Colour of depth 0, the fundamental tile itself (absent/null: coloured like any depth). */
+  readonly fill?: Color | null;
+  /** Orbit seeds, tested in order at the start of every step (absent: none). */
+  readonly seeds?: readonly SeedSpec[];
+  /** Points that hit no seed get the background: only the seeds' orbits show (Fig. 2). */
+  readonly seedsOnly?: boolean;
+  /**
+   * Internal area (the paper's Fig. 22): escaped points keep their colour only when their final
+   * point lies inside this circle; the others get the background (absent/null: no test).
+   */
+  readonly inner?: Circle | null;
 }
 
 /** A view: `center` is the world point at the middle of the canvas, `scale` the world height. */
@@ -236,6 +290,12 @@ export const LIMITS = {
   shareFragmentMaxChars: 512 * 1024,
   /** Share links: the most bytes a fragment may inflate to (stops a zip bomb early). */
   shareInflatedMaxBytes: 4 * 1024 * 1024,
+  /** Longest picture data: URL an image node keeps (the document carries it inline). */
+  maxImageDataUrlChars: 4 * 1024 * 1024,
+  /** Largest width or height of a picture used as a texture (every WebGL2 GPU has 4096). */
+  maxPictureSide: 4096,
+  /** Orbit seeds a tile may have (each one is tested at every step of every sample). */
+  maxSeeds: 16,
 } as const;
 
 /**

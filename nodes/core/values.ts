@@ -2,7 +2,7 @@
  * The runtime values that travel along edges. They are plain data (JSON-compatible apart from
  * `element`, which carries scene elements), so documents, the evaluator and the UI share them.
  */
-import type { SceneElement, TileSpec } from './scene.ts';
+import type { SceneElement, SeedSpec, TileSpec } from './scene.ts';
 
 /** A point or vector of the world plane (y up). */
 export type Vec2 = readonly [number, number];
@@ -39,4 +39,11 @@ export interface PortValueMap {
   tile: TileSpec;
   color: Color;
   image: ImageRef;
+  seed: SeedSpec;
 }
+
+/**
+ * The picture shown when no picture is chosen: drawn procedurally (shader-gen/picture.ts) from
+ * this src, a checker with an arrow pointing up so the orientation of every copy shows.
+ */
+export const BUILTIN_PICTURE: ImageRef = { src: 'builtin:checker-arrow', width: 256, height: 256 };

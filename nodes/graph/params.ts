@@ -70,10 +70,12 @@ function parseParam(spec: ParamSpec, raw: unknown): { value?: unknown; problem?:
         ? { value: parsed.data }
         : { problem: `expected a colour like "#ff8800", got ${describe(raw)}` };
     }
-    case 'string':
-      return typeof raw === 'string' && raw.length <= 10_000
+    case 'string': {
+      const max = spec.maxLength ?? 10_000;
+      return typeof raw === 'string' && raw.length <= max
         ? { value: raw }
-        : { problem: `expected text (at most 10000 characters), got ${describe(raw)}` };
+        : { problem: `expected text (at most ${max} characters), got ${describe(raw)}` };
+    }
   }
 }
 

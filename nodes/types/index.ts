@@ -6,6 +6,7 @@ import { circle3ptNode } from './circle-3pt.ts';
 import { circleCenterPointNode } from './circle-center-point.ts';
 import { colorNode, cosinePaletteNode } from './colour.ts';
 import { hyperbolicPolygonNode } from './hyperbolic-polygon.ts';
+import { imageNode } from './image.ts';
 import { intersectCirclesNode, intersectLineCircleNode, intersectLinesNode } from './intersections.ts';
 import { inversionNode } from './inversion.ts';
 import { kMirrorNode } from './k-mirror.ts';
@@ -24,6 +25,7 @@ import { rectangleKaleidoscopeNode } from './rectangle-kaleidoscope.ts';
 import { reflectionNode } from './reflection.ts';
 import { renderNode } from './render.ts';
 import { rotationNode } from './rotation.ts';
+import { seedDiskNode, seedImageNode } from './seeds.ts';
 import { spiralSimilarityNode } from './spiral-similarity.ts';
 import { glideReflectionNode, parallelMirrorsNode, translationNode } from './strip.ts';
 import { tileNode } from './tile.ts';
@@ -62,6 +64,9 @@ export const NODE_TYPES = [
   parallelMirrorsNode,
   hyperbolicPolygonNode,
   tileNode,
+  seedDiskNode,
+  seedImageNode,
+  imageNode,
   colorNode,
   cosinePaletteNode,
   timeNode,

@@ -1,11 +1,22 @@
 import { defineNode } from '../core/define-node.ts';
+import { diag } from '../core/diagnostics.ts';
 import { toHex } from '../core/port-values.ts';
-import { type Coloring, DEFAULT_TILE, type TileSpec } from '../core/scene.ts';
-import type { Color } from '../core/values.ts';
+import { type Coloring, DEFAULT_TILE, LIMITS, type SeedSpec, type TileSpec } from '../core/scene.ts';
+import { BUILTIN_PICTURE, type Circle, type Color, type ImageRef, type Vec2 } from '../core/values.ts';
+import { dist } from '../geometry/vec.ts';
+import { fmt } from './shared.ts';
 
 const d = DEFAULT_TILE;
 const cos = d.coloring as Extract<Coloring, { mode: 'cosine' }>;
 const colour = (c: Color, label: string) => ({ type: 'color' as const, label, default: toHex(c) });
+const MODES = ['cosine', 'depth-hsv', 'parity', 'image', 'limit-set'] as const;
+const rad = (deg: number) => (deg * Math.PI) / 180;
+
+/** The picture's turn handle: centre + R(θ)(0, size/2), the middle of its top edge. */
+const topOf = (c: Vec2, size: number, theta: number): Vec2 => [
+  c[0] - Math.sin(theta) * (size / 2),
+  c[1] + Math.cos(theta) * (size / 2),
+];
 
 export const tileNode = defineNode({
   type: 'tile',
@@ -13,7 +24,7 @@ export const tileNode = defineNode({
   label: 'Tile colouring',
   category: 'Colour',
   color: '#b07cf0',
-  doc: 'How points are coloured by their depth: HSV hues, a cosine palette or two tones; plus limit-set colour, background and edges.',
+  doc: 'How points are coloured: by depth (HSV, cosine palette, two tones), a picture seen through the kaleidoscope, or only the limit set; plus tile fill, orbit seeds, an inner area, limit-set colour, background and edges.',
   inputs: {
     a: colour(cos.a, 'palette a'),
     b: colour(cos.b, 'palette b'),
@@ -24,10 +35,32 @@ export const tileNode = defineNode({
     limit: colour(d.limitColor, 'limit set'),
     background: colour(d.background, 'background'),
     edgeColor: colour(d.edgeColor, 'edge colour'),
+    fill: colour([0, 0, 0], 'tile fill'),
+    image: {
+      type: 'image',
+      label: 'picture',
+      optional: true,
+      doc: 'picture mode: the picture seen through the kaleidoscope (the built-in checker when unwired)',
+    },
+    imageCenter: { type: 'point', label: 'picture centre', default: [0, 0] },
+    imageSize: { type: 'number', label: 'picture height', default: 1, min: 0, step: 0.01 },
+    imageRotation: { type: 'number', label: 'picture rotation °', default: 0, step: 1 },
+    seeds: {
+      type: 'seed',
+      label: 'seeds',
+      optional: true,
+      doc: 'orbit seeds: each one and all its images are painted',
+    },
+    inner: {
+      type: 'circle',
+      label: 'inner area',
+      optional: true,
+      doc: 'when wired, only points whose final point lies inside this circle keep their colour (Fig. 22)',
+    },
   },
   outputs: { tile: { type: 'tile', label: 'tile' } },
   params: {
-    mode: { kind: 'enum', default: 'cosine', options: ['cosine', 'depth-hsv', 'parity'], label: 'colouring' },
+    mode: { kind: 'enum', default: 'cosine', options: MODES, label: 'colouring' },
     step: {
       kind: 'number',
       default: cos.step,
@@ -41,6 +74,27 @@ export const tileNode = defineNode({
     hueStep: { kind: 'number', default: 0.05, min: -1, max: 1, step: 0.005, label: 'hue per step' },
     saturation: { kind: 'number', default: 1, min: 0, max: 1, step: 0.01, label: 'saturation' },
     value: { kind: 'number', default: 1, min: 0, max: 1, step: 0.01, label: 'value' },
+    glow: {
+      kind: 'number',
+      default: 0,
+      min: 0,
+      max: 50,
+      step: 0.5,
+      label: 'limit glow px',
+      doc: 'limit-set mode: a glow about this many pixels wide around the limit set; 0 = none',
+    },
+    fillTile: {
+      kind: 'boolean',
+      default: false,
+      label: 'fill tile',
+      doc: 'paint depth 0 (the tile itself) in the tile fill colour',
+    },
+    seedsOnly: {
+      kind: 'boolean',
+      default: false,
+      label: 'seeds only',
+      doc: 'points that hit no seed get the background: only the orbits show',
+    },
     edgeWidth: {
       kind: 'number',
       default: d.edgeWidth,
@@ -54,18 +108,37 @@ export const tileNode = defineNode({
   evaluate: ({ inputs, params, nodeId }) => {
     const c = (k: string) => inputs[k] as Color;
     const mode = params.mode as Coloring['mode'];
+    const size = inputs.imageSize as number;
+    if (mode === 'image' && !(size > 0))
+      return { diagnostics: [diag('degenerate', { port: 'imageSize' }, `picture height must be positive, got ${fmt(size)}`)] };
     const coloring: Coloring =
       mode === 'cosine'
         ? { mode, a: c('a'), b: c('b'), c: c('c'), d: c('d'), step: params.step as number }
         : mode === 'parity'
           ? { mode, even: c('even'), odd: c('odd') }
-          : {
-              mode,
-              hueOffset: params.hueOffset as number,
-              hueStep: params.hueStep as number,
-              saturation: params.saturation as number,
-              value: params.value as number,
-            };
+          : mode === 'image'
+            ? {
+                mode,
+                image: (inputs.image as ImageRef | undefined) ?? BUILTIN_PICTURE,
+                center: inputs.imageCenter as Vec2,
+                size,
+                rotation: rad(inputs.imageRotation as number),
+              }
+            : mode === 'limit-set'
+              ? { mode, glow: params.glow as number }
+              : {
+                  mode,
+                  hueOffset: params.hueOffset as number,
+                  hueStep: params.hueStep as number,
+                  saturation: params.saturation as number,
+                  value: params.value as number,
+                };
+    let seeds = (inputs.seeds ?? []) as unknown as readonly SeedSpec[];
+    const diagnostics = [];
+    if (seeds.length > LIMITS.maxSeeds) {
+      diagnostics.push(diag('tooManySeeds', { port: 'seeds' }, seeds.length, LIMITS.maxSeeds));
+      seeds = seeds.slice(0, LIMITS.maxSeeds);
+    }
     const tile: TileSpec = {
       nodeId,
       coloring,
@@ -73,7 +146,34 @@ export const tileNode = defineNode({
       background: c('background'),
       edgeWidth: params.edgeWidth as number,
       edgeColor: c('edgeColor'),
+      fill: params.fillTile ? c('fill') : null,
+      seeds,
+      seedsOnly: seeds.length > 0 && (params.seedsOnly as boolean),
+      inner: (inputs.inner as Circle | undefined) ?? null,
     };
-    return { outputs: { tile }, readout: mode };
+    const extras = [
+      seeds.length > 0 ? `${seeds.length} seed${seeds.length === 1 ? '' : 's'}` : '',
+      tile.inner ? 'inner area' : '',
+    ].filter(Boolean);
+    return { outputs: { tile }, diagnostics, readout: [mode, ...extras].join(', ') };
+  },
+  overlay: ({ params, inputs }) =>
+    params.mode === 'image'
+      ? [{ shape: 'circle', circle: { c: inputs.imageCenter as Vec2, r: (inputs.imageSize as number) / 2 } }]
+      : [],
+  handles: ({ params, inputs }) => {
+    if (params.mode !== 'image') return [];
+    const c = inputs.imageCenter as Vec2;
+    return [
+      { handle: 'picture-center', at: c },
+      { handle: 'picture-top', at: topOf(c, inputs.imageSize as number, rad(inputs.imageRotation as number)) },
+    ];
+  },
+  /** The centre moves the picture; the top handle scales it (height = 2·distance) and turns it. */
+  drag: (handle, to, ctx) => {
+    if (handle === 'picture-center') return { imageCenter: [...to] };
+    const c = ctx.inputs.imageCenter as Vec2;
+    const turn = Math.atan2(to[1] - c[1], to[0] - c[0]) - Math.PI / 2;
+    return { imageSize: Math.max(1e-6, 2 * dist(c, to)), imageRotation: (turn * 180) / Math.PI };
   },
 });

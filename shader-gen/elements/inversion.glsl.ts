@@ -3,16 +3,27 @@
  */
 import type { InversionElement } from '../../nodes/core/scene.ts';
 import { type GlslElementTwin, glslStepBlock } from '../glsl/element-twin.ts';
+import { floatLiteral } from '../glsl/literal.ts';
 import { glslFunction } from '../glsl/snippet.ts';
+import { CENTRE_GUARD } from './inversion.ts';
 
-/** invertState: p ← c + r²(p−c)/|p−c|², s ← s·r²/|p−c|² (same operations, same order). */
+/**
+ * invertState: p ← c + r²(p−c)/|p−c|², s ← s·r²/|p−c|² (same operations, same order); the
+ * centre itself goes to c + (r·G, 0) with scale G² (inversion.ts CENTRE_GUARD).
+ */
 export const invertStateGlsl = glslFunction(
   'invertState',
   `
 void invertState(inout vec2 p, inout float s, vec2 c, float r) {
   float dx = p.x - c.x;
   float dy = p.y - c.y;
-  float k = (r * r) / (dx * dx + dy * dy);
+  float d2 = dx * dx + dy * dy;
+  if (d2 == 0.0) {
+    p = vec2(c.x + r * ${floatLiteral(CENTRE_GUARD)}, c.y);
+    s *= ${floatLiteral(CENTRE_GUARD * CENTRE_GUARD)};
+    return;
+  }
+  float k = (r * r) / d2;
   p = vec2(c.x + dx * k, c.y + dy * k);
   s *= k;
 }`,

@@ -2,11 +2,25 @@
 import type { InversionElement } from '../../nodes/core/scene.ts';
 import type { ElementKind, IisState } from './element-kind.ts';
 
+/**
+ * The point exactly at an inversion centre maps to ∞ (r²/0): it goes instead to the far point
+ * c + (r·G, 0) with scale G², as if it lay r/G to the right of c (G = CENTRE_GUARD), so the run
+ * stays finite and the GPU twin does the same.
+ */
+export const CENTRE_GUARD = 1e9;
+
 /** Inverts the state's point in (cx, cy, r) unconditionally; shared by the generator kinds. */
 export function invertState(st: IisState, cx: number, cy: number, r: number): void {
   const dx = st.x - cx;
   const dy = st.y - cy;
-  const k = (r * r) / (dx * dx + dy * dy);
+  const d2 = dx * dx + dy * dy;
+  if (d2 === 0) {
+    st.x = cx + r * CENTRE_GUARD;
+    st.y = cy;
+    st.s *= CENTRE_GUARD * CENTRE_GUARD;
+    return;
+  }
+  const k = (r * r) / d2;
   st.x = cx + dx * k;
   st.y = cy + dy * k;
   st.s *= k;

@@ -4,7 +4,10 @@
  * and are specialised to its colouring mode and to edges on/off.
  */
 import type { Coloring, TileSpec } from '../../nodes/core/scene.ts';
+import type { DepthColoring } from '../colour.ts';
+import { rotationPair } from '../placement.ts';
 import { floatLiteral } from './literal.ts';
+import { placeUvGlsl } from './placement.glsl.ts';
 import { type GlslFunction, glslFunction } from './snippet.ts';
 import type { SceneValues } from './values.ts';
 
@@ -63,7 +66,7 @@ vec3 cosinePalette(vec3 a, vec3 b, vec3 c, vec3 d, float t) {
 );
 
 /** `vec3 depthColour(int depth)`: the sRGB colour of an escaped point, for the tile's mode. */
-export function depthColourGlsl(coloring: Coloring, v: SceneValues): GlslFunction {
+export function depthColourGlsl(coloring: DepthColoring, v: SceneValues): GlslFunction {
   const head = 'vec3 depthColour(int depth) {';
   switch (coloring.mode) {
     case 'depth-hsv': {
@@ -94,27 +97,88 @@ export function depthColourGlsl(coloring: Coloring, v: SceneValues): GlslFunctio
 }
 
 /**
- * `vec3 shade(bool clipped, bool escaped, int depth, float edgePixels)`: linear colour of one
- * sample; edges with a 1-pixel antialiased falloff, t = clamp(edgePixels − width/2 + 0.5, 0, 1).
+ * `vec3 finalColour(int depth, vec2 p)`: linear colour of an escaped point (colour.ts
+ * finalColour): the picture's texel at p in image mode (u_picture = (c.x, c.y, w, h),
+ * u_pictureRot = (cos θ, sin θ)), else the depth colour.
  */
-export function shadeGlsl(tile: TileSpec, v: SceneValues): GlslFunction {
+export function finalColourGlsl(coloring: Exclude<Coloring, { mode: 'limit-set' }>, v: SceneValues): GlslFunction {
+  const head = 'vec3 finalColour(int depth, vec2 p) {';
+  if (coloring.mode !== 'image') {
+    return glslFunction('finalColour', `${head}\n  return toLinear(depthColour(depth));\n}`, [
+      toLinearGlsl,
+      depthColourGlsl(coloring, v),
+    ]);
+  }
+  const { image, center, size, rotation } = coloring;
+  const rect = v.vec('u_picture', [center[0], center[1], (size * image.width) / image.height, size]);
+  const rot = v.vec('u_pictureRot', rotationPair(rotation));
+  const sampler = v.picture(image.src);
+  return glslFunction(
+    'finalColour',
+    `${head}\n  return textureLod(${sampler}, placeUv(${rect}, ${rot}, p), 0.0).rgb;\n}`,
+    [placeUvGlsl],
+  );
+}
+
+/**
+ * `vec3 shade(bool clipped, bool escaped, int depth, float edgePixels, vec2 p, float limitPixels,
+ * int seed)`: linear colour of one sample, in colour.ts shade's order (clip,
+ * seed, seeds only, limit-set mode, limit, inner circle, fill, mode colour, edges); each option
+ * is emitted only when the tile uses it. Edges have a 1-pixel antialiased falloff,
+ * t = clamp(edgePixels − width/2 + 0.5, 0, 1).
+ */
+export function shadeGlsl(tile: TileSpec, v: SceneValues, seedColour: GlslFunction | null): GlslFunction {
   const background = v.vec('u_background', tile.background);
   const limit = v.vec('u_limitColor', tile.limitColor);
+  const deps: GlslFunction[] = [toLinearGlsl];
   const lines = [
-    'vec3 shade(bool clipped, bool escaped, int depth, float edgePixels) {',
+    'vec3 shade(bool clipped, bool escaped, int depth, float edgePixels, vec2 p, float limitPixels, int seed) {',
     `  if (clipped) return toLinear(${background});`,
-    `  if (!escaped) return toLinear(${limit});`,
-    '  vec3 base = toLinear(depthColour(depth));',
   ];
-  if (tile.edgeWidth > 0) {
-    const width = v.float('u_edgeWidth', tile.edgeWidth);
-    const colour = v.vec('u_edgeColor', tile.edgeColor);
+  if (seedColour) {
+    lines.push('  if (seed >= 0) return seedColour(seed, p);');
+    deps.push(seedColour);
+  }
+  if (tile.seedsOnly) lines.push(`  return toLinear(${background});`, '}');
+  else if (tile.coloring.mode === 'limit-set') {
     lines.push(
-      `  float t = clamp(edgePixels - ${width} / 2.0 + 0.5, 0.0, 1.0);`,
-      `  vec3 edge = toLinear(${colour});`,
-      '  return edge + (base - edge) * t;',
+      `  if (!escaped) return toLinear(${limit});`,
+      '  float line = clamp(1.0 - limitPixels, 0.0, 1.0);',
     );
-  } else lines.push('  return base;');
-  lines.push('}');
-  return glslFunction('shade', lines.join('\n'), [toLinearGlsl, depthColourGlsl(tile.coloring, v)]);
+    if (tile.coloring.glow > 0) {
+      const glow = v.float('u_glow', tile.coloring.glow);
+      lines.push(`  float glow = exp(-limitPixels / ${glow});`);
+    } else lines.push('  float glow = 0.0;');
+    lines.push(
+      `  vec3 bg = toLinear(${background});`,
+      `  return bg + (toLinear(${limit}) - bg) * max(line, glow);`,
+      '}',
+    );
+  } else {
+    lines.push(`  if (!escaped) return toLinear(${limit});`);
+    if (tile.inner) {
+      const inner = v.vec('u_inner', [tile.inner.c[0], tile.inner.c[1], tile.inner.r]);
+      lines.push(
+        `  vec3 inner = ${inner};`,
+        '  if ((p.x - inner.x) * (p.x - inner.x) + (p.y - inner.y) * (p.y - inner.y) >= inner.z * inner.z)',
+        `    return toLinear(${background});`,
+      );
+    }
+    deps.push(finalColourGlsl(tile.coloring, v));
+    if (tile.fill) {
+      const fill = v.vec('u_fill', tile.fill);
+      lines.push(`  vec3 base = depth == 0 ? toLinear(${fill}) : finalColour(depth, p);`);
+    } else lines.push('  vec3 base = finalColour(depth, p);');
+    if (tile.edgeWidth > 0) {
+      const width = v.float('u_edgeWidth', tile.edgeWidth);
+      const colour = v.vec('u_edgeColor', tile.edgeColor);
+      lines.push(
+        `  float t = clamp(edgePixels - ${width} / 2.0 + 0.5, 0.0, 1.0);`,
+        `  vec3 edge = toLinear(${colour});`,
+        '  return edge + (base - edge) * t;',
+      );
+    } else lines.push('  return base;');
+    lines.push('}');
+  }
+  return glslFunction('shade', lines.join('\n'), deps);
 }

@@ -8,9 +8,11 @@
  *   to depth, so after at most maxIter passes depth ≥ maxIter.
  */
 import type { Scene, SceneElement } from '../../nodes/core/scene.ts';
+import { farDisk, limitReach } from '../far-disk.ts';
 import { shadeGlsl } from './colour.glsl.ts';
 import type { GlslElementTwin } from './element-twin.ts';
 import { glslTwin } from './element-twins.ts';
+import type { SeedsGlsl } from './seeds.glsl.ts';
 import { type GlslFunction, glslFunction } from './snippet.ts';
 import type { SourceBuilder } from './source.ts';
 import type { SceneValues } from './values.ts';
@@ -52,10 +54,21 @@ export function elementFunctions(placed: readonly PlacedElement[], edges: boolea
  * steps (each element's block: step it, and restart if it applied); once depth reaches maxIter
  * the blocks after the loop only ask whether some element holds p.
  */
-export function emitRunIis(out: SourceBuilder, placed: readonly PlacedElement[], maxIter: string): void {
+export function emitRunIis(
+  out: SourceBuilder,
+  placed: readonly PlacedElement[],
+  maxIter: string,
+  withSeeds = false,
+): void {
+  // With seeds (interpret.ts runIis's `visit`): at the start of every pass, a point in a seed stops
+  // the run, not escaped, with `seed` its index.
+  const seedTest = (indent: string) => [`${indent}seed = seedAt(p);`, `${indent}if (seed >= 0) return false;`];
   out.push(
-    'bool runIis(inout vec2 p, inout float s, inout int depth) {',
+    withSeeds
+      ? 'bool runIis(inout vec2 p, inout float s, inout int depth, inout int seed) {'
+      : 'bool runIis(inout vec2 p, inout float s, inout int depth) {',
     `  for (int iteration = 0; iteration < ${maxIter}; ++iteration) {`,
+    ...(withSeeds ? seedTest('    ') : []),
     `    if (depth >= ${maxIter}) break;`,
   );
   placed.forEach(({ twin, data }, i) => {
@@ -66,7 +79,9 @@ export function emitRunIis(out: SourceBuilder, placed: readonly PlacedElement[],
       '    }',
     ]);
   });
-  out.push('    return true;', '  }', '  // depth ≥ maxIter: escaped only if no element holds p.');
+  out.push('    return true;', '  }');
+  if (withSeeds) out.push(...seedTest('  '));
+  out.push('  // depth ≥ maxIter: escaped only if no element holds p.');
   placed.forEach(({ twin, args }, i) => {
     out.block(i + 1, [`  if (${twin.inside.name}(p, ${args})) return false;`]);
   });
@@ -82,13 +97,34 @@ export function emitBoundaryDistance(out: SourceBuilder, placed: readonly Placed
   out.push('  return d;', '}');
 }
 
+/** Whether the sample needs the tile-edge distance: edges, or the limit-set estimate. */
+export const needsEdgeDistance = (scene: Scene): boolean =>
+  scene.tile.edgeWidth > 0 || scene.tile.coloring.mode === 'limit-set';
+
+/**
+ * `float farDistance(vec2 p, vec3 far)`: far-disk.ts farDistance, R > ρ ? (R − ρ)·R/ρ : 0 with
+ * far = (o.x, o.y, ρ).
+ */
+export const farDistanceGlsl = glslFunction(
+  'farDistance',
+  `
+float farDistance(vec2 p, vec3 far) {
+  float dx = p.x - far.x;
+  float dy = p.y - far.y;
+  float big = sqrt(dx * dx + dy * dy);
+  return big > far.z ? ((big - far.z) * big) / far.z : 0.0;
+}`,
+);
+
 /**
  * `vec4 shadeSample(vec2 w, float pixelWorld, float bgAlpha)`: raster.ts's per-sample body —
- * clip test, IIS run, edge distance in pixels (d / s / pixelWorld), shade; alpha is bgAlpha on
- * the background outside the clip disk, else 1. Returns shade's dependencies for the assembler.
+ * clip test, IIS run (stopping at seeds), edge distance in pixels (max(d, far distance) / s /
+ * pixelWorld), shade; alpha is bgAlpha on the background outside the clip disk, else 1. Returns
+ * shade's dependencies for the assembler.
  */
-export function shadeSampleGlsl(scene: Scene, v: SceneValues): GlslFunction {
-  const edges = scene.tile.edgeWidth > 0;
+export function shadeSampleGlsl(scene: Scene, v: SceneValues, seeds: SeedsGlsl | null): GlslFunction {
+  const limitSet = scene.tile.coloring.mode === 'limit-set';
+  const edges = needsEdgeDistance(scene);
   const lines = ['vec4 shadeSample(vec2 w, float pixelWorld, float bgAlpha) {'];
   if (scene.clip) {
     const clip = v.vec('u_clip', [scene.clip.c[0], scene.clip.c[1], scene.clip.r]);
@@ -99,14 +135,36 @@ export function shadeSampleGlsl(scene: Scene, v: SceneValues): GlslFunction {
       '  bool clipped = cx * cx + cy * cy > clip.z * clip.z;',
     );
   } else lines.push('  bool clipped = false;');
+  lines.push('  vec2 p = w;', '  float s = 1.0;', '  int depth = 0;', '  int seed = -1;');
   lines.push(
-    '  vec2 p = w;',
-    '  float s = 1.0;',
-    '  int depth = 0;',
-    '  bool escaped = clipped ? false : runIis(p, s, depth);',
+    seeds
+      ? '  bool escaped = clipped ? false : runIis(p, s, depth, seed);'
+      : '  bool escaped = clipped ? false : runIis(p, s, depth);',
     `  float edgePixels = ${GLSL_FAR};`,
+    `  float limitPixels = ${GLSL_FAR};`,
   );
-  if (edges) lines.push('  if (escaped) edgePixels = sceneBoundaryDistance(p) / s / pixelWorld;');
-  lines.push('  return vec4(shade(clipped, escaped, depth, edgePixels), clipped ? bgAlpha : 1.0);', '}');
-  return glslFunction('shadeSample', lines.join('\n'), [shadeGlsl(scene.tile, v)]);
+  const deps: GlslFunction[] = [];
+  if (edges) {
+    const far = farDisk(scene.elements);
+    const reach = limitSet ? limitReach(scene.elements) : null;
+    lines.push('  if (escaped) {');
+    if (far) {
+      const f = v.vec('u_farDisk', [far.c[0], far.c[1], far.r]);
+      lines.push(`    float d = max(sceneBoundaryDistance(p), farDistance(p, ${f}));`);
+      deps.push(farDistanceGlsl);
+    } else lines.push('    float d = sceneBoundaryDistance(p);');
+    lines.push('    edgePixels = d / s / pixelWorld;');
+    if (reach !== null)
+      lines.push(`    limitPixels = (d + ${v.float('u_limitReach', reach)}) / s / pixelWorld;`);
+    lines.push('  }');
+  }
+  lines.push(
+    '  return vec4(shade(clipped, escaped, depth, edgePixels, p, limitPixels, seed), clipped ? bgAlpha : 1.0);',
+    '}',
+  );
+  return glslFunction('shadeSample', lines.join('\n'), [
+    ...deps,
+    ...(seeds ? [seeds.seedAt] : []),
+    shadeGlsl(scene.tile, v, seeds?.seedColour ?? null),
+  ]);
 }

@@ -9,13 +9,15 @@ import {
   elementFunctions,
   emitBoundaryDistance,
   emitRunIis,
+  needsEdgeDistance,
   placeElements,
   shadeSampleGlsl,
 } from './iis.glsl.ts';
 import { floatLiteral, intLiteral } from './literal.ts';
 import { collectFunctions, type GlslFunction } from './snippet.ts';
 import { SourceBuilder } from './source.ts';
-import { declaration, SceneValues, type UniformEntry } from './values.ts';
+import { seedsGlsl } from './seeds.glsl.ts';
+import { declaration, PICTURE_SAMPLER, SceneValues, type UniformEntry } from './values.ts';
 import { pixelToWorldGlsl, sampleOffsetGlsl } from './view.glsl.ts';
 
 export type Variant = 'color' | 'probe';
@@ -49,14 +51,19 @@ export interface EmittedShader {
   readonly source: string;
   readonly uniforms: UniformEntry[];
   readonly lineMap: Record<number, string>;
+  /** The pictures' srcs by sampler number. */
+  readonly pictures: string[];
 }
 
 /** The scene-dependent parts, with the uniforms they read registered in `v`. */
 function sceneParts(scene: Scene, v: SceneValues, withColour: boolean) {
   const placed = placeElements(scene.elements, v);
   const maxIter = v.int('u_maxIterations', scene.maxIterations);
-  const edges = withColour && scene.tile.edgeWidth > 0;
-  const shadeSample = withColour ? shadeSampleGlsl(scene, v) : null;
+  const edges = withColour && needsEdgeDistance(scene);
+  // Seeds only colour: the probe variant is the pure IIS loop (what parity compares).
+  const seedList = withColour ? (scene.tile.seeds ?? []) : [];
+  const seeds = seedList.length > 0 ? seedsGlsl(seedList, v) : null;
+  const shadeSample = withColour ? shadeSampleGlsl(scene, v, seeds) : null;
   const lineMap: Record<number, string> = {};
   scene.elements.forEach((e, i) => {
     lineMap[i + 1] = e.nodeId;
@@ -65,7 +72,7 @@ function sceneParts(scene: Scene, v: SceneValues, withColour: boolean) {
   const emitBody = (out: SourceBuilder, extra: readonly GlslFunction[]) => {
     const fns = [...elementFunctions(placed, edges), ...(shadeSample?.deps ?? []), ...extra];
     for (const code of collectFunctions(fns)) out.push(code, '');
-    emitRunIis(out, placed, maxIter);
+    emitRunIis(out, placed, maxIter, seeds !== null);
     out.push('');
     if (edges) {
       emitBoundaryDistance(out, placed);
@@ -73,20 +80,33 @@ function sceneParts(scene: Scene, v: SceneValues, withColour: boolean) {
     }
     if (shadeSample) out.push(shadeSample.code, '');
   };
-  return { emitBody, lineMap };
+  return { emitBody, lineMap, pictures: v.pictures() };
+}
+
+/** `uniform sampler2D u_imageN;` for each picture (texture unit N, see SceneValues.picture). */
+const samplerDeclarations = (pictures: readonly string[]) =>
+  pictures.map((src, i) => `uniform sampler2D ${PICTURE_SAMPLER}${i}; // ${describePicture(src)}`);
+
+/** A short, comment-safe name of a picture source (data: URLs are long). */
+function describePicture(src: string): string {
+  const comma = src.indexOf(',');
+  const head = src.startsWith('data:') && comma > 0 ? src.slice(0, comma) : src;
+  return head.replace(/[^A-Za-z0-9:/;._+-]/g, '').slice(0, 40);
 }
 
 const HEADER = ['precision highp float;', 'precision highp int;'];
 
 export function fragmentShader(scene: Scene, variant: Variant, baked: boolean): EmittedShader {
   const v = new SceneValues(baked);
-  const { emitBody, lineMap } = sceneParts(scene, v, variant === 'color');
+  const { emitBody, lineMap, pictures } = sceneParts(scene, v, variant === 'color');
   const uniforms = v.entries();
   const out = new SourceBuilder().push('#version 300 es', ...HEADER, '');
   out.push('// Frame uniforms (set by the runtime).');
   for (const u of FRAME_UNIFORMS) out.push(`uniform ${u.type} ${u.name}; // ${u.doc}`);
   if (uniforms.length > 0) out.push('// Scene uniforms (values; changing them needs no recompile).');
   for (const u of uniforms) out.push(declaration(u));
+  if (pictures.length > 0) out.push('// Pictures (textures; the runtime binds texture unit N to u_imageN).');
+  out.push(...samplerDeclarations(pictures));
   out.push(
     variant === 'color'
       ? 'out vec4 outColor; // linear RGB; alpha u_bgAlpha on the background'
@@ -110,7 +130,7 @@ export function fragmentShader(scene: Scene, variant: Variant, baked: boolean): 
     );
   }
   out.push('}');
-  return { source: out.toString(), uniforms, lineMap };
+  return { source: out.toString(), uniforms, lineMap, pictures };
 }
 
 /**
@@ -120,7 +140,7 @@ export function fragmentShader(scene: Scene, variant: Variant, baked: boolean): 
  */
 export function shadertoyShader(scene: Scene): string {
   const v = new SceneValues(true);
-  const { emitBody } = sceneParts(scene, v, true);
+  const { emitBody, pictures } = sceneParts(scene, v, true);
   const [cx, cy] = scene.view.center;
   const view = `vec3(${[cx, cy, scene.view.scale].map(floatLiteral).join(', ')})`;
   const samples = intLiteral(Math.max(1, Math.round(scene.samples)));
@@ -128,6 +148,11 @@ export function shadertoyShader(scene: Scene): string {
     '// Kleinflow: an Iterated Inversion System, generated from a node graph. Paste into Shadertoy.',
     '',
   );
+  // Shadertoy has no sampler uniforms of its own: picture N is read from iChannelN.
+  pictures.forEach((src, i) =>
+    out.push(`#define ${PICTURE_SAMPLER}${i} iChannel${i} // load ${describePicture(src)} there`),
+  );
+  if (pictures.length > 0) out.push('');
   emitBody(out, [pixelToWorldGlsl, sampleOffsetGlsl, toSrgbGlsl]);
   out.push(
     'void mainImage(out vec4 fragColor, in vec2 fragCoord) {',

@@ -16,12 +16,15 @@ export interface UniformEntry {
 
 /** The packed element data lives in one array: `uniform vec4 u_el[N]`. */
 export const ELEMENT_ARRAY = 'u_el';
+/** Picture samplers are `u_image0`, `u_image1`, …; sampler N reads texture unit N. */
+export const PICTURE_SAMPLER = 'u_image';
 
 const VEC_TYPES = { 2: 'vec2', 3: 'vec3', 4: 'vec4' } as const;
 
 export class SceneValues {
   private readonly uniforms = new Map<string, UniformEntry>();
   private readonly rows: number[] = [];
+  private readonly pictureSrcs: string[] = [];
 
   constructor(readonly baked: boolean) {}
 
@@ -55,6 +58,24 @@ export class SceneValues {
       if (!this.baked) this.rows.push(...row);
     }
     return exprs;
+  }
+
+  /**
+   * The sampler of picture `src`: `u_image0`, `u_image1`, … in order of first use, one per
+   * distinct src. Samplers stay uniforms when baked (a texture cannot be a literal).
+   */
+  picture(src: string): string {
+    let i = this.pictureSrcs.indexOf(src);
+    if (i < 0) {
+      i = this.pictureSrcs.length;
+      this.pictureSrcs.push(src);
+    }
+    return `${PICTURE_SAMPLER}${i}`;
+  }
+
+  /** The pictures' srcs by sampler number (texture unit i holds pictures()[i]). */
+  pictures(): string[] {
+    return [...this.pictureSrcs];
   }
 
   /** Every scene uniform, sorted by name (the element array included when it is not empty). */

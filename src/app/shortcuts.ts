@@ -16,6 +16,7 @@ export const SHORTCUTS: readonly { group: string; items: readonly Shortcut[] }[]
       { keys: ['Ctrl C', 'Ctrl X', 'Ctrl V'], action: 'Copy, cut, paste nodes (works across tabs)' },
       { keys: ['Ctrl D'], action: 'Duplicate the selection' },
       { keys: ['Ctrl A'], action: 'Select all nodes' },
+      { keys: ['I'], action: 'Show or hide the inspector' },
     ],
   },
   {

@@ -252,7 +252,7 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
           fitViewOptions={{ padding: 0.2, maxZoom: 1 }}
           minZoom={0.15}
           maxZoom={2.5}
-          proOptions={{ hideAttribution: true }}
+          attributionPosition="top-left"
           defaultEdgeOptions={{ interactionWidth: 16 }}
           connectionRadius={24}
         >

@@ -5,6 +5,7 @@
  */
 import type { UniformEntry } from '../../shader-gen/glsl/values.ts';
 import { bindProgram } from './gl-program.ts';
+import { PictureTextures } from './picture-textures.ts';
 import { ProgramCache } from './program-cache.ts';
 import { createTarget, type RenderTarget, readTopRowFirst } from './render-target.ts';
 import { ResolvePass } from './resolve-pass.ts';
@@ -12,11 +13,18 @@ import { type FrameParams, type GpuProgram, setFrameUniforms, uploadUniforms } f
 
 export class Renderer {
   readonly programs: ProgramCache;
+  /** The pictures programs sample, as textures (cached by src). */
+  readonly pictures: PictureTextures;
   private readonly resolvePass: ResolvePass;
   private readonly vao: WebGLVertexArrayObject | null;
 
-  constructor(readonly gl: WebGL2RenderingContext) {
+  /** `onPictureReady`: a picture finished decoding (the picture should be drawn again). */
+  constructor(
+    readonly gl: WebGL2RenderingContext,
+    onPictureReady?: () => void,
+  ) {
     this.programs = new ProgramCache(gl);
+    this.pictures = new PictureTextures(gl, onPictureReady);
     this.resolvePass = new ResolvePass(gl);
     this.vao = gl.createVertexArray();
     // Enable the extensions once (getExtension enables them for the context).
@@ -35,6 +43,7 @@ export class Renderer {
    * Draws sample number `k` (0-based) of `frame` into `target`'s first width×height pixels and
    * folds it in (render-target.ts AccumulationMode): `sum` adds (rgb·a, a) to a buffer cleared at
    * k = 0; `mean` blends dst ← dst + (src − dst)/(k+1) (constant weight 1/(k+1); k = 0 replaces).
+   * `pictures` (CompiledProgram.pictures) are bound to texture units 0, 1, ….
    */
   drawSample(
     gp: GpuProgram,
@@ -44,6 +53,7 @@ export class Renderer {
     height: number,
     frame: FrameParams,
     k: number,
+    pictures: readonly string[] = [],
   ): void {
     const gl = this.gl;
     gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
@@ -51,6 +61,7 @@ export class Renderer {
     bindProgram(gl, gp.program);
     if (gp.uploaded !== uniforms) uploadUniforms(gl, gp, uniforms);
     setFrameUniforms(gl, gp, frame);
+    if (pictures.length > 0) this.pictures.bind(gp, pictures);
     gl.enable(gl.BLEND);
     gl.blendEquation(gl.FUNC_ADD);
     if (target.mode === 'sum') {
@@ -110,6 +121,7 @@ export class Renderer {
 
   dispose(): void {
     this.programs.dispose();
+    this.pictures.dispose();
     this.resolvePass.dispose();
     if (!this.gl.isContextLost()) this.gl.deleteVertexArray(this.vao);
   }

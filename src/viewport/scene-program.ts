@@ -16,6 +16,8 @@ export interface SceneProgram {
   readonly gp: GpuProgram;
   readonly uniforms: readonly UniformEntry[];
   readonly baked: boolean;
+  /** The pictures it samples, by texture unit (CompiledProgram.pictures). */
+  readonly pictures: readonly string[];
 }
 
 /** What a new scene changed: nothing that shows, only values (same program), or the structure. */
@@ -34,6 +36,9 @@ function sameUniforms(a: readonly UniformEntry[], b: readonly UniformEntry[]): b
   }
   return true;
 }
+
+const samePictures = (a: readonly string[], b: readonly string[]) =>
+  a.length === b.length && a.every((src, i) => src === b[i]);
 
 /** The shader generator threw (a bug, not a user error): report it like a compile failure. */
 function generate(scene: Scene, options: CompileOptions): CompiledProgram | Diagnostic[] {
@@ -71,14 +76,20 @@ export class SceneProgramBuilder {
     }
     const prev = this.compiled;
     const sameStructure = prev !== null && prev.structureKey === compiled.structureKey;
-    if (sameStructure && this.program && sameUniforms(prev.uniforms, compiled.uniforms)) return 'same';
+    if (
+      sameStructure &&
+      this.program &&
+      sameUniforms(prev.uniforms, compiled.uniforms) &&
+      samePictures(prev.pictures, compiled.pictures)
+    )
+      return 'same';
     this.compiled = compiled;
     this.version++;
     this.changedAt = now;
     this.bake = null;
     const built = renderer.programs.obtain(compiled, UNIFORM);
     if (built.ok) {
-      this.program = { gp: built.value, uniforms: compiled.uniforms, baked: false };
+      this.program = { gp: built.value, uniforms: compiled.uniforms, baked: false, pictures: compiled.pictures };
       this.report(compiled.diagnostics);
     } else {
       this.program = null;
@@ -106,7 +117,7 @@ export class SceneProgramBuilder {
       }
       const hit = renderer.programs.peek(programKey(compiled, BAKED));
       this.bake = { version: this.version, compiled, build: null, done: hit !== undefined };
-      if (hit) return { gp: hit, uniforms: compiled.uniforms, baked: true };
+      if (hit) return { gp: hit, uniforms: compiled.uniforms, baked: true, pictures: compiled.pictures };
       this.bake.build = renderer.programs.begin(compiled, BAKED);
       return null;
     }
@@ -118,7 +129,8 @@ export class SceneProgramBuilder {
       console.warn('[kleinflow] baked shader failed; staying on the uniform one', result.error);
       return null;
     }
-    return { gp: result.value, uniforms: this.bake.compiled.uniforms, baked: true };
+    const { uniforms, pictures } = this.bake.compiled;
+    return { gp: result.value, uniforms, baked: true, pictures };
   }
 
   bakeInFlight(): boolean {
@@ -143,7 +155,13 @@ export class SceneProgramBuilder {
         continue;
       }
       const built = renderer.programs.obtain(compiled, options);
-      if (built.ok) return { gp: built.value, uniforms: compiled.uniforms, baked: options.baked === true };
+      if (built.ok)
+        return {
+          gp: built.value,
+          uniforms: compiled.uniforms,
+          baked: options.baked === true,
+          pictures: compiled.pictures,
+        };
       problems.push(...built.error);
     }
     throw new Error(`the scene does not compile: ${problems.map((d) => d.message).join('; ')}`);

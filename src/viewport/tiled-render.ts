@@ -34,7 +34,7 @@ const yieldToPage = () => new Promise<void>((resolve) => setTimeout(resolve, 0))
  */
 export async function renderTiled(
   renderer: () => Renderer,
-  program: () => { gp: GpuProgram; uniforms: readonly UniformEntry[] },
+  program: () => { gp: GpuProgram; uniforms: readonly UniformEntry[]; pictures?: readonly string[] },
   o: TiledRenderOptions,
 ): Promise<Uint8ClampedArray | null> {
   const { width, height } = o;
@@ -61,7 +61,7 @@ export async function renderTiled(
         for (let k = 0; k < samples; k++) {
           const r = renderer();
           if (r !== r0) throw new Error('renderToPixels: the WebGL context was lost');
-          const { gp, uniforms } = program();
+          const { gp, uniforms, pictures } = program();
           const frame = {
             width,
             height,
@@ -71,7 +71,7 @@ export async function renderTiled(
             jitter: sampleOffset(k),
             bgAlpha: o.transparent ? 0 : 1,
           };
-          r.drawSample(gp, uniforms, targets.accum, tw, th, frame, k);
+          r.drawSample(gp, uniforms, targets.accum, tw, th, frame, k, pictures);
           done++;
           if (o.onProgress?.(done / total) === false) return null;
           await yieldToPage();

@@ -58,7 +58,7 @@ export class Viewport {
     if (!gl) throw new Error('WebGL2 is not available in this browser');
     this.gl = gl;
     this.idleBakeMs = options.idleBakeMs ?? 600;
-    this.renderer = new Renderer(gl);
+    this.renderer = new Renderer(gl, () => this.restart());
     this.programs = new SceneProgramBuilder((d) => options.onDiagnostics?.(d));
     const onLost = (e: Event) => {
       e.preventDefault(); // tells the browser we want the context back
@@ -72,7 +72,7 @@ export class Viewport {
     };
     const onRestored = () => {
       try {
-        this.renderer = new Renderer(gl);
+        this.renderer = new Renderer(gl, () => this.restart());
       } catch (e) {
         // Lost again while rebuilding: the next 'webglcontextrestored' tries once more.
         console.warn('[kleinflow] could not rebuild the WebGL renderer', e);
@@ -136,6 +136,7 @@ export class Viewport {
     if (!scene) throw new Error('renderToPixels: no scene was set');
     const renderer = this.requireRenderer();
     const program = this.programs.exportProgram(renderer, scene);
+    await renderer.pictures.whenReady(program.pictures);
     return renderTiled(
       () => this.requireRenderer(),
       () => program,
@@ -251,7 +252,7 @@ export class Viewport {
       jitter: sampleOffset(k),
       bgAlpha: 1,
     };
-    renderer.drawSample(program.gp, program.uniforms, this.accum, width, height, frame, k);
+    renderer.drawSample(program.gp, program.uniforms, this.accum, width, height, frame, k, program.pictures);
     this.samplesDone = k + 1;
     renderer.present(this.accum, this.samplesDone, width, height);
     this.framesDrawn++;

@@ -291,9 +291,10 @@ describe('editor', () => {
   }, 150_000);
 
   it('an unreadable autosave is reported and offered for download, not thrown away', async () => {
-    await page.evaluate(() =>
-      localStorage.setItem('kleinflow.autosave', '{"format":"kleinflow","nodes":[oops'),
-    );
+    // Let the pending autosave land first (a reload flushes it), so it cannot overwrite the broken text.
+    await page.getByTestId('save-state').filter({ hasText: 'Saved' }).waitFor();
+    const broken = '{"format":"kleinflow","nodes":[oops';
+    await page.evaluate((text) => localStorage.setItem('kleinflow.autosave', text), broken);
     await page.reload();
     const banner = page.getByRole('alert').filter({ hasText: 'could not be restored' });
     await banner.waitFor();
@@ -301,12 +302,23 @@ describe('editor', () => {
       page.waitForEvent('download'),
       banner.getByRole('button', { name: 'Download it' }).click(),
     ]);
-    expect(readFileSync((await download.path())!, 'utf8')).toBe('{"format":"kleinflow","nodes":[oops');
-    expect(await page.evaluate(() => localStorage.getItem('kleinflow.autosave.unreadable'))).toContain(
-      'oops',
-    );
+    expect(readFileSync((await download.path())!, 'utf8')).toBe(broken);
+    expect(await page.evaluate(() => localStorage.getItem('kleinflow.autosave.unreadable'))).toBe(broken);
     // The editor still works: it opened the default example.
     expect(await nodeCount(page)).toBeGreaterThan(0);
+  });
+
+  it('a full browser storage is reported, not ignored', async () => {
+    await page.evaluate(() => {
+      const setItem = Storage.prototype.setItem;
+      Storage.prototype.setItem = function (key: string, value: string) {
+        if (key === 'kleinflow.autosave') throw new DOMException('quota exceeded', 'QuotaExceededError');
+        return setItem.call(this, key, value);
+      };
+    });
+    await setField(page, 'k', 'size', '1.5');
+    await page.getByRole('alert').filter({ hasText: 'storage is full' }).waitFor();
+    expect(await page.getByTestId('save-state').textContent()).toBe('Not saved');
   });
 
   it('logged no console errors and no page errors', () => {

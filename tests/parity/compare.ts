@@ -12,12 +12,14 @@
  * 2⁻²⁴ (depth + 1) ((|w| + view scale) s + |final|). Measured errors stay below 2.5× that bound;
  * the tolerance is 16× it.
  */
-import type { Scene } from '../../nodes/core/scene.ts';
+import type { Scene, SeedSpec } from '../../nodes/core/scene.ts';
 import { linearToSrgb } from '../../shader-gen/colour.ts';
 import type { IisState } from '../../shader-gen/elements/element-kind.ts';
-import { prepare } from '../../shader-gen/interpret.ts';
+import { type PreparedElements, prepare, runIis } from '../../shader-gen/interpret.ts';
+import { placeUv } from '../../shader-gen/placement.ts';
+import { seedAt } from '../../shader-gen/seeds.ts';
 import { type MarginResult, pathMargin } from '../../shader-gen/path-margin.ts';
-import { sampleColour } from '../../shader-gen/raster.ts';
+import { sampleColour, sampleContext } from '../../shader-gen/raster.ts';
 import { pixelToWorld } from '../../shader-gen/view.ts';
 import type { ProbeImage } from './gpu-probe.ts';
 
@@ -150,13 +152,45 @@ export interface ColourStats {
 
 const level = (linear: number) => Math.round(linearToSrgb(Math.min(1, Math.max(0, linear))) * 255);
 
+/** Distance from (x, y) to the edge of a seed (disk rim or picture rectangle), in world units. */
+function seedEdgeDistance(seed: SeedSpec, x: number, y: number): number {
+  if (seed.kind === 'disk') return Math.abs(Math.hypot(x - seed.c[0], y - seed.c[1]) - seed.r);
+  const [u, v] = placeUv(seed.center[0], seed.center[1], 1, 1, Math.cos(seed.rotation), Math.sin(seed.rotation), x, y);
+  // u, v here are the local coordinates + ½ (w = h = 1): distance to the rectangle's edge lines.
+  const lx = Math.abs(u - 0.5);
+  const ly = Math.abs(0.5 - v);
+  return Math.min(Math.abs(lx - seed.width / 2), Math.abs(ly - seed.height / 2));
+}
+
+/**
+ * How close a sample comes to a boundary of its colouring (besides the elements'): the seeds'
+ * edges at every point of its path up to the seed that stops it, and the inner circle at the final
+ * point, each divided by the scale s there (back in the original coordinates).
+ */
+function colourMargin(scene: Scene, prepared: PreparedElements, w: readonly [number, number]): number {
+  const seeds = scene.tile.seeds ?? [];
+  const inner = scene.tile.inner;
+  if (seeds.length === 0 && !inner) return Number.POSITIVE_INFINITY;
+  let margin = Number.POSITIVE_INFINITY;
+  const st: IisState = { x: w[0], y: w[1], s: 1, depth: 0 };
+  let stopped = false;
+  runIis(prepared, scene.maxIterations, st, (at) => {
+    for (const seed of seeds) margin = Math.min(margin, seedEdgeDistance(seed, at.x, at.y) / at.s);
+    stopped = seedAt(seeds, at.x, at.y) >= 0;
+    return stopped;
+  });
+  if (inner && !stopped) margin = Math.min(margin, Math.abs(Math.hypot(st.x - inner.c[0], st.y - inner.c[1]) - inner.r) / st.s);
+  return margin;
+}
+
 /**
  * Compares a colour-variant image (linear RGBA, rendered at the pixel centres) with the CPU's
  * sampleColour, channel by channel in 8-bit sRGB; pixels whose path or sample point lies within ε
  * of a boundary (an element's, or the clip circle's) are excluded as in compareWithCpu.
  */
 export function compareColourWithCpu(scene: Scene, img: ProbeImage): ColourStats {
-  const prepared = prepare(scene.elements);
+  const ctx = sampleContext(scene);
+  const prepared = ctx.prepared;
   const eps = MARGIN_FRACTION * scene.view.scale;
   const pixelWorld = scene.view.scale / img.height;
   const st: IisState = { x: 0, y: 0, s: 1, depth: 0 };
@@ -168,11 +202,15 @@ export function compareColourWithCpu(scene: Scene, img: ProbeImage): ColourStats
       const w = pixelToWorld(scene.view, img.width, img.height, px, py);
       const clip = scene.clip;
       const clipMargin = clip ? Math.abs(Math.hypot(w[0] - clip.c[0], w[1] - clip.c[1]) - clip.r) : Infinity;
-      if (clipMargin < eps || pathMargin(prepared, scene.maxIterations, w).margin < eps) {
+      if (
+        clipMargin < eps ||
+        pathMargin(prepared, scene.maxIterations, w).margin < eps ||
+        colourMargin(scene, prepared, w) < eps
+      ) {
         excluded++;
         continue;
       }
-      const cpu = sampleColour(scene, prepared, w[0], w[1], pixelWorld, st);
+      const cpu = sampleColour(scene, ctx, w[0], w[1], pixelWorld, st);
       const o = 4 * (py * img.width + px);
       let worst = 0;
       for (let k = 0; k < 3; k++) worst = Math.max(worst, Math.abs(level(img.data[o + k]) - level(cpu[k])));

@@ -7,6 +7,7 @@ import { readFileSync } from 'node:fs';
 import type { Browser, Page } from 'playwright-core';
 import type { View } from '../../nodes/core/scene.ts';
 import type { UniformEntry } from '../../shader-gen/compile.ts';
+import { resolvePicture } from '../../shader-gen/picture.ts';
 import { launchChromium } from '../support/browser.ts';
 
 const HARNESS = readFileSync(new URL('./webgl-harness.js', import.meta.url), 'utf8');
@@ -26,6 +27,8 @@ export interface FrameOptions {
   /** Pixel offset of the canvas within the whole image (default 0, 0). */
   readonly offset?: readonly [number, number];
   readonly bgAlpha?: number;
+  /** The program's pictures (CompiledProgram.pictures), bound to its samplers. */
+  readonly pictures?: readonly string[];
 }
 
 export class GpuProbe {
@@ -72,7 +75,18 @@ export class GpuProbe {
     view: View,
     tile: FrameOptions = {},
   ): Promise<ProbeImage> {
+    for (const src of tile.pictures ?? []) {
+      const pic = resolvePicture(src, undefined);
+      const base64 = Buffer.from(pic.data.buffer, pic.data.byteOffset, pic.data.byteLength).toString('base64');
+      await this.page.evaluate(([s, w, h, b]) => window.kfHarness.picture(s, w, h, b), [
+        src,
+        pic.width,
+        pic.height,
+        base64,
+      ] as const);
+    }
     const frame = {
+      pictures: tile.pictures,
       view: [view.center[0], view.center[1], view.scale],
       jitter: [0.5, 0.5],
       resolution: tile.resolution,
@@ -106,8 +120,10 @@ interface Harness {
       resolution?: readonly number[];
       pixelOffset?: readonly number[];
       bgAlpha?: number;
+      pictures?: readonly string[];
     },
   ): { data: string; ms: number };
+  picture(src: string, width: number, height: number, base64: string): void;
   compileCount: number;
 }
 

@@ -106,6 +106,7 @@ describe('GPU = CPU for hand-made scenes (every element kind, every colouring)',
           await gpu.program(program.vertexSource, program.source),
           program.uniforms,
           scene.view,
+          { pictures: program.pictures },
         ),
       );
       row('hand-made scenes', name, {

@@ -9,6 +9,28 @@
     height: 0,
     compileCount: 0,
     programs: [],
+    /** Picture textures by src (src/viewport/picture-textures.ts's format: SRGB8_ALPHA8, LINEAR, REPEAT). */
+    pictures: {},
+
+    /** Uploads a picture (RGBA8 bytes as base64, row 0 = top) once per src. */
+    picture(src, width, height, base64) {
+      const gl = harness.gl;
+      if (harness.pictures[src]) return;
+      const bin = atob(base64);
+      const bytes = new Uint8Array(bin.length);
+      for (let i = 0; i < bin.length; i++) bytes[i] = bin.charCodeAt(i);
+      const t = gl.createTexture();
+      gl.activeTexture(gl.TEXTURE1);
+      gl.bindTexture(gl.TEXTURE_2D, t);
+      gl.pixelStorei(gl.UNPACK_ALIGNMENT, 1);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.SRGB8_ALPHA8, width, height, 0, gl.RGBA, gl.UNSIGNED_BYTE, bytes);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.REPEAT);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.REPEAT);
+      gl.activeTexture(gl.TEXTURE0);
+      harness.pictures[src] = t;
+    },
 
     /** Creates the context and an RGBA32F render target of width × height. */
     init(width, height) {
@@ -96,6 +118,14 @@
         { name: 'u_bgAlpha', type: 'float', value: [frame.bgAlpha ?? 1] },
         { name: 'iResolution', type: 'vec3', value: [harness.width, harness.height, 1] },
       ]);
+      // Picture N on texture unit N + 1 (unit 0 keeps the render target's texture).
+      (frame.pictures ?? []).forEach((src, i) => {
+        gl.activeTexture(gl.TEXTURE1 + i);
+        gl.bindTexture(gl.TEXTURE_2D, harness.pictures[src]);
+        const loc = gl.getUniformLocation(p, `u_image${i}`) ?? gl.getUniformLocation(p, `iChannel${i}`);
+        if (loc !== null) gl.uniform1i(loc, i + 1);
+      });
+      gl.activeTexture(gl.TEXTURE0);
       const t0 = performance.now();
       gl.drawArrays(gl.TRIANGLES, 0, 3);
       const pixels = new Float32Array(harness.width * harness.height * 4);

@@ -86,7 +86,16 @@ describe('shade (linear light)', () => {
     edgeWidth: 2,
     edgeColor: [1, 1, 1],
   };
-  const base = { escaped: true, depth: 0, clipped: false, edgePixels: Number.POSITIVE_INFINITY };
+  const base = {
+    escaped: true,
+    depth: 0,
+    clipped: false,
+    edgePixels: Number.POSITIVE_INFINITY,
+    x: 0,
+    y: 0,
+    limitPixels: Number.POSITIVE_INFINITY,
+    seed: -1,
+  };
 
   it('clip → background, not escaped → limit colour, else the depth colour', () => {
     expect(shade(tile, { ...base, clipped: true })).toEqual(toLinear([0.5, 0.5, 0.5]));

@@ -26,6 +26,14 @@ const CASES: readonly { file: string; source: () => string }[] = [
     source: () => compile(HAND_MADE_SCENES['strips-hsv-edges'], { variant: 'probe' }).source,
   },
   {
+    file: 'schottky-seeds-fill-edges.color.frag',
+    source: () => compile(HAND_MADE_SCENES['schottky-seeds-fill-edges']).source,
+  },
+  {
+    file: 'triangle-333-picture.color.frag',
+    source: () => compile(HAND_MADE_SCENES['triangle-333-picture']).source,
+  },
+  {
     file: 'triangle-333-parity-clip.shadertoy.glsl',
     source: () => shadertoySource(HAND_MADE_SCENES['triangle-333-parity-clip']),
   },

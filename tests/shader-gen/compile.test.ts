@@ -40,7 +40,15 @@ function nudged(scene: Scene, amount: number): Scene {
     ...scene,
     elements: nudge(scene.elements).map(order),
     // Edges on/off is structure: keep a zero width zero.
-    tile: { ...nudge(scene.tile), edgeWidth: scene.tile.edgeWidth === 0 ? 0 : scene.tile.edgeWidth + 0.5 },
+    tile: {
+      ...nudge(scene.tile),
+      edgeWidth: scene.tile.edgeWidth === 0 ? 0 : scene.tile.edgeWidth + 0.5,
+      // …and so is the limit-set glow on/off.
+      coloring:
+        scene.tile.coloring.mode === 'limit-set'
+          ? { mode: 'limit-set', glow: scene.tile.coloring.glow === 0 ? 0 : scene.tile.coloring.glow + 1 }
+          : nudge(scene.tile.coloring),
+    },
     clip: nudge(scene.clip),
     maxIterations: scene.maxIterations + 17,
   };
@@ -97,8 +105,11 @@ describe('uniforms', () => {
     it(`${name}: baked has no scene uniforms and carries the values as literals`, () => {
       const p = compile(scene, { baked: true });
       expect(p.uniforms).toEqual([]);
-      const declared = [...p.source.matchAll(/^uniform \w+ (\w+)/gm)].map((m) => m[1]);
+      const declared = [...p.source.matchAll(/^uniform (?!sampler2D)\w+ (\w+)/gm)].map((m) => m[1]);
       expect(declared).toEqual(FRAME_UNIFORMS.map((u) => u.name));
+      // Pictures stay samplers (a texture cannot be a literal): u_image0, u_image1, …
+      const samplers = [...p.source.matchAll(/^uniform sampler2D (\w+)/gm)].map((m) => m[1]);
+      expect(samplers).toEqual(p.pictures.map((_, i) => `u_image${i}`));
       expect(p.source).toContain(`iteration < ${scene.maxIterations}; ++iteration`);
     });
   }

@@ -21,7 +21,13 @@ bool inRegion(vec4 g, vec2 p) {
 void invertState(inout vec2 p, inout float s, vec2 c, float r) {
   float dx = p.x - c.x;
   float dy = p.y - c.y;
-  float k = (r * r) / (dx * dx + dy * dy);
+  float d2 = dx * dx + dy * dy;
+  if (d2 == 0.0) {
+    p = vec2(c.x + r * 1000000000.0, c.y);
+    s *= 1000000000000000000.0;
+    return;
+  }
+  float k = (r * r) / d2;
   p = vec2(c.x + dx * k, c.y + dy * k);
   s *= k;
 }
@@ -48,6 +54,13 @@ float inversionBoundaryDistance(vec2 p, vec4 d0) {
   return abs(length(p - d0.xy) - d0.z);
 }
 
+float farDistance(vec2 p, vec3 far) {
+  float dx = p.x - far.x;
+  float dy = p.y - far.y;
+  float big = sqrt(dx * dx + dy * dy);
+  return big > far.z ? ((big - far.z) * big) / far.z : 0.0;
+}
+
 float srgbToLinear(float c) {
   return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
 }
@@ -64,10 +77,14 @@ vec3 depthColour(int depth) {
   return cosinePalette(vec3(0.5, 0.5, 0.5), vec3(0.5, 0.5, 0.5), vec3(1.0, 1.0, 1.0), vec3(0.0, 0.33, 0.67), float(depth) * 0.07);
 }
 
-vec3 shade(bool clipped, bool escaped, int depth, float edgePixels) {
+vec3 finalColour(int depth, vec2 p) {
+  return toLinear(depthColour(depth));
+}
+
+vec3 shade(bool clipped, bool escaped, int depth, float edgePixels, vec2 p, float limitPixels, int seed) {
   if (clipped) return toLinear(vec3(0.06, 0.06, 0.08));
   if (!escaped) return toLinear(vec3(0.02, 0.02, 0.03));
-  vec3 base = toLinear(depthColour(depth));
+  vec3 base = finalColour(depth, p);
   float t = clamp(edgePixels - 1.5 / 2.0 + 0.5, 0.0, 1.0);
   vec3 edge = toLinear(vec3(1.0, 0.95, 0.8));
   return edge + (base - edge) * t;
@@ -110,7 +127,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
         continue;
       }
     }
-#line 114 0
+#line 131 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
@@ -118,7 +135,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   if (mobiusInside(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0))) return false;
 #line 1 2
   if (inversionInside(p, vec4(0.0, 1.6, 0.5, 0.0))) return false;
-#line 122 0
+#line 139 0
   return true;
 }
 
@@ -128,7 +145,7 @@ float sceneBoundaryDistance(vec2 p) {
   d = min(d, mobiusBoundaryDistance(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0)));
 #line 1 2
   d = min(d, inversionBoundaryDistance(p, vec4(0.0, 1.6, 0.5, 0.0)));
-#line 132 0
+#line 149 0
   return d;
 }
 
@@ -137,10 +154,15 @@ vec4 shadeSample(vec2 w, float pixelWorld, float bgAlpha) {
   vec2 p = w;
   float s = 1.0;
   int depth = 0;
+  int seed = -1;
   bool escaped = clipped ? false : runIis(p, s, depth);
   float edgePixels = 3.0e38;
-  if (escaped) edgePixels = sceneBoundaryDistance(p) / s / pixelWorld;
-  return vec4(shade(clipped, escaped, depth, edgePixels), clipped ? bgAlpha : 1.0);
+  float limitPixels = 3.0e38;
+  if (escaped) {
+    float d = max(sceneBoundaryDistance(p), farDistance(p, vec3(-0.6336391437308869, 0.536085626911315, 1.7383102833024935)));
+    edgePixels = d / s / pixelWorld;
+  }
+  return vec4(shade(clipped, escaped, depth, edgePixels, p, limitPixels, seed), clipped ? bgAlpha : 1.0);
 }
 
 void main() {

@@ -39,10 +39,14 @@ vec3 depthColour(int depth) {
   return depth % 2 == 0 ? u_even : u_odd;
 }
 
-vec3 shade(bool clipped, bool escaped, int depth, float edgePixels) {
+vec3 finalColour(int depth, vec2 p) {
+  return toLinear(depthColour(depth));
+}
+
+vec3 shade(bool clipped, bool escaped, int depth, float edgePixels, vec2 p, float limitPixels, int seed) {
   if (clipped) return toLinear(u_background);
   if (!escaped) return toLinear(u_limitColor);
-  vec3 base = toLinear(depthColour(depth));
+  vec3 base = finalColour(depth, p);
   return base;
 }
 
@@ -81,7 +85,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
         continue;
       }
     }
-#line 85 0
+#line 89 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
@@ -91,7 +95,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   if (reflectionInside(p, u_el[1])) return false;
 #line 1 3
   if (reflectionInside(p, u_el[2])) return false;
-#line 95 0
+#line 99 0
   return true;
 }
 
@@ -103,9 +107,11 @@ vec4 shadeSample(vec2 w, float pixelWorld, float bgAlpha) {
   vec2 p = w;
   float s = 1.0;
   int depth = 0;
+  int seed = -1;
   bool escaped = clipped ? false : runIis(p, s, depth);
   float edgePixels = 3.0e38;
-  return vec4(shade(clipped, escaped, depth, edgePixels), clipped ? bgAlpha : 1.0);
+  float limitPixels = 3.0e38;
+  return vec4(shade(clipped, escaped, depth, edgePixels, p, limitPixels, seed), clipped ? bgAlpha : 1.0);
 }
 
 void main() {

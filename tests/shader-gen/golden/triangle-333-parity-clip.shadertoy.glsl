@@ -21,10 +21,14 @@ vec3 depthColour(int depth) {
   return depth % 2 == 0 ? vec3(0.93, 0.91, 0.85) : vec3(0.13, 0.16, 0.24);
 }
 
-vec3 shade(bool clipped, bool escaped, int depth, float edgePixels) {
+vec3 finalColour(int depth, vec2 p) {
+  return toLinear(depthColour(depth));
+}
+
+vec3 shade(bool clipped, bool escaped, int depth, float edgePixels, vec2 p, float limitPixels, int seed) {
   if (clipped) return toLinear(vec3(0.06, 0.06, 0.08));
   if (!escaped) return toLinear(vec3(0.02, 0.02, 0.03));
-  vec3 base = toLinear(depthColour(depth));
+  vec3 base = finalColour(depth, p);
   return base;
 }
 
@@ -90,9 +94,11 @@ vec4 shadeSample(vec2 w, float pixelWorld, float bgAlpha) {
   vec2 p = w;
   float s = 1.0;
   int depth = 0;
+  int seed = -1;
   bool escaped = clipped ? false : runIis(p, s, depth);
   float edgePixels = 3.0e38;
-  return vec4(shade(clipped, escaped, depth, edgePixels), clipped ? bgAlpha : 1.0);
+  float limitPixels = 3.0e38;
+  return vec4(shade(clipped, escaped, depth, edgePixels, p, limitPixels, seed), clipped ? bgAlpha : 1.0);
 }
 
 void mainImage(out vec4 fragColor, in vec2 fragCoord) {

@@ -59,6 +59,11 @@ export const shadertoyWrapper = (mainImage: string): string =>
     'precision highp int;',
     'uniform vec3 iResolution;',
     'uniform float iTime;',
+    // Shadertoy's four input channels (the generated code reads pictures from them).
+    'uniform sampler2D iChannel0;',
+    'uniform sampler2D iChannel1;',
+    'uniform sampler2D iChannel2;',
+    'uniform sampler2D iChannel3;',
     'out vec4 shadertoyColor;',
     mainImage,
     'void main() { mainImage(shadertoyColor, gl_FragCoord.xy); }',

@@ -3,8 +3,8 @@
  * the examples do not use). Built directly as Scene values, so they stay the same whatever the
  * node types do; every element kind and every colouring mode appears.
  */
-import type { Coloring, Scene, SceneElement, TileSpec } from '../../../nodes/core/scene.ts';
-import type { Circle, Vec2 } from '../../../nodes/core/values.ts';
+import type { Coloring, Scene, SceneElement, SeedSpec, TileSpec } from '../../../nodes/core/scene.ts';
+import { BUILTIN_PICTURE, type Circle, type Vec2 } from '../../../nodes/core/values.ts';
 import { twoCircleRegions } from '../../../nodes/geometry/mobius.ts';
 
 export const COLORINGS: Readonly<Record<Coloring['mode'], Coloring>> = {
@@ -18,6 +18,8 @@ export const COLORINGS: Readonly<Record<Coloring['mode'], Coloring>> = {
     step: 0.07,
   },
   parity: { mode: 'parity', even: [0.93, 0.91, 0.85], odd: [0.13, 0.16, 0.24] },
+  image: { mode: 'image', image: BUILTIN_PICTURE, center: [0.45, 0.3], size: 0.9, rotation: 0.3 },
+  'limit-set': { mode: 'limit-set', glow: 4 },
 };
 
 export interface SceneOptions {
@@ -27,6 +29,8 @@ export interface SceneOptions {
   readonly maxIterations?: number;
   readonly center?: Vec2;
   readonly scale?: number;
+  /** Tile options beyond the colouring (fill, seeds, seedsOnly, inner). */
+  readonly tile?: Partial<TileSpec>;
 }
 
 export function makeScene(elements: readonly SceneElement[], o: SceneOptions = {}): Scene {
@@ -38,6 +42,7 @@ export function makeScene(elements: readonly SceneElement[], o: SceneOptions = {
     background: [0.06, 0.06, 0.08],
     edgeWidth: o.edgeWidth ?? 0,
     edgeColor: [1, 0.95, 0.8],
+    ...o.tile,
   };
   return {
     elements,
@@ -145,6 +150,18 @@ export const EVERY_KIND: SceneElement[] = [
   ...LOXODROMIC,
 ];
 
+/** A disk seed and a picture seed outside the Schottky circles (both inside the tile). */
+export const SEED_DISK: SeedSpec = { kind: 'disk', nodeId: 'sd', c: [1.5, -0.8], r: 0.3, color: [1, 0.8, 0.2] };
+export const SEED_PICTURE: SeedSpec = {
+  kind: 'image',
+  nodeId: 'sp',
+  center: [-1.4, 1.3],
+  width: 0.6,
+  height: 0.45,
+  rotation: 0.4,
+  image: BUILTIN_PICTURE,
+};
+
 /** Named hand-made scenes covering every element kind, colouring mode, edges and clip. */
 export const HAND_MADE_SCENES: Readonly<Record<string, Scene>> = {
   'triangle-333-parity-clip': makeScene(TRIANGLE_333, {
@@ -165,4 +182,35 @@ export const HAND_MADE_SCENES: Readonly<Record<string, Scene>> = {
   'loxodromic-parity-edges': makeScene(LOXODROMIC, { coloring: COLORINGS.parity, edgeWidth: 1 }),
   'every-kind-cosine-edges-clip': makeScene(EVERY_KIND, { edgeWidth: 1, clip: { c: [0, 0], r: 3 } }),
   empty: makeScene([]),
+  // Tile options (colour.ts shade): fill, orbit seeds, seeds only, picture, limit set, inner area.
+  'schottky-seeds-fill-edges': makeScene(SCHOTTKY, {
+    edgeWidth: 1,
+    maxIterations: 60,
+    scale: 5,
+    tile: { fill: [0, 0, 0], seeds: [SEED_DISK, SEED_PICTURE] },
+  }),
+  'schottky-seeds-only': makeScene(SCHOTTKY, {
+    maxIterations: 60,
+    scale: 5,
+    tile: { seeds: [SEED_DISK], seedsOnly: true },
+  }),
+  'triangle-333-picture': makeScene(TRIANGLE_333, { coloring: COLORINGS.image, scale: 3, center: [0.5, 0.3] }),
+  'schottky-picture-fill': makeScene(SCHOTTKY, {
+    coloring: { ...COLORINGS.image, center: [0, 0], size: 3 } as Coloring,
+    maxIterations: 60,
+    scale: 5,
+    tile: { fill: [0.1, 0.1, 0.1] },
+  }),
+  'schottky-limit-set-glow': makeScene(SCHOTTKY, { coloring: COLORINGS['limit-set'], maxIterations: 40, scale: 5 }),
+  'schottky-limit-set': makeScene(SCHOTTKY, {
+    coloring: { mode: 'limit-set', glow: 0 },
+    maxIterations: 40,
+    scale: 5,
+  }),
+  'schottky-inner-parity': makeScene(SCHOTTKY, {
+    coloring: COLORINGS.parity,
+    maxIterations: 60,
+    scale: 5,
+    tile: { inner: { c: [0.3, -0.2], r: 1.2 } },
+  }),
 };

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import type { TileSpec } from '../../../../nodes/core/scene.ts';
-import { depthColour, hsvToRgb } from '../../../../shader-gen/colour.ts';
+import { type DepthColoring, depthColour, hsvToRgb } from '../../../../shader-gen/colour.ts';
 import { FLOWER_RENDER, importFlower, isFlowerDocument } from '../../../../src/io/flower/import.ts';
 import { fedge, fnode, fpoint, graph, lineMirror } from './support/flower-fixture.ts';
 import { imported, messages } from './support/imported.ts';
@@ -24,7 +24,7 @@ describe('Flower import: colours, notes and view', () => {
     expect(tile.coloring.mode).toBe('depth-hsv');
     for (let n = 1; n <= FLOWER_RENDER.maxIterations; n++) {
       const flower = hsvToRgb(0.01 + 0.05 * (n - 1), 1, 1);
-      const ours = depthColour(tile.coloring, n);
+      const ours = depthColour(tile.coloring as DepthColoring, n);
       for (let k = 0; k < 3; k++) expect(ours[k]).toBeCloseTo(flower[k], 9);
     }
     expect(scene.maxIterations).toBe(50);
@@ -47,7 +47,7 @@ describe('Flower import: colours, notes and view', () => {
     expect(notes).toEqual([]);
     expect(scene.tile.coloring.mode).toBe('cosine');
     for (let n = 1; n <= 20; n++) {
-      const ours = depthColour(scene.tile.coloring, n);
+      const ours = depthColour(scene.tile.coloring as DepthColoring, n);
       for (let k = 0; k < 3; k++) {
         const flower = a[k] + b[k] * Math.cos(2 * Math.PI * (c[k] * 0.05 * (n - 1) + d[k]));
         expect(Math.abs(ours[k] - Math.min(1, Math.max(0, flower)))).toBeLessThan(0.02); // colours are stored as 8-bit

@@ -93,7 +93,8 @@ export interface ShadeInput {
 }
 
 /**
- * Linear colour of one sample, decided in this order: clipped → background; a seed → its colour;
+ * Linear colour of one sample, decided in this order: clipped → background; a seed → its colour
+ * (times max(0, 1 − seedFade·depth));
  * `seedsOnly` → background; limit-set mode → limit colour where not escaped, else the
  * background blended towards it by max(clamp(1 − L, 0, 1), exp(−L/glow)) (L = limitPixels);
  * not escaped → limit colour; outside the `inner` circle → background; depth 0 with a `fill` →
@@ -101,7 +102,12 @@ export interface ShadeInput {
  */
 export function shade(tile: TileSpec, r: ShadeInput, pictures?: PictureMap): Rgb {
   if (r.clipped) return toLinear(tile.background);
-  if (r.seed >= 0 && tile.seeds) return seedColour(tile.seeds[r.seed], r.x, r.y, pictures);
+  if (r.seed >= 0 && tile.seeds) {
+    const c = seedColour(tile.seeds[r.seed], r.x, r.y, pictures);
+    if (!tile.seedFade) return c;
+    const k = Math.max(0, 1 - tile.seedFade * r.depth);
+    return [c[0] * k, c[1] * k, c[2] * k];
+  }
   if (tile.seedsOnly) return toLinear(tile.background);
   const coloring = tile.coloring;
   if (coloring.mode === 'limit-set') {

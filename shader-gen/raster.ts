@@ -73,7 +73,13 @@ export function sampleColour(
   st.depth = 0;
   const seeds = tile.seeds ?? [];
   let seed = -1;
-  const atSeed = seeds.length > 0 ? (at: IisState) => (seed = seedAt(seeds, at.x, at.y)) >= 0 : undefined;
+  const atSeed =
+    seeds.length > 0
+      ? (at: IisState) => {
+          seed = seedAt(seeds, at.x, at.y);
+          return seed >= 0;
+        }
+      : undefined;
   const escaped = clipped ? false : runIis(prepared, scene.maxIterations, st, atSeed);
   const limitSet = tile.coloring.mode === 'limit-set';
   let edgePixels = Number.POSITIVE_INFINITY;

@@ -50,10 +50,22 @@ const pictureShape = (key: string, value: unknown) =>
 /** Every value a baked program writes as a literal, in a fixed order (elements without node ids). */
 function bakedValues(scene: Scene): string {
   const elements = scene.elements.map(({ nodeId: _, ...rest }) => rest);
-  const { coloring, limitColor, background, edgeWidth, edgeColor, fill, inner } = scene.tile;
+  const { coloring, limitColor, background, edgeWidth, edgeColor, fill, inner, seedFade } = scene.tile;
   const seeds = (scene.tile.seeds ?? []).map(({ nodeId: _, ...rest }) => rest);
   return JSON.stringify(
-    [elements, coloring, limitColor, background, edgeWidth, edgeColor, scene.clip, fill, inner, seeds],
+    [
+      elements,
+      coloring,
+      limitColor,
+      background,
+      edgeWidth,
+      edgeColor,
+      scene.clip,
+      fill,
+      inner,
+      seeds,
+      seedFade,
+    ],
     pictureShape,
   );
 }
@@ -68,13 +80,16 @@ function tileOptions(scene: Scene): string[] {
   const parts: string[] = [];
   if (tile.fill) parts.push('fill:on');
   const seeds = tile.seeds ?? [];
-  if (seeds.length > 0) parts.push(`seeds:${seeds.map((s) => s.kind).join(',')}${tile.seedsOnly ? ':only' : ''}`);
+  if (seeds.length > 0)
+    parts.push(`seeds:${seeds.map((s) => s.kind).join(',')}${tile.seedsOnly ? ':only' : ''}`);
+  if (seeds.length > 0 && tile.seedFade) parts.push('seedFade:on');
   if (tile.inner) parts.push('inner:on');
   if (tile.coloring.mode === 'limit-set') {
     if (tile.coloring.glow > 0) parts.push('glow:on');
     if (limitReach(scene.elements) !== null) parts.push('reach:on');
   }
-  if ((tile.edgeWidth > 0 || tile.coloring.mode === 'limit-set') && farDisk(scene.elements)) parts.push('far:on');
+  if ((tile.edgeWidth > 0 || tile.coloring.mode === 'limit-set') && farDisk(scene.elements))
+    parts.push('far:on');
   const srcs: string[] = [];
   if (tile.coloring.mode === 'image') srcs.push(tile.coloring.image.src);
   for (const s of seeds) if (s.kind === 'image') srcs.push(s.image.src);

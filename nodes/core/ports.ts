@@ -2,7 +2,17 @@
  * Port (socket) types: the single table that the UI (colours, connection rules), the validator
  * and the evaluator read.
  */
-export const PORT_TYPES = ['number', 'point', 'line', 'circle', 'element', 'tile', 'color', 'image', 'seed'] as const;
+export const PORT_TYPES = [
+  'number',
+  'point',
+  'line',
+  'circle',
+  'element',
+  'tile',
+  'color',
+  'image',
+  'seed',
+] as const;
 export type PortType = (typeof PORT_TYPES)[number];
 
 interface PortTypeInfo {

@@ -216,6 +216,11 @@ export interface TileSpec {
   /** Points that hit no seed get the background: only the seeds' orbits show (Fig. 2). */
   readonly seedsOnly?: boolean;
   /**
+   * Depth shading of the seeds' images: a seed met after `depth` steps paints its colour times
+   * max(0, 1 − seedFade·depth) (absent/0: no shading).
+   */
+  readonly seedFade?: number;
+  /**
    * Internal area (the paper's Fig. 22): escaped points keep their colour only when their final
    * point lies inside this circle; the others get the background (absent/null: no test).
    */

@@ -17,12 +17,23 @@ export function pictureOf(src: string, width: number, height: number) {
   if (src.length > LIMITS.maxImageDataUrlChars)
     return {
       image: BUILTIN_PICTURE,
-      problem: diag('pictureTooBig', { path: 'src' }, `${MB(src.length)} of data`, MB(LIMITS.maxImageDataUrlChars)),
+      problem: diag(
+        'pictureTooBig',
+        { path: 'src' },
+        `${MB(src.length)} of data`,
+        MB(LIMITS.maxImageDataUrlChars),
+      ),
     };
   if (!/^data:image\/[a-z0-9.+-]+(;[^,]*)?,/i.test(src))
-    return { image: BUILTIN_PICTURE, problem: diag('badPicture', {}, 'the source is not a data:image/… URL') };
+    return {
+      image: BUILTIN_PICTURE,
+      problem: diag('badPicture', {}, 'the source is not a data:image/… URL'),
+    };
   if (!(Number.isInteger(width) && Number.isInteger(height) && width > 0 && height > 0))
-    return { image: BUILTIN_PICTURE, problem: diag('badPicture', {}, `its size ${width} × ${height} is not known`) };
+    return {
+      image: BUILTIN_PICTURE,
+      problem: diag('badPicture', {}, `its size ${width} × ${height} is not known`),
+    };
   const side = LIMITS.maxPictureSide;
   if (width > side || height > side)
     return {
@@ -50,11 +61,29 @@ export const imageNode = defineNode({
       label: 'picture',
       doc: `a data:image URL (at most ${MB(LIMITS.maxImageDataUrlChars)}); empty = the built-in checker with an arrow`,
     },
-    width: { kind: 'number', default: 0, min: 0, max: LIMITS.maxPictureSide, integer: true, label: 'width px' },
-    height: { kind: 'number', default: 0, min: 0, max: LIMITS.maxPictureSide, integer: true, label: 'height px' },
+    width: {
+      kind: 'number',
+      default: 0,
+      min: 0,
+      max: LIMITS.maxPictureSide,
+      integer: true,
+      label: 'width px',
+    },
+    height: {
+      kind: 'number',
+      default: 0,
+      min: 0,
+      max: LIMITS.maxPictureSide,
+      integer: true,
+      label: 'height px',
+    },
   },
   evaluate: ({ params }) => {
-    const { image, problem } = pictureOf(params.src as string, params.width as number, params.height as number);
+    const { image, problem } = pictureOf(
+      params.src as string,
+      params.width as number,
+      params.height as number,
+    );
     const readout = image === BUILTIN_PICTURE ? 'built-in checker' : `${image.width} × ${image.height}`;
     return { outputs: { image }, diagnostics: problem ? [problem] : [], readout };
   },

@@ -95,6 +95,15 @@ export const tileNode = defineNode({
       label: 'seeds only',
       doc: 'points that hit no seed get the background: only the orbits show',
     },
+    seedFade: {
+      kind: 'number',
+      default: 0,
+      min: 0,
+      max: 1,
+      step: 0.01,
+      label: 'seed fade',
+      doc: 'each step darkens the images of the seeds by this much (0 = all as bright as the seed)',
+    },
     edgeWidth: {
       kind: 'number',
       default: d.edgeWidth,
@@ -110,7 +119,11 @@ export const tileNode = defineNode({
     const mode = params.mode as Coloring['mode'];
     const size = inputs.imageSize as number;
     if (mode === 'image' && !(size > 0))
-      return { diagnostics: [diag('degenerate', { port: 'imageSize' }, `picture height must be positive, got ${fmt(size)}`)] };
+      return {
+        diagnostics: [
+          diag('degenerate', { port: 'imageSize' }, `picture height must be positive, got ${fmt(size)}`),
+        ],
+      };
     const coloring: Coloring =
       mode === 'cosine'
         ? { mode, a: c('a'), b: c('b'), c: c('c'), d: c('d'), step: params.step as number }
@@ -149,6 +162,7 @@ export const tileNode = defineNode({
       fill: params.fillTile ? c('fill') : null,
       seeds,
       seedsOnly: seeds.length > 0 && (params.seedsOnly as boolean),
+      seedFade: params.seedFade as number,
       inner: (inputs.inner as Circle | undefined) ?? null,
     };
     const extras = [
@@ -166,7 +180,10 @@ export const tileNode = defineNode({
     const c = inputs.imageCenter as Vec2;
     return [
       { handle: 'picture-center', at: c },
-      { handle: 'picture-top', at: topOf(c, inputs.imageSize as number, rad(inputs.imageRotation as number)) },
+      {
+        handle: 'picture-top',
+        at: topOf(c, inputs.imageSize as number, rad(inputs.imageRotation as number)),
+      },
     ];
   },
   /** The centre moves the picture; the top handle scales it (height = 2·distance) and turns it. */

@@ -101,7 +101,10 @@ export function depthColourGlsl(coloring: DepthColoring, v: SceneValues): GlslFu
  * finalColour): the picture's texel at p in image mode (u_picture = (c.x, c.y, w, h),
  * u_pictureRot = (cos θ, sin θ)), else the depth colour.
  */
-export function finalColourGlsl(coloring: Exclude<Coloring, { mode: 'limit-set' }>, v: SceneValues): GlslFunction {
+export function finalColourGlsl(
+  coloring: Exclude<Coloring, { mode: 'limit-set' }>,
+  v: SceneValues,
+): GlslFunction {
   const head = 'vec3 finalColour(int depth, vec2 p) {';
   if (coloring.mode !== 'image') {
     return glslFunction('finalColour', `${head}\n  return toLinear(depthColour(depth));\n}`, [
@@ -136,7 +139,10 @@ export function shadeGlsl(tile: TileSpec, v: SceneValues, seedColour: GlslFuncti
     `  if (clipped) return toLinear(${background});`,
   ];
   if (seedColour) {
-    lines.push('  if (seed >= 0) return seedColour(seed, p);');
+    if (tile.seedFade) {
+      const fade = v.float('u_seedFade', tile.seedFade);
+      lines.push(`  if (seed >= 0) return seedColour(seed, p) * max(0.0, 1.0 - ${fade} * float(depth));`);
+    } else lines.push('  if (seed >= 0) return seedColour(seed, p);');
     deps.push(seedColour);
   }
   if (tile.seedsOnly) lines.push(`  return toLinear(${background});`, '}');

@@ -62,7 +62,10 @@ export function emitRunIis(
 ): void {
   // With seeds (interpret.ts runIis's `visit`): at the start of every pass, a point in a seed stops
   // the run, not escaped, with `seed` its index.
-  const seedTest = (indent: string) => [`${indent}seed = seedAt(p);`, `${indent}if (seed >= 0) return false;`];
+  const seedTest = (indent: string) => [
+    `${indent}seed = seedAt(p);`,
+    `${indent}if (seed >= 0) return false;`,
+  ];
   out.push(
     withSeeds
       ? 'bool runIis(inout vec2 p, inout float s, inout int depth, inout int seed) {'

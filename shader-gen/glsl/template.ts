@@ -14,9 +14,9 @@ import {
   shadeSampleGlsl,
 } from './iis.glsl.ts';
 import { floatLiteral, intLiteral } from './literal.ts';
+import { seedsGlsl } from './seeds.glsl.ts';
 import { collectFunctions, type GlslFunction } from './snippet.ts';
 import { SourceBuilder } from './source.ts';
-import { seedsGlsl } from './seeds.glsl.ts';
 import { declaration, PICTURE_SAMPLER, SceneValues, type UniformEntry } from './values.ts';
 import { pixelToWorldGlsl, sampleOffsetGlsl } from './view.glsl.ts';
 
@@ -83,9 +83,12 @@ function sceneParts(scene: Scene, v: SceneValues, withColour: boolean) {
   return { emitBody, lineMap, pictures: v.pictures() };
 }
 
-/** `uniform sampler2D u_imageN;` for each picture (texture unit N, see SceneValues.picture). */
+/**
+ * `uniform sampler2D u_imageN;` for each picture (texture unit N, see SceneValues.picture). The
+ * src stays out of the text: another picture is a new texture, not a new program.
+ */
 const samplerDeclarations = (pictures: readonly string[]) =>
-  pictures.map((src, i) => `uniform sampler2D ${PICTURE_SAMPLER}${i}; // ${describePicture(src)}`);
+  pictures.map((_, i) => `uniform sampler2D ${PICTURE_SAMPLER}${i};`);
 
 /** A short, comment-safe name of a picture source (data: URLs are long). */
 function describePicture(src: string): string {
@@ -149,9 +152,9 @@ export function shadertoyShader(scene: Scene): string {
     '',
   );
   // Shadertoy has no sampler uniforms of its own: picture N is read from iChannelN.
-  pictures.forEach((src, i) =>
-    out.push(`#define ${PICTURE_SAMPLER}${i} iChannel${i} // load ${describePicture(src)} there`),
-  );
+  pictures.forEach((src, i) => {
+    out.push(`#define ${PICTURE_SAMPLER}${i} iChannel${i} // load ${describePicture(src)} there`);
+  });
   if (pictures.length > 0) out.push('');
   emitBody(out, [pixelToWorldGlsl, sampleOffsetGlsl, toSrgbGlsl]);
   out.push(

@@ -42,6 +42,7 @@ export function App({ initialMessages }: Props) {
   const [renderInfo, setRenderInfo] = useState<RenderInfo | null>(null);
   const [messages, setMessages] = useState<readonly Message[]>(initialMessages);
   const [help, setHelp] = useState(false);
+  const [frameKey, setFrameKey] = useState(0);
   const viewport = useRef<Viewport | null>(null);
   const fileInput = useRef<HTMLInputElement>(null);
   useAnimationClock(store, playing);
@@ -53,6 +54,7 @@ export function App({ initialMessages }: Props) {
       store.dispatch({ type: 'load-document', doc: next }, label);
       store.setSelection([]);
       setRenderDiagnostics([]);
+      setFrameKey((k) => k + 1);
     },
     [store],
   );
@@ -162,6 +164,7 @@ export function App({ initialMessages }: Props) {
               evaluation={evaluation}
               extraDiagnostics={renderDiagnostics}
               hoveredNodeId={hovered}
+              frameKey={frameKey}
               onHoverNode={setHovered}
             />
           </ReactFlowProvider>

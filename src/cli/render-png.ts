@@ -6,6 +6,7 @@ import type { Scene } from '../../nodes/core/scene.ts';
 import { rasterize } from '../../shader-gen/raster.ts';
 import { encodePng } from '../io/png.ts';
 import { PNG_GRAPH_KEY } from './load-graph.ts';
+import { scenePictures } from './scene-pictures.ts';
 
 export interface PngRequest {
   readonly width: number;
@@ -19,6 +20,7 @@ export interface PngRequest {
 export function renderScenePng(scene: Scene, graphText: string, request: PngRequest): Uint8Array {
   const onProgress = request.onProgress;
   const image = rasterize(scene, {
+    pictures: scenePictures(scene),
     width: request.width,
     height: request.height,
     samples: request.samples,

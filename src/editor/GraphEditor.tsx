@@ -31,6 +31,7 @@ import { GraphPanels } from './GraphPanels.tsx';
 import { NodeView } from './NodeView.tsx';
 import { Palette } from './Palette.tsx';
 import { addNodeChange, type PaletteState } from './palette-actions.ts';
+import { useFrameGraph } from './use-frame-graph.ts';
 import { useGraphKeys } from './use-graph-keys.ts';
 import { useRememberedFlag } from './use-remembered-flag.ts';
 
@@ -41,10 +42,12 @@ interface Props {
   /** Diagnostics from the renderer (e.g. a shader error), shown on their nodes too. */
   readonly extraDiagnostics: readonly Diagnostic[];
   readonly hoveredNodeId: string | null;
+  /** Changes when a document is loaded: the graph is framed again. */
+  readonly frameKey: number;
   onHoverNode(id: string | null): void;
 }
 
-export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHoverNode }: Props) {
+export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, frameKey, onHoverNode }: Props) {
   const store = useStore();
   const doc = useEditorState((s) => s.doc);
   const selection = useEditorState((s) => s.selection);
@@ -200,6 +203,8 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
     [palette, store],
   );
 
+  useFrameGraph(frameKey, doc, nodes, wrapper);
+
   const toggleInspector = useCallback(
     () => setInspectorOpen(!inspectorOpen),
     [inspectorOpen, setInspectorOpen],
@@ -248,8 +253,6 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, onHov
           multiSelectionKeyCode={['Meta', 'Control']}
           zoomOnDoubleClick={false}
           colorMode="dark"
-          fitView
-          fitViewOptions={{ padding: 0.2, maxZoom: 1 }}
           minZoom={0.15}
           maxZoom={2.5}
           attributionPosition="top-left"

@@ -10,7 +10,7 @@ import { registry } from '../../nodes/types/index.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
 import type { KfNode } from './flow-model.ts';
 import { Inspector } from './Inspector.tsx';
-import { sizer, tidyPositions } from './layout.ts';
+import { FIT_VIEW, sizer, tidyPositions } from './layout.ts';
 
 interface Props {
   readonly nodes: readonly KfNode[];
@@ -36,7 +36,7 @@ export function GraphPanels({ nodes, evaluation, diagnostics, inspectorOpen, tog
       return m?.width && m.height ? { width: m.width, height: m.height } : estimate(n);
     };
     store.dispatch({ type: 'move-nodes', moves: tidyPositions(current, size) }, 'tidy layout');
-    requestAnimationFrame(() => void flow.fitView({ padding: 0.2, maxZoom: 1, duration: 200 }));
+    requestAnimationFrame(() => void flow.fitView({ ...FIT_VIEW, duration: 200 }));
   };
 
   const inspected = selection.size === 1 ? doc.nodes.find((n) => selection.has(n.id)) : undefined;

@@ -12,6 +12,9 @@ export interface Size {
   readonly height: number;
 }
 
+/** How the graph is framed: never zoomed in past 1, nor out below where node text stays readable. */
+export const FIT_VIEW = { padding: 0.08, maxZoom: 1, minZoom: 0.72 } as const;
+
 /** Node width and row heights of the node component (src/styles/node.css). */
 export const NODE_WIDTH = 236;
 const HEADER = 31;

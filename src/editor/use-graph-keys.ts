@@ -6,7 +6,7 @@ import type { Edge, ReactFlowInstance } from '@xyflow/react';
 import { type RefObject, useEffect } from 'react';
 import { type ClipboardData, copyNodes, preparePaste } from '../state/clipboard.ts';
 import type { EditorStore } from '../state/store.ts';
-import { readClipboard, writeClipboard } from './clipboard-io.ts';
+import { lastCopied, putOnEvent, readClipboard, readEvent, writeClipboard } from './clipboard-io.ts';
 import type { KfNode } from './flow-model.ts';
 import { isTyping } from './typing.ts';
 
@@ -31,10 +31,19 @@ export function pasteNodes(store: EditorStore, data: ClipboardData, where?: Poin
   store.setSelection(nodes.map((n) => n.id));
 }
 
+/** How long Ctrl V waits for the browser's paste event before reading the clipboard itself. */
+const PASTE_EVENT_WAIT_MS = 120;
+
+/** Text selected on the page (then Ctrl C copies that text, not nodes). */
+const hasTextSelection = () => (window.getSelection()?.toString() ?? '') !== '';
+
 export function useGraphKeys(o: Options): void {
   const { store, flow, pointer, wrapper, paletteOpen, openPalette, toggleInspector } = o;
   useEffect(() => {
     const selected = () => copyNodes(store.getState().doc, store.getState().selection);
+    /** Graph position under the pointer (paste target), or undefined to paste beside the originals. */
+    const here = () => (pointer.current ? flow.screenToFlowPosition(pointer.current) : undefined);
+    let pasteFallback: ReturnType<typeof setTimeout> | undefined;
     const onKey = (e: KeyboardEvent) => {
       if (isTyping(e.target) || paletteOpen) return;
       const mod = e.ctrlKey || e.metaKey;
@@ -42,14 +51,21 @@ export function useGraphKeys(o: Options): void {
       if ((key === ' ' && !mod) || (mod && key === 'k')) {
         const rect = wrapper.current!.getBoundingClientRect();
         openPalette(pointer.current ?? { x: rect.left + rect.width / 2, y: rect.top + rect.height / 3 });
-      } else if (mod && (key === 'c' || key === 'x')) {
+      } else if (mod && (key === 'c' || key === 'x') && !hasTextSelection()) {
+        // No preventDefault: the browser's copy/cut event follows and carries the JSON too.
         const data = selected();
-        if (!data) return; // nothing selected: leave the browser's own copy alone
+        if (!data) return;
         void writeClipboard(data);
         if (key === 'x') store.dispatch({ type: 'remove', nodeIds: data.nodes.map((n) => n.id) }, 'cut');
+        return;
       } else if (mod && key === 'v') {
-        const at = pointer.current ? flow.screenToFlowPosition(pointer.current) : undefined;
-        void readClipboard().then((data) => data && pasteNodes(store, data, at));
+        // The paste event normally follows; if the browser sends none, read the clipboard ourselves.
+        clearTimeout(pasteFallback);
+        pasteFallback = setTimeout(() => {
+          const at = here();
+          void readClipboard().then((data) => data && pasteNodes(store, data, at));
+        }, PASTE_EVENT_WAIT_MS);
+        return;
       } else if (mod && key === 'd') {
         const data = selected();
         if (data) pasteNodes(store, data);
@@ -60,7 +76,30 @@ export function useGraphKeys(o: Options): void {
       } else return;
       e.preventDefault();
     };
+    const onCopy = (e: ClipboardEvent) => {
+      if (isTyping(e.target) || hasTextSelection()) return;
+      // On cut the nodes are already gone (keydown removed them): put what keydown copied.
+      const data = e.type === 'cut' ? lastCopied() : selected();
+      if (data && putOnEvent(e, data)) e.preventDefault();
+    };
+    const onPaste = (e: ClipboardEvent) => {
+      if (isTyping(e.target) || paletteOpen) return;
+      clearTimeout(pasteFallback);
+      const data = readEvent(e);
+      if (!data) return;
+      e.preventDefault();
+      pasteNodes(store, data, here());
+    };
     window.addEventListener('keydown', onKey);
-    return () => window.removeEventListener('keydown', onKey);
+    document.addEventListener('copy', onCopy);
+    document.addEventListener('cut', onCopy);
+    document.addEventListener('paste', onPaste);
+    return () => {
+      clearTimeout(pasteFallback);
+      window.removeEventListener('keydown', onKey);
+      document.removeEventListener('copy', onCopy);
+      document.removeEventListener('cut', onCopy);
+      document.removeEventListener('paste', onPaste);
+    };
   }, [store, flow, pointer, wrapper, paletteOpen, openPalette, toggleInspector]);
 }

@@ -7,8 +7,8 @@
  * (`onReady` then restarts the picture).
  */
 import { BUILTIN_PICTURE } from '../../nodes/core/values.ts';
-import { builtinPicture } from '../../shader-gen/picture.ts';
 import { PICTURE_SAMPLER } from '../../shader-gen/glsl/values.ts';
+import { builtinPicture } from '../../shader-gen/picture.ts';
 import type { GpuProgram } from './uniforms.ts';
 
 type Entry =
@@ -68,7 +68,8 @@ export class PictureTextures {
 
   dispose(): void {
     if (this.gl.isContextLost()) return;
-    for (const entry of this.entries.values()) if (entry.state === 'ready') this.gl.deleteTexture(entry.texture);
+    for (const entry of this.entries.values())
+      if (entry.state === 'ready') this.gl.deleteTexture(entry.texture);
     if (this.placeholder) this.gl.deleteTexture(this.placeholder);
     this.entries.clear();
   }
@@ -88,7 +89,10 @@ export class PictureTextures {
     } else {
       const promise = decode(src).then(
         (bitmap) => {
-          this.entries.set(src, { state: 'ready', texture: this.upload(bitmap.width, bitmap.height, bitmap) });
+          this.entries.set(src, {
+            state: 'ready',
+            texture: this.upload(bitmap.width, bitmap.height, bitmap),
+          });
           bitmap.close();
           this.onReady();
         },

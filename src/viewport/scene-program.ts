@@ -89,7 +89,12 @@ export class SceneProgramBuilder {
     this.bake = null;
     const built = renderer.programs.obtain(compiled, UNIFORM);
     if (built.ok) {
-      this.program = { gp: built.value, uniforms: compiled.uniforms, baked: false, pictures: compiled.pictures };
+      this.program = {
+        gp: built.value,
+        uniforms: compiled.uniforms,
+        baked: false,
+        pictures: compiled.pictures,
+      };
       this.report(compiled.diagnostics);
     } else {
       this.program = null;

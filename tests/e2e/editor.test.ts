@@ -198,6 +198,24 @@ describe('editor', () => {
     expect(await edgeCount(page)).toBe(edges);
   });
 
+  // (After the reload test: the other tab autosaves too, and the last tab to save wins.)
+  it('pastes nodes copied in another tab (through the system clipboard)', async () => {
+    await nodeEl(page, 'k').locator('.kf-node__header').click();
+    await page.keyboard.press('Control+c');
+    const other = await context.newPage();
+    try {
+      await other.goto(page.url());
+      await expect.poll(() => nodeCount(other)).toBeGreaterThan(0);
+      const before = await nodeCount(other);
+      const g = await graphBox(other);
+      await other.mouse.move(g.x + 400, g.y + 60);
+      await other.keyboard.press('Control+v');
+      await expect.poll(() => nodeCount(other)).toBe(before + 1);
+    } finally {
+      await other.close();
+    }
+  });
+
   it('builds the *333 kaleidoscope from scratch, edits a point, undoes it and saves', async () => {
     await page.getByRole('button', { name: 'New' }).click();
     await expect.poll(() => nodeCount(page)).toBe(0);

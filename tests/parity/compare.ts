@@ -16,10 +16,10 @@ import type { Scene, SeedSpec } from '../../nodes/core/scene.ts';
 import { linearToSrgb } from '../../shader-gen/colour.ts';
 import type { IisState } from '../../shader-gen/elements/element-kind.ts';
 import { type PreparedElements, prepare, runIis } from '../../shader-gen/interpret.ts';
-import { placeUv } from '../../shader-gen/placement.ts';
-import { seedAt } from '../../shader-gen/seeds.ts';
 import { type MarginResult, pathMargin } from '../../shader-gen/path-margin.ts';
+import { placeUv } from '../../shader-gen/placement.ts';
 import { sampleColour, sampleContext } from '../../shader-gen/raster.ts';
+import { seedAt } from '../../shader-gen/seeds.ts';
 import { pixelToWorld } from '../../shader-gen/view.ts';
 import type { ProbeImage } from './gpu-probe.ts';
 
@@ -155,7 +155,16 @@ const level = (linear: number) => Math.round(linearToSrgb(Math.min(1, Math.max(0
 /** Distance from (x, y) to the edge of a seed (disk rim or picture rectangle), in world units. */
 function seedEdgeDistance(seed: SeedSpec, x: number, y: number): number {
   if (seed.kind === 'disk') return Math.abs(Math.hypot(x - seed.c[0], y - seed.c[1]) - seed.r);
-  const [u, v] = placeUv(seed.center[0], seed.center[1], 1, 1, Math.cos(seed.rotation), Math.sin(seed.rotation), x, y);
+  const [u, v] = placeUv(
+    seed.center[0],
+    seed.center[1],
+    1,
+    1,
+    Math.cos(seed.rotation),
+    Math.sin(seed.rotation),
+    x,
+    y,
+  );
   // u, v here are the local coordinates + ½ (w = h = 1): distance to the rectangle's edge lines.
   const lx = Math.abs(u - 0.5);
   const ly = Math.abs(0.5 - v);
@@ -179,7 +188,8 @@ function colourMargin(scene: Scene, prepared: PreparedElements, w: readonly [num
     stopped = seedAt(seeds, at.x, at.y) >= 0;
     return stopped;
   });
-  if (inner && !stopped) margin = Math.min(margin, Math.abs(Math.hypot(st.x - inner.c[0], st.y - inner.c[1]) - inner.r) / st.s);
+  if (inner && !stopped)
+    margin = Math.min(margin, Math.abs(Math.hypot(st.x - inner.c[0], st.y - inner.c[1]) - inner.r) / st.s);
   return margin;
 }
 

@@ -77,7 +77,9 @@ export class GpuProbe {
   ): Promise<ProbeImage> {
     for (const src of tile.pictures ?? []) {
       const pic = resolvePicture(src, undefined);
-      const base64 = Buffer.from(pic.data.buffer, pic.data.byteOffset, pic.data.byteLength).toString('base64');
+      const base64 = Buffer.from(pic.data.buffer, pic.data.byteOffset, pic.data.byteLength).toString(
+        'base64',
+      );
       await this.page.evaluate(([s, w, h, b]) => window.kfHarness.picture(s, w, h, b), [
         src,
         pic.width,

@@ -125,7 +125,7 @@ describe('GPU colour program = CPU colouring (one sample per pixel centre, 8-bit
       const { scene } = loadExample(name);
       const program = compile(scene);
       const index = await gpu.program(program.vertexSource, program.source);
-      const image = await gpu.render(index, program.uniforms, scene.view);
+      const image = await gpu.render(index, program.uniforms, scene.view, { pictures: program.pictures });
       const stats = compareColourWithCpu(scene, image);
       row('examples', name, { colour: percent(stats.agreement), 'colour worst (levels)': stats.worstLevels });
       expect(stats.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);

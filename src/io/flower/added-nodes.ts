@@ -88,8 +88,18 @@ export function addOutput(
   }
 }
 
-/** Depth-HSV with Flower's hues (hue 0.01 + 0.05(n − 1) = 0.96 + 0.05n mod 1), or its palette. */
+/** Flower leaves the tile itself (n = 0) uncoloured, i.e. black: the tile fill does the same. */
+export const FLOWER_TILE_FILL = '#000000';
+
+/**
+ * Depth-HSV with Flower's hues (hue 0.01 + 0.05(n − 1) = 0.96 + 0.05n mod 1), or its palette;
+ * either way with the tile (depth 0) filled black.
+ */
 function tileParams(graph: FlowerGraph, notes: Diagnostic[]): Record<string, unknown> {
+  return { ...colouringParams(graph, notes), fillTile: true, fill: FLOWER_TILE_FILL };
+}
+
+function colouringParams(graph: FlowerGraph, notes: Diagnostic[]): Record<string, unknown> {
   const hsv = {
     mode: 'depth-hsv',
     hueOffset: FLOWER_RENDER.hueStart - FLOWER_RENDER.hueStep + 1,

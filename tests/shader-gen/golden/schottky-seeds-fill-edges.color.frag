@@ -27,7 +27,7 @@ uniform vec4 u_seed1;
 uniform vec3 u_seedColor0;
 uniform vec2 u_seedRot1;
 // Pictures (textures; the runtime binds texture unit N to u_imageN).
-uniform sampler2D u_image0; // builtin:checker-arrow
+uniform sampler2D u_image0;
 out vec4 outColor; // linear RGB; alpha u_bgAlpha on the background
 
 bool inRegion(vec4 g, vec2 p) {

@@ -16,7 +16,7 @@ uniform int u_maxIterations;
 uniform vec4 u_picture;
 uniform vec2 u_pictureRot;
 // Pictures (textures; the runtime binds texture unit N to u_imageN).
-uniform sampler2D u_image0; // builtin:checker-arrow
+uniform sampler2D u_image0;
 out vec4 outColor; // linear RGB; alpha u_bgAlpha on the background
 
 void reflectState(inout vec2 p, vec2 q, vec2 n) {

@@ -151,7 +151,13 @@ export const EVERY_KIND: SceneElement[] = [
 ];
 
 /** A disk seed and a picture seed outside the Schottky circles (both inside the tile). */
-export const SEED_DISK: SeedSpec = { kind: 'disk', nodeId: 'sd', c: [1.5, -0.8], r: 0.3, color: [1, 0.8, 0.2] };
+export const SEED_DISK: SeedSpec = {
+  kind: 'disk',
+  nodeId: 'sd',
+  c: [1.5, -0.8],
+  r: 0.3,
+  color: [1, 0.8, 0.2],
+};
 export const SEED_PICTURE: SeedSpec = {
   kind: 'image',
   nodeId: 'sp',
@@ -192,16 +198,24 @@ export const HAND_MADE_SCENES: Readonly<Record<string, Scene>> = {
   'schottky-seeds-only': makeScene(SCHOTTKY, {
     maxIterations: 60,
     scale: 5,
-    tile: { seeds: [SEED_DISK], seedsOnly: true },
+    tile: { seeds: [SEED_DISK], seedsOnly: true, seedFade: 0.15 },
   }),
-  'triangle-333-picture': makeScene(TRIANGLE_333, { coloring: COLORINGS.image, scale: 3, center: [0.5, 0.3] }),
+  'triangle-333-picture': makeScene(TRIANGLE_333, {
+    coloring: COLORINGS.image,
+    scale: 3,
+    center: [0.5, 0.3],
+  }),
   'schottky-picture-fill': makeScene(SCHOTTKY, {
     coloring: { ...COLORINGS.image, center: [0, 0], size: 3 } as Coloring,
     maxIterations: 60,
     scale: 5,
     tile: { fill: [0.1, 0.1, 0.1] },
   }),
-  'schottky-limit-set-glow': makeScene(SCHOTTKY, { coloring: COLORINGS['limit-set'], maxIterations: 40, scale: 5 }),
+  'schottky-limit-set-glow': makeScene(SCHOTTKY, {
+    coloring: COLORINGS['limit-set'],
+    maxIterations: 40,
+    scale: 5,
+  }),
   'schottky-limit-set': makeScene(SCHOTTKY, {
     coloring: { mode: 'limit-set', glow: 0 },
     maxIterations: 40,

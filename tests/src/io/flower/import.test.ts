@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import type { TileSpec } from '../../../../nodes/core/scene.ts';
-import { type DepthColoring, depthColour, hsvToRgb } from '../../../../shader-gen/colour.ts';
+import { type DepthColoring, depthColour, hsvToRgb, toLinear } from '../../../../shader-gen/colour.ts';
+import { sampleColour, sampleContext } from '../../../../shader-gen/raster.ts';
 import { FLOWER_RENDER, importFlower, isFlowerDocument } from '../../../../src/io/flower/import.ts';
 import { fedge, fnode, fpoint, graph, lineMirror } from './support/flower-fixture.ts';
 import { imported, messages } from './support/imported.ts';
@@ -29,6 +30,20 @@ describe('Flower import: colours, notes and view', () => {
     }
     expect(scene.maxIterations).toBe(50);
     expect(scene.samples).toBe(20);
+  });
+
+  it('the tile itself (depth 0) is black, as Flower leaves it uncoloured; deeper points keep their hue', () => {
+    const { scene } = imported(graph(lineMirror('m', [0, 0], [1, 0], false)));
+    expect(scene.tile.fill).toEqual([0, 0, 0]);
+    const pixel = (y: number) =>
+      sampleColour(scene, sampleContext(scene), 0.3, y, 0.01, { x: 0, y: 0, s: 1, depth: 0 });
+    const [kept, mirrored] = [pixel(0.4), pixel(-0.4)];
+    const one = scene.maxIterations > 0 ? depthColour(scene.tile.coloring as DepthColoring, 1) : null;
+    // One side of the mirror is the tile (black), the other its image at depth 1 (Flower's first hue).
+    const black = [kept, mirrored].filter((c) => c.every((v) => v === 0));
+    expect(black).toHaveLength(1);
+    const other = kept === black[0] ? mirrored : kept;
+    expect(other).toEqual(toLinear(one!));
   });
 
   it('ColorPalettes with Vec3 inputs becomes the tile palette, matching Flower at every depth', () => {

@@ -79,15 +79,21 @@ describe.skipIf(!available)('Flower presets (../shared/reference/flower-presets)
         if (mirrors.lines.length + mirrors.circles.length > 0) expect(inTile).toBeLessThan(size * size);
       });
 
-      it('renders a non-blank 64×64 image (a pattern wherever the preset has mirrors)', () => {
+      it('renders a 64×64 image like Flower: the tile black, a pattern wherever the preset has mirrors', () => {
         const img = rasterize(ev.scene, { width: 64, height: 64, samples: 1 });
         const colours = new Set<number>();
         let lit = 0;
+        let black = 0;
         for (let i = 0; i < img.data.length; i += 4) {
           colours.add((img.data[i] << 16) | (img.data[i + 1] << 8) | img.data[i + 2]);
-          if (img.data[i] + img.data[i + 1] + img.data[i + 2] > 60) lit++;
+          const sum = img.data[i] + img.data[i + 1] + img.data[i + 2];
+          if (sum > 60) lit++;
+          if (sum === 0) black++;
         }
-        expect(lit).toBeGreaterThan(64 * 64 * 0.5);
+        // One sample per pixel: each pixel is the black tile (Flower leaves n = 0 uncoloured) or a
+        // bright hue (S = V = 1), nothing in between.
+        expect(lit + black).toBe(64 * 64);
+        if (mirrors.lines.length + mirrors.circles.length > 0) expect(lit).toBeGreaterThan(64);
         // sinwave.json has no mirror nodes at all (only lines): Flower draws no pattern either.
         const expected = mirrors.lines.length + mirrors.circles.length > 0 ? 3 : 1;
         expect(colours.size).toBeGreaterThanOrEqual(expected);

@@ -1,0 +1,45 @@
+/**
+ * Frames the graph whenever a document is loaded (`frameKey` changes) once React Flow has measured
+ * the new nodes: fit it, but never below a readable zoom; a graph taller than the pane at that
+ * zoom is aligned to its top (its headers stay visible) instead of being cut at both ends.
+ */
+import { type Edge, useNodesInitialized, useReactFlow } from '@xyflow/react';
+import { type RefObject, useEffect, useRef } from 'react';
+import type { GraphDoc } from '../../nodes/graph/document.ts';
+import type { KfNode } from './flow-model.ts';
+import { FIT_VIEW } from './layout.ts';
+
+const TOP_MARGIN_PX = 56;
+
+export function useFrameGraph(
+  frameKey: number,
+  nodes: readonly KfNode[],
+  pane: RefObject<HTMLElement | null>,
+): void {
+  const flow = useReactFlow<KfNode, Edge>();
+  const initialized = useNodesInitialized();
+  const pending = useRef(true);
+  // biome-ignore lint/correctness/useExhaustiveDependencies: frameKey is the trigger itself
+  useEffect(() => {
+    pending.current = true;
+  }, [frameKey]);
+  useEffect(() => {
+    if (!pending.current) return;
+    if (doc.nodes.length === 0) {
+      pending.current = false; // an empty graph: nothing to frame (and the next node must not jump)
+      return;
+    }
+    // Wait until React Flow shows (and has measured) exactly this document's nodes.
+    const current = nodes.length === doc.nodes.length && nodes.every((n, i) => n.data.node === doc.nodes[i]);
+    if (!current || !initialized || nodes.some((n) => !n.measured)) return;
+    pending.current = false;
+    void flow.fitView(FIT_VIEW).then(() => {
+      const { x, zoom } = flow.getViewport();
+      const bounds = flow.getNodesBounds(flow.getNodes());
+      const height = pane.current?.clientHeight ?? 0;
+      if (bounds.height * zoom + 2 * TOP_MARGIN_PX > height) {
+        void flow.setViewport({ x, y: TOP_MARGIN_PX - bounds.y * zoom, zoom });
+      }
+    });
+  }, [initialized, doc, nodes, flow, pane]);
+}

@@ -1,0 +1,28 @@
+import { readFileSync, writeFileSync } from 'node:fs';
+import { describe, expect, it } from 'vitest';
+import { registry } from '../../nodes/types/index.ts';
+import { nodeReference, replaceSection, shortcutTable } from './readme-tables.ts';
+
+const README = new URL('../../README.md', import.meta.url);
+
+describe('README stays true to the code', () => {
+  const text = readFileSync(README, 'utf8');
+  const expected = replaceSection(
+    replaceSection(text, 'nodes', nodeReference()),
+    'shortcuts',
+    shortcutTable(),
+  );
+  const updating = process.env.UPDATE_README === '1';
+  if (updating && expected !== text) writeFileSync(README, expected);
+  const final = updating ? expected : text;
+
+  it('lists every registered node type with its one-line doc (run with UPDATE_README=1 to regenerate)', () => {
+    expect(final).toBe(expected);
+    for (const def of registry.all) expect(final).toContain(`| \`${def.type}\` |`);
+  });
+
+  it('shows the README commands a newcomer runs', () => {
+    expect(final).toContain('npm install && npm start');
+    expect(final).toContain('npm test');
+  });
+});

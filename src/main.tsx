@@ -12,6 +12,8 @@ import { App } from './app/App.tsx';
 import type { Message } from './app/Banner.tsx';
 import { defaultExample } from './app/examples.ts';
 import { download } from './app/files.ts';
+import { appMode } from './app/present/app-mode.ts';
+import { PresentApp } from './app/present/PresentApp.tsx';
 import { AUTOSAVE_BACKUP_KEY, type Restored, restore } from './state/autosave.ts';
 import { createEditorStore } from './state/store.ts';
 import { StoreContext } from './state/use-store.ts';
@@ -47,11 +49,12 @@ function start(): { doc: GraphDoc; messages: Message[] } {
 }
 
 const { doc, messages } = start();
+const mode = appMode(window.location.search);
 const store = createEditorStore(doc, registry);
 createRoot(document.getElementById('root')!).render(
   <StrictMode>
     <StoreContext.Provider value={store}>
-      <App initialMessages={messages} />
+      {mode === 'editor' ? <App initialMessages={messages} /> : <PresentApp mode={mode} />}
     </StoreContext.Provider>
   </StrictMode>,
 );

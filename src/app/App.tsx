@@ -8,7 +8,6 @@ import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import { emptyDocument, type GraphDoc } from '../../nodes/graph/document.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { GraphEditor } from '../editor/GraphEditor.tsx';
-import { tidyIfOverlapping } from '../editor/layout.ts';
 import { isTyping } from '../editor/typing.ts';
 import { createEvaluator } from '../state/evaluation.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
@@ -16,9 +15,8 @@ import type { Viewport } from '../viewport/viewport.ts';
 import { useAnimationClock } from './animation.ts';
 import { Banner, type Message } from './Banner.tsx';
 import { EXAMPLES } from './examples.ts';
-import { exportGlsl, exportPng } from './export.ts';
-import { documentJson, download, fileStem, readDocumentFile } from './files.ts';
 import { HelpDialog } from './HelpDialog.tsx';
+import { useDocumentIo } from './io/use-document-io.tsx';
 import { type RenderInfo, RenderPane } from './RenderPane.tsx';
 import { SplitPane } from './SplitPane.tsx';
 import { StatusBar } from './StatusBar.tsx';
@@ -59,56 +57,10 @@ export function App({ initialMessages }: Props) {
     [store],
   );
 
-  const save = useCallback(() => {
-    const current = store.getState().doc;
-    download(`${fileStem(current)}.kleinflow.json`, documentJson(current), 'application/json');
-  }, [store]);
+  const getViewport = useCallback(() => viewport.current, []);
+  const io = useDocumentIo({ store, scene: evaluation.scene, load, viewport: getViewport });
+  const { save, exportItems } = io;
   const open = useCallback(() => fileInput.current?.click(), []);
-  const onFile = async (file: File) => {
-    const result = await readDocumentFile(file);
-    if (result.ok) {
-      load(tidyIfOverlapping(result.doc, registry), `open ${file.name}`);
-      setMessages((ms) => ms.filter((m) => m.id !== 'open'));
-    } else {
-      say({
-        id: 'open',
-        kind: 'error',
-        text: `“${file.name}” could not be opened:`,
-        details: result.diagnostics.map((d) => `${d.code} ${d.message}`),
-      });
-    }
-  };
-
-  const runExport = async (width: number, height: number) => {
-    const v = viewport.current;
-    if (!v)
-      return say({
-        id: 'export',
-        kind: 'error',
-        text: 'Export needs the WebGL2 renderer, which is not running.',
-      });
-    say({ id: 'export', kind: 'info', text: `Rendering ${width}×${height}…` });
-    try {
-      const current = store.getState().doc;
-      await exportPng(v, current, evaluate(current, store.getState().time).scene, { width, height }, (f) =>
-        say({ id: 'export', kind: 'info', text: `Rendering ${width}×${height}… ${Math.round(f * 100)}%` }),
-      );
-      setMessages((ms) => ms.filter((m) => m.id !== 'export'));
-    } catch (e) {
-      say({ id: 'export', kind: 'error', text: `Export failed: ${(e as Error).message}` });
-    }
-  };
-  const exportItems = [
-    { label: 'PNG 1920 × 1080', hint: 'graph embedded', onSelect: () => void runExport(1920, 1080) },
-    { label: 'PNG 3840 × 2160', hint: '4K', onSelect: () => void runExport(3840, 2160) },
-    { label: 'PNG 2048 × 2048', hint: 'square', onSelect: () => void runExport(2048, 2048) },
-    {
-      label: 'GLSL fragment shader',
-      hint: 'WebGL2, values baked',
-      onSelect: () => exportGlsl(doc, evaluation.scene, 'webgl2'),
-    },
-    { label: 'GLSL for Shadertoy', onSelect: () => exportGlsl(doc, evaluation.scene, 'shadertoy') },
-  ];
 
   useEffect(() => {
     const onKey = (e: KeyboardEvent) => {
@@ -197,10 +149,11 @@ export function App({ initialMessages }: Props) {
         onChange={(e) => {
           const file = e.target.files?.[0];
           e.target.value = '';
-          if (file) void onFile(file);
+          if (file) void io.openFile(file);
         }}
       />
       {help && <HelpDialog onClose={() => setHelp(false)} />}
+      {io.ui}
     </div>
   );
 }

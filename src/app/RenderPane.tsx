@@ -11,6 +11,7 @@ import { useEditorState, useStore } from '../state/use-store.ts';
 import { type NodePatch, RenderOverlay } from '../viewport/overlay/RenderOverlay.tsx';
 import { attachPanZoom } from '../viewport/pan-zoom.ts';
 import { Viewport } from '../viewport/viewport.ts';
+import { exposeForTests } from './test-hooks.ts';
 
 /** Pan/zoom settles into the document this long after the last wheel tick or drag. */
 const VIEW_STORE_DELAY_MS = 300;
@@ -63,8 +64,10 @@ export function RenderPane({
       });
       viewport.current = v;
       onViewport(v);
+      exposeForTests(store, v);
       return () => {
         onViewport(null);
+        exposeForTests(store, null);
         viewport.current = null;
         v.dispose();
       };
@@ -74,7 +77,7 @@ export function RenderPane({
       );
       return undefined;
     }
-  }, [onViewport]);
+  }, [onViewport, store]);
 
   useEffect(() => {
     const el = pane.current!;

@@ -1,47 +1,58 @@
 /**
- * Export: a PNG of the render at a chosen size (GPU, full quality) with the graph JSON embedded
- * under the "kleinflow" key (so the picture reopens its graph), and the GLSL shader as text.
+ * Export: a PNG of the render at a chosen size (GPU, tiled, full quality) with the graph embedded
+ * (png-graph.ts, so the picture reopens its graph), and the GLSL shader as text.
  */
-import type { Scene } from '../../nodes/core/scene.ts';
+import type { Scene, View } from '../../nodes/core/scene.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { compile, shadertoySource } from '../../shader-gen/compile.ts';
-import { encodePng } from '../io/png.ts';
+import { embedGraph } from '../io/png-graph.ts';
 import type { Viewport } from '../viewport/viewport.ts';
-import { documentJson, download, fileStem } from './files.ts';
+import { download, fileStem } from './files.ts';
 
-export interface PngSize {
+export interface PngExportOptions {
   readonly width: number;
   readonly height: number;
+  readonly samples: number;
+  /** Pixels outside the tiling keep alpha 0 instead of the background colour. */
+  readonly transparent: boolean;
+  readonly view: View;
 }
 
-/** Renders and downloads the PNG; false when cancelled. */
+/** The PNG bytes (graph embedded), or null when `onProgress` returned false (cancelled). */
+export async function renderPng(
+  viewport: Viewport,
+  doc: GraphDoc,
+  o: PngExportOptions,
+  onProgress?: (fraction: number) => boolean,
+): Promise<Uint8Array | null> {
+  const pixels = await viewport.renderToPixels({
+    width: o.width,
+    height: o.height,
+    samples: o.samples,
+    view: o.view,
+    transparent: o.transparent,
+    onProgress,
+  });
+  if (!pixels) return null;
+  return embedGraph({ width: o.width, height: o.height, data: pixels }, doc);
+}
+
+/** Renders and downloads `<title>.png`; false when cancelled. */
 export async function exportPng(
   viewport: Viewport,
   doc: GraphDoc,
-  scene: Scene,
-  size: PngSize,
-  onProgress?: (fraction: number) => void,
+  o: PngExportOptions,
+  onProgress?: (fraction: number) => boolean,
 ): Promise<boolean> {
-  const pixels = await viewport.renderToPixels({
-    width: size.width,
-    height: size.height,
-    samples: Math.max(scene.samples, 16),
-    view: doc.view,
-    onProgress: (f) => {
-      onProgress?.(f);
-    },
-  });
-  if (!pixels) return false;
-  const png = encodePng(
-    { width: size.width, height: size.height, data: pixels },
-    { kleinflow: documentJson(doc) },
-  );
+  const png = await renderPng(viewport, doc, o, onProgress);
+  if (!png) return false;
   download(`${fileStem(doc)}.png`, png as Uint8Array<ArrayBuffer>, 'image/png');
   return true;
 }
 
-/** The standalone fragment shader with every value baked in. */
+/** `<title>.frag`: the standalone WebGL2 shader, values baked; `<title>.shadertoy.glsl` for Shadertoy. */
 export function exportGlsl(doc: GraphDoc, scene: Scene, flavour: 'webgl2' | 'shadertoy'): void {
-  const source = flavour === 'shadertoy' ? shadertoySource(scene) : compile(scene, { baked: true }).source;
-  download(`${fileStem(doc)}${flavour === 'shadertoy' ? '.shadertoy' : ''}.frag`, source, 'text/plain');
+  if (flavour === 'shadertoy')
+    download(`${fileStem(doc)}.shadertoy.glsl`, shadertoySource(scene), 'text/plain');
+  else download(`${fileStem(doc)}.frag`, compile(scene, { baked: true }).source, 'text/plain');
 }

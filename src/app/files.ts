@@ -1,9 +1,9 @@
-/** Downloads and file reading for Save / Open / Export. */
-
-import { diag } from '../../nodes/core/diagnostics.ts';
+/**
+ * Downloads and file reading for Save / Open / Export. Every format decision lives in src/io
+ * (document-io.ts): this file only moves bytes between the browser and those functions.
+ */
 import type { GraphDoc } from '../../nodes/graph/document.ts';
-import { type LoadResult, parseDocumentText } from '../../nodes/graph/load.ts';
-import { readPngText } from '../io/png.ts';
+import { type OpenResult, openBytes, serializeDocument } from '../io/document-io.ts';
 
 export function download(name: string, data: BlobPart, type: string): void {
   const url = URL.createObjectURL(new Blob([data], { type }));
@@ -25,23 +25,12 @@ export function fileStem(doc: GraphDoc): string {
   return stem || 'untitled';
 }
 
-export const documentJson = (doc: GraphDoc): string => `${JSON.stringify(doc, null, 2)}\n`;
+/** Save: downloads `<title>.kleinflow.json` with the canonical text of serializeDocument. */
+export function saveDocument(doc: GraphDoc): void {
+  download(`${fileStem(doc)}.kleinflow.json`, serializeDocument(doc), 'application/json');
+}
 
-/** Reads a .kleinflow.json file, or a PNG exported by Kleinflow (graph in its "kleinflow" text chunk). */
-export async function readDocumentFile(file: File): Promise<LoadResult> {
-  const bytes = new Uint8Array(await file.arrayBuffer());
-  const text = readPngText(bytes);
-  if (text) {
-    const json = text.kleinflow;
-    if (!json) {
-      return {
-        ok: false,
-        diagnostics: [
-          diag('importProblem', {}, 'this PNG carries no Kleinflow graph (it was not exported by Kleinflow)'),
-        ],
-      };
-    }
-    return parseDocumentText(json);
-  }
-  return parseDocumentText(new TextDecoder().decode(bytes));
+/** Reads a chosen or dropped file: Kleinflow JSON, a Flower graph or a Kleinflow PNG. */
+export async function readDocumentFile(file: File): Promise<OpenResult> {
+  return openBytes(new Uint8Array(await file.arrayBuffer()));
 }

@@ -13,6 +13,7 @@ const TOP_MARGIN_PX = 56;
 
 export function useFrameGraph(
   frameKey: number,
+  doc: GraphDoc,
   nodes: readonly KfNode[],
   pane: RefObject<HTMLElement | null>,
 ): void {

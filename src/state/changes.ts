@@ -37,7 +37,34 @@ export function inputTakesMany(doc: GraphDoc, registry: NodeRegistry, to: PortRe
   return spec ? PORT_TYPE_INFO[spec.type].many : false;
 }
 
-/** (doc, change) → next doc. `registry` decides which inputs take many edges. */
+/** Whether the node `id` exists and (when its type is known) has the port `port` on `side`. */
+function hasPort(doc: GraphDoc, registry: NodeRegistry, ref: PortRef, side: 'inputs' | 'outputs'): boolean {
+  const node = doc.nodes.find((n) => n.id === ref.node);
+  if (!node) return false;
+  const def = registry.get(node.type);
+  return !def || ref.port in def[side]; // an unknown type's ports are unknown: its wires are kept
+}
+
+/** `doc` with `f` applied to each node, or `doc` itself when `f` changed none (a no-op is no undo step). */
+function mapNodes(doc: GraphDoc, f: (n: GraphNode) => GraphNode): GraphDoc {
+  let changed = false;
+  const nodes = doc.nodes.map((n) => {
+    const next = f(n);
+    if (next !== n) changed = true;
+    return next;
+  });
+  return changed ? { ...doc, nodes } : doc;
+}
+
+const shallowEqual = (a: Readonly<Record<string, unknown>>, b: Readonly<Record<string, unknown>>) =>
+  Object.keys(a).length === Object.keys(b).length &&
+  Object.keys(a).every((k) => k in b && Object.is(a[k], b[k]));
+
+/**
+ * (doc, change) → next doc. `registry` decides which inputs take many edges. A change that changes
+ * nothing (moving a node to where it is, removing ids that are not there, a wire to a missing node
+ * or port) returns `doc` itself, so the store records no empty undo step.
+ */
 export function applyChange(doc: GraphDoc, change: Change, registry: NodeRegistry): GraphDoc {
   switch (change.type) {
     case 'add-node':
@@ -47,56 +74,60 @@ export function applyChange(doc: GraphDoc, change: Change, registry: NodeRegistr
     case 'remove': {
       const nodes = new Set(change.nodeIds);
       const edges = new Set(change.edgeIds ?? []);
-      return {
-        ...doc,
-        nodes: doc.nodes.filter((n) => !nodes.has(n.id)),
-        edges: doc.edges.filter((e) => !edges.has(e.id) && !nodes.has(e.from.node) && !nodes.has(e.to.node)),
-      };
+      const keptNodes = doc.nodes.filter((n) => !nodes.has(n.id));
+      const keptEdges = doc.edges.filter(
+        (e) => !edges.has(e.id) && !nodes.has(e.from.node) && !nodes.has(e.to.node),
+      );
+      if (keptNodes.length === doc.nodes.length && keptEdges.length === doc.edges.length) return doc;
+      return { ...doc, nodes: keptNodes, edges: keptEdges };
     }
     case 'move-nodes': {
       const to = new Map(change.moves.map((m) => [m.nodeId, m.position]));
-      return { ...doc, nodes: doc.nodes.map((n) => (to.has(n.id) ? { ...n, position: to.get(n.id)! } : n)) };
+      return mapNodes(doc, (n) => {
+        const p = to.get(n.id);
+        return p && (p[0] !== n.position[0] || p[1] !== n.position[1]) ? { ...n, position: p } : n;
+      });
     }
     case 'set-params': {
       const patches = new Map<string, Record<string, unknown>>();
       for (const p of change.patches) patches.set(p.nodeId, { ...patches.get(p.nodeId), ...p.params });
-      return {
-        ...doc,
-        nodes: doc.nodes.map((n) => {
-          const patch = patches.get(n.id);
-          if (!patch) return n;
-          const params = { ...n.params, ...patch };
-          for (const [k, v] of Object.entries(patch)) if (v === undefined) delete params[k];
-          return { ...n, params };
-        }),
-      };
+      return mapNodes(doc, (n) => {
+        const patch = patches.get(n.id);
+        if (!patch) return n;
+        const params = { ...n.params, ...patch };
+        for (const [k, v] of Object.entries(patch)) if (v === undefined) delete params[k];
+        return shallowEqual(params, n.params) ? n : { ...n, params };
+      });
     }
-    case 'set-label':
-      return {
-        ...doc,
-        nodes: doc.nodes.map((n) => {
-          if (n.id !== change.nodeId) return n;
-          const { label: _old, ...rest } = n;
-          return change.label.trim() ? { ...rest, label: change.label.trim() } : rest;
-        }),
-      };
+    case 'set-label': {
+      const label = change.label.trim();
+      return mapNodes(doc, (n) => {
+        if (n.id !== change.nodeId || (n.label ?? '') === label) return n;
+        const { label: _old, ...rest } = n;
+        return label ? { ...rest, label } : rest;
+      });
+    }
     case 'connect': {
       const { edge } = change;
+      if (!hasPort(doc, registry, edge.from, 'outputs') || !hasPort(doc, registry, edge.to, 'inputs'))
+        return doc;
+      if (doc.edges.some((e) => samePort(e.from, edge.from) && samePort(e.to, edge.to))) return doc; // already wired
       const many = inputTakesMany(doc, registry, edge.to);
-      const kept = doc.edges.filter(
-        (e) => !samePort(e.to, edge.to) || (many && !samePort(e.from, edge.from)),
-      );
-      if (many && kept.length < doc.edges.length) return doc; // the same wire already exists
-      return { ...doc, edges: [...kept, edge] };
+      return { ...doc, edges: [...doc.edges.filter((e) => many || !samePort(e.to, edge.to)), edge] };
     }
     case 'paste':
+      if (change.nodes.length === 0 && change.edges.length === 0) return doc;
       return { ...doc, nodes: [...doc.nodes, ...change.nodes], edges: [...doc.edges, ...change.edges] };
     case 'load-document':
       return change.doc;
-    case 'set-view':
-      return { ...doc, view: change.view };
+    case 'set-view': {
+      const { center, scale } = change.view;
+      const same =
+        center[0] === doc.view.center[0] && center[1] === doc.view.center[1] && scale === doc.view.scale;
+      return same ? doc : { ...doc, view: change.view };
+    }
     case 'set-meta':
-      return { ...doc, meta: change.meta };
+      return shallowEqual(change.meta, doc.meta) ? doc : { ...doc, meta: change.meta };
     case 'batch':
       return change.changes.reduce((d, c) => applyChange(d, c, registry), doc);
   }

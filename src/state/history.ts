@@ -1,7 +1,8 @@
 /**
  * Undo history as (before, after) document snapshots. Documents are immutable and changes keep
- * untouched parts by identity, so a snapshot costs little. The view (pan/zoom) is not history:
- * undo/redo keep the current view.
+ * untouched parts by identity, so a snapshot costs little. Pan/zoom is not history: undo/redo keep
+ * the current view, except for a step that itself changed the view (opening a document), whose
+ * undo brings its view back too.
  */
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 
@@ -29,8 +30,11 @@ export function record(history: History, step: HistoryStep): History {
   return { past: past.length > HISTORY_LIMIT ? past.slice(past.length - HISTORY_LIMIT) : past, future: [] };
 }
 
-const keepView = (doc: GraphDoc, current: GraphDoc): GraphDoc =>
-  doc.view === current.view ? doc : { ...doc, view: current.view };
+/** `target` with the current view, unless the step moved the view itself. */
+const keepView = (step: HistoryStep, target: GraphDoc, current: GraphDoc): GraphDoc =>
+  step.before.view !== step.after.view || target.view === current.view
+    ? target
+    : { ...target, view: current.view };
 
 /** Undoes the last step: the document before it (with the current view), or null when none. */
 export function undo(history: History, current: GraphDoc): { history: History; doc: GraphDoc } | null {
@@ -38,7 +42,7 @@ export function undo(history: History, current: GraphDoc): { history: History; d
   if (!step) return null;
   return {
     history: { past: history.past.slice(0, -1), future: [step, ...history.future] },
-    doc: keepView(step.before, current),
+    doc: keepView(step, step.before, current),
   };
 }
 
@@ -47,6 +51,6 @@ export function redo(history: History, current: GraphDoc): { history: History; d
   if (!step) return null;
   return {
     history: { past: [...history.past, step], future: history.future.slice(1) },
-    doc: keepView(step.after, current),
+    doc: keepView(step, step.after, current),
   };
 }

@@ -9,7 +9,6 @@ import type { Browser, BrowserContext, Page } from 'playwright-core';
 import { build, type PreviewServer, preview } from 'vite';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
-import { decodePng, readPngText } from '../../src/io/png.ts';
 import { launchChromium } from '../support/browser.ts';
 import {
   addNode,
@@ -284,28 +283,6 @@ describe('editor', () => {
       expect(saved.doc.nodes).toHaveLength(10);
       expect(saved.doc.edges).toHaveLength(12);
     }
-  }, 150_000);
-
-  it('exports a PNG that carries its graph, and opening that PNG brings the graph back', async () => {
-    await page.getByRole('button', { name: 'Export' }).click();
-    const [download] = await Promise.all([
-      page.waitForEvent('download', { timeout: 120_000 }),
-      page.getByRole('menuitem', { name: 'PNG 1920 × 1080' }).click(),
-    ]);
-    const path = (await download.path())!;
-    const bytes = new Uint8Array(readFileSync(path));
-    const png = decodePng(bytes);
-    expect([png.width, png.height]).toEqual([1920, 1080]);
-    const embedded = parseDocumentText(readPngText(bytes)!.kleinflow);
-    expect(embedded.ok && embedded.doc.nodes.length).toBe(10);
-
-    await page.getByRole('button', { name: 'New' }).click();
-    await expect.poll(() => nodeCount(page)).toBe(0);
-    await page
-      .getByTestId('open-file')
-      .setInputFiles({ name: 'star333.png', mimeType: 'image/png', buffer: Buffer.from(bytes) });
-    await expect.poll(() => nodeCount(page)).toBe(10);
-    await expect.poll(() => edgeCount(page)).toBe(12);
   }, 150_000);
 
   it('an unreadable autosave is reported and offered for download, not thrown away', async () => {

@@ -1,0 +1,216 @@
+/**
+ * The PNG export dialog: size (presets from the live view's size up to LIMITS.maxImageSide),
+ * samples per pixel, solid or transparent background; a progress bar with Cancel while the tiled
+ * GPU render runs. The downloaded PNG carries the graph, so dropping it back reopens the graph.
+ */
+import { useEffect, useRef, useState } from 'react';
+import { LIMITS, type View } from '../../../nodes/core/scene.ts';
+import type { PngExportOptions } from '../export.ts';
+
+export interface Size {
+  readonly width: number;
+  readonly height: number;
+}
+
+interface Props {
+  /** The live render's size in css pixels (the "view size" preset). */
+  readonly viewSize: Size;
+  readonly view: View;
+  readonly defaultSamples: number;
+  /** Renders and downloads; resolves false when cancelled. `onProgress` returning false cancels. */
+  run(o: PngExportOptions, onProgress: (f: number) => boolean): Promise<boolean>;
+  onClose(): void;
+}
+
+const MAX = LIMITS.maxImageSide;
+const PRESETS: readonly { label: string; size?: Size }[] = [
+  { label: 'View size' },
+  { label: '1920 × 1080 (Full HD)', size: { width: 1920, height: 1080 } },
+  { label: '3840 × 2160 (4K)', size: { width: 3840, height: 2160 } },
+  { label: '4096 × 4096', size: { width: 4096, height: 4096 } },
+  { label: '8192 × 8192 (print)', size: { width: 8192, height: 8192 } },
+  { label: `${MAX} × ${MAX} (largest)`, size: { width: MAX, height: MAX } },
+];
+
+const clampInt = (v: number, lo: number, hi: number) => Math.min(hi, Math.max(lo, Math.round(v) || lo));
+
+export function ExportDialog({ viewSize, view, defaultSamples, run, onClose }: Props) {
+  const ref = useRef<HTMLDialogElement>(null);
+  const [width, setWidth] = useState(Math.max(1, Math.round(viewSize.width)));
+  const [height, setHeight] = useState(Math.max(1, Math.round(viewSize.height)));
+  const [samples, setSamples] = useState(clampInt(defaultSamples, 1, LIMITS.maxSamples));
+  const [transparent, setTransparent] = useState(false);
+  const [progress, setProgress] = useState<number | null>(null);
+  const [error, setError] = useState<string | null>(null);
+  const cancelled = useRef(false);
+
+  useEffect(() => {
+    const d = ref.current!;
+    if (!d.open) d.showModal();
+    return () => d.close();
+  }, []);
+
+  const preset = PRESETS.findIndex((p) => {
+    const s = p.size ?? viewSize;
+    return Math.round(s.width) === width && Math.round(s.height) === height;
+  });
+  const megabytes = Math.ceil((width * height * 4) / 2 ** 20);
+  const busy = progress !== null;
+
+  const start = async () => {
+    cancelled.current = false;
+    setError(null);
+    setProgress(0);
+    try {
+      const done = await run({ width, height, samples, transparent, view }, (f) => {
+        setProgress(f);
+        return !cancelled.current;
+      });
+      setProgress(null);
+      if (done) onClose();
+    } catch (e) {
+      setProgress(null);
+      setError(`The export failed: ${(e as Error).message}`);
+    }
+  };
+  const close = () => {
+    cancelled.current = true;
+    onClose();
+  };
+
+  return (
+    <dialog
+      ref={ref}
+      className="kf-dialog kf-export"
+      aria-label="Export PNG"
+      onCancel={(e) => {
+        e.preventDefault();
+        close();
+      }}
+    >
+      <header className="kf-dialog__header">
+        <h2>Export PNG</h2>
+        <button type="button" className="kf-icon-button" aria-label="Close export" onClick={close}>
+          ×
+        </button>
+      </header>
+      <p className="kf-dialog__lead">
+        Rendered on the GPU in tiles at full quality. The graph travels inside the file: drop the PNG onto
+        Kleinflow to reopen it.
+      </p>
+      <div className="kf-export__grid">
+        <label htmlFor="kf-export-preset">Size</label>
+        <select
+          id="kf-export-preset"
+          value={preset}
+          disabled={busy}
+          onChange={(e) => {
+            const s = PRESETS[Number(e.target.value)]?.size ?? viewSize;
+            setWidth(Math.round(s.width));
+            setHeight(Math.round(s.height));
+          }}
+        >
+          {preset === -1 && <option value={-1}>Custom</option>}
+          {PRESETS.map((p, i) => (
+            <option key={p.label} value={i}>
+              {p.size
+                ? p.label
+                : `${p.label} (${Math.round(viewSize.width)} × ${Math.round(viewSize.height)})`}
+            </option>
+          ))}
+        </select>
+        <span className="kf-export__dims">
+          <input
+            type="number"
+            aria-label="Width in pixels"
+            min={1}
+            max={MAX}
+            value={width}
+            disabled={busy}
+            onChange={(e) => setWidth(clampInt(Number(e.target.value), 1, MAX))}
+          />
+          ×
+          <input
+            type="number"
+            aria-label="Height in pixels"
+            min={1}
+            max={MAX}
+            value={height}
+            disabled={busy}
+            onChange={(e) => setHeight(clampInt(Number(e.target.value), 1, MAX))}
+          />
+          <span className="kf-export__note">px · about {megabytes} MB of memory</span>
+        </span>
+        <label htmlFor="kf-export-samples">Samples</label>
+        <span>
+          <input
+            id="kf-export-samples"
+            type="number"
+            min={1}
+            max={LIMITS.maxSamples}
+            value={samples}
+            disabled={busy}
+            onChange={(e) => setSamples(clampInt(Number(e.target.value), 1, LIMITS.maxSamples))}
+          />
+          <span className="kf-export__note"> per pixel (anti-aliasing; more is smoother and slower)</span>
+        </span>
+        <span>Background</span>
+        <span className="kf-export__radios" role="radiogroup" aria-label="Background">
+          <label>
+            <input
+              type="radio"
+              name="kf-bg"
+              checked={!transparent}
+              disabled={busy}
+              onChange={() => setTransparent(false)}
+            />
+            Solid
+          </label>
+          <label>
+            <input
+              type="radio"
+              name="kf-bg"
+              checked={transparent}
+              disabled={busy}
+              onChange={() => setTransparent(true)}
+            />
+            Transparent
+          </label>
+        </span>
+      </div>
+      {busy && (
+        <div className="kf-export__progress">
+          <progress max={1} value={progress} aria-label="Export progress" />
+          <span>{progress < 1 ? `Rendering… ${Math.round(progress * 100)}%` : 'Encoding the PNG…'}</span>
+        </div>
+      )}
+      {error && (
+        <p className="kf-export__error" role="alert">
+          {error}
+        </p>
+      )}
+      <footer className="kf-export__actions">
+        {busy ? (
+          <button
+            type="button"
+            className="kf-button"
+            onClick={() => {
+              cancelled.current = true;
+            }}
+          >
+            Cancel
+          </button>
+        ) : (
+          <>
+            <button type="button" className="kf-button" onClick={close}>
+              Close
+            </button>
+            <button type="button" className="kf-button kf-button--primary" onClick={() => void start()}>
+              Export {width} × {height}
+            </button>
+          </>
+        )}
+      </footer>
+    </dialog>
+  );
+}

@@ -1,0 +1,25 @@
+/**
+ * Whether pasted text is a whole graph to open (a Kleinflow or Flower document, or a share link)
+ * rather than the editor's copied nodes (`kleinflow-clipboard`) or unrelated text.
+ */
+import { type OpenResult, openDocumentText } from '../../io/document-io.ts';
+import { isFlowerDocument } from '../../io/flower/import.ts';
+import { sharePayload } from '../../io/share-url.ts';
+
+function looksLikeDocument(text: string): boolean {
+  if (!/\s/.test(text) && sharePayload(text) !== null) return true;
+  if (!text.startsWith('{')) return false;
+  try {
+    const value: unknown = JSON.parse(text);
+    if (value === null || typeof value !== 'object') return false;
+    return (value as { format?: unknown }).format === 'kleinflow' || isFlowerDocument(value);
+  } catch {
+    return false;
+  }
+}
+
+/** The opened document (or its problems) when `text` is meant as one; null when it is not ours. */
+export function openPastedText(text: string): OpenResult | null {
+  const trimmed = text.trim();
+  return looksLikeDocument(trimmed) ? openDocumentText(trimmed) : null;
+}

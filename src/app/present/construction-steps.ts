@@ -1,0 +1,56 @@
+/**
+ * The classroom's step-through: the construction node by node in evaluation order
+ * (evaluation.analysis.order, topological with ties by id), and the evaluation as it stands after
+ * the first `count` steps — only those nodes' points, lines, circles and handles are drawn.
+ */
+import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
+
+export interface ConstructionStep {
+  readonly nodeId: string;
+  /** The node's own label (user text) or, without one, its type's label. */
+  readonly label: string;
+  /** The node type's label, e.g. "Circle through 3 points". */
+  readonly typeLabel: string;
+  /** Whether this node draws something in the overlay (a point, line or circle). */
+  readonly drawn: boolean;
+}
+
+export function constructionSteps(evaluation: Evaluation): ConstructionStep[] {
+  const drawn = new Set(evaluation.scene.overlays.map((o) => o.nodeId));
+  return evaluation.analysis.order.map((id) => {
+    const entry = evaluation.analysis.nodes.get(id);
+    const typeLabel = entry?.def?.label ?? entry?.node.type ?? id;
+    return { nodeId: id, label: entry?.node.label ?? typeLabel, typeLabel, drawn: drawn.has(id) };
+  });
+}
+
+/** The evaluation with the overlay cut down to the first `count` steps (the picture is untouched). */
+export function evaluationUpTo(
+  evaluation: Evaluation,
+  steps: readonly ConstructionStep[],
+  count: number,
+): Evaluation {
+  if (count >= steps.length) return evaluation;
+  const built = new Set(steps.slice(0, count).map((s) => s.nodeId));
+  const scene = evaluation.scene;
+  return {
+    ...evaluation,
+    scene: {
+      ...scene,
+      overlays: scene.overlays.filter((o) => built.has(o.nodeId)),
+      handles: scene.handles.filter((h) => built.has(h.nodeId)),
+    },
+  };
+}
+
+/** Whether the render node is among the first `count` steps (then the picture is shown). */
+export function renderReached(
+  evaluation: Evaluation,
+  steps: readonly ConstructionStep[],
+  count: number,
+): boolean {
+  const id = evaluation.scene.renderNodeId;
+  if (id === null) return false;
+  const at = steps.findIndex((s) => s.nodeId === id);
+  return at >= 0 && at < count;
+}

@@ -20,6 +20,19 @@ export interface InputSpec {
   readonly integer?: boolean;
   /** Inputs that only make sense wired (element, tile) are not editable inline. */
   readonly optional?: boolean;
+  /** Shown only while this condition holds (a wired input is always shown). See field-visibility.ts. */
+  readonly when?: FieldCondition;
+  /** Rarely changed: the node shows it under its collapsible "More" section (always, or while the condition holds). */
+  readonly more?: true | FieldCondition;
+}
+
+/**
+ * "This field matters only while param `param` (an enum or a toggle) has one of the values `is`."
+ * Hiding a field never changes the document: its value is kept and still evaluated.
+ */
+export interface FieldCondition {
+  readonly param: string;
+  readonly is: readonly (string | boolean)[];
 }
 
 export interface OutputSpec {
@@ -28,35 +41,37 @@ export interface OutputSpec {
   readonly doc?: string;
 }
 
+/** What every param declares besides its kind: label, doc, and when the editor shows it. */
+interface ParamUi {
+  readonly label?: string;
+  readonly doc?: string;
+  /** Shown only while this condition holds. See field-visibility.ts. */
+  readonly when?: FieldCondition;
+  /** Rarely changed: the node shows it under its collapsible "More" section (always, or while the condition holds). */
+  readonly more?: true | FieldCondition;
+}
+
 /** A parameter that cannot be wired: an enum, toggle, bounded integer, text or colour. */
-export type ParamSpec =
-  | { readonly kind: 'boolean'; readonly default: boolean; readonly label?: string; readonly doc?: string }
-  | {
-      readonly kind: 'enum';
-      readonly default: string;
-      readonly options: readonly string[];
-      readonly label?: string;
-      readonly doc?: string;
-    }
-  | {
-      readonly kind: 'number';
-      readonly default: number;
-      readonly min?: number;
-      readonly max?: number;
-      readonly step?: number;
-      readonly integer?: boolean;
-      readonly label?: string;
-      readonly doc?: string;
-    }
-  | { readonly kind: 'color'; readonly default: string; readonly label?: string; readonly doc?: string }
-  | {
-      readonly kind: 'string';
-      readonly default: string;
-      /** Longest text accepted (default 10 000 characters; a picture's data: URL needs more). */
-      readonly maxLength?: number;
-      readonly label?: string;
-      readonly doc?: string;
-    };
+export type ParamSpec = ParamUi &
+  (
+    | { readonly kind: 'boolean'; readonly default: boolean }
+    | { readonly kind: 'enum'; readonly default: string; readonly options: readonly string[] }
+    | {
+        readonly kind: 'number';
+        readonly default: number;
+        readonly min?: number;
+        readonly max?: number;
+        readonly step?: number;
+        readonly integer?: boolean;
+      }
+    | { readonly kind: 'color'; readonly default: string }
+    | {
+        readonly kind: 'string';
+        readonly default: string;
+        /** Longest text accepted (default 10 000 characters; a picture's data: URL needs more). */
+        readonly maxLength?: number;
+      }
+  );
 
 export type InputValues = Readonly<Record<string, PortValueMap[PortType] | undefined>>;
 export type ParamValues = Readonly<Record<string, unknown>>;

@@ -38,11 +38,13 @@ export const PALETTES: Readonly<Record<string, Palette>> = {
   ember: { a: half, b: half, c: [1, 0.7, 0.4], d: [0, 0.15, 0.2] },
 };
 
+/** A palette colour of the "custom" preset (the named presets ignore it, so it is hidden then). */
 const colour = (c: Color, label: string, doc: string) => ({
   type: 'color' as const,
   label,
   default: toHex(c),
   doc,
+  when: { param: 'preset', is: ['custom'] },
 });
 
 export const cosinePaletteNode = defineNode({

@@ -1,4 +1,4 @@
-import { defineNode } from '../core/define-node.ts';
+import { defineNode, type FieldCondition, type InputSpec, type ParamSpec } from '../core/define-node.ts';
 import { diag } from '../core/diagnostics.ts';
 import { toHex } from '../core/port-values.ts';
 import { type Coloring, DEFAULT_TILE, LIMITS, type SeedSpec, type TileSpec } from '../core/scene.ts';
@@ -8,8 +8,28 @@ import { fmt } from './shared.ts';
 
 const d = DEFAULT_TILE;
 const cos = d.coloring as Extract<Coloring, { mode: 'cosine' }>;
-const colour = (c: Color, label: string) => ({ type: 'color' as const, label, default: toHex(c) });
+const colour = (c: Color, label: string, ui: Pick<InputSpec, 'when' | 'more'> = {}) => ({
+  type: 'color' as const,
+  label,
+  default: toHex(c),
+  ...ui,
+});
 const MODES = ['cosine', 'depth-hsv', 'parity', 'image', 'limit-set'] as const;
+type Mode = (typeof MODES)[number];
+/** Shown only in these colouring modes (shader-gen/colour.ts reads the field only there). */
+const inMode = (...modes: Mode[]): FieldCondition => ({ param: 'mode', is: modes });
+/** Limit-set mode paints only the limit set: tile fill, inner area and edges do not apply. */
+const TILED = inMode('cosine', 'depth-hsv', 'parity', 'image');
+/** A depth-hsv setting in [lowest, 1]. */
+const hsv = (value: number, lowest: number, label: string, step = 0.01): ParamSpec => ({
+  kind: 'number',
+  default: value,
+  min: lowest,
+  max: 1,
+  step,
+  label,
+  when: inMode('depth-hsv'),
+});
 const rad = (deg: number) => (deg * Math.PI) / 180;
 
 /** The picture's turn handle: centre + R(θ)(0, size/2), the middle of its top edge. */
@@ -26,25 +46,40 @@ export const tileNode = defineNode({
   color: '#b07cf0',
   doc: 'How points are coloured: by depth (HSV, cosine palette, two tones), a picture seen through the kaleidoscope, or only the limit set; plus tile fill, orbit seeds, an inner area, limit-set colour, background and edges.',
   inputs: {
-    a: colour(cos.a, 'palette a'),
-    b: colour(cos.b, 'palette b'),
-    c: colour(cos.c, 'palette c'),
-    d: colour(cos.d, 'palette d'),
-    even: colour([0.93, 0.91, 0.85], 'even'),
-    odd: colour([0.13, 0.16, 0.24], 'odd'),
-    limit: colour(d.limitColor, 'limit set'),
-    background: colour(d.background, 'background'),
-    edgeColor: colour(d.edgeColor, 'edge colour'),
-    fill: colour([0, 0, 0], 'tile fill'),
+    a: colour(cos.a, 'palette a', { when: inMode('cosine') }),
+    b: colour(cos.b, 'palette b', { when: inMode('cosine') }),
+    c: colour(cos.c, 'palette c', { when: inMode('cosine') }),
+    d: colour(cos.d, 'palette d', { when: inMode('cosine') }),
+    even: colour([0.93, 0.91, 0.85], 'even', { when: inMode('parity') }),
+    odd: colour([0.13, 0.16, 0.24], 'odd', { when: inMode('parity') }),
+    // The two colours of limit-set mode; in the other modes they are rarely changed.
+    limit: colour(d.limitColor, 'limit set', { more: TILED }),
+    background: colour(d.background, 'background', { more: TILED }),
+    edgeColor: colour(d.edgeColor, 'edge colour', { when: TILED, more: true }),
+    fill: colour([0, 0, 0], 'tile fill', { when: { param: 'fillTile', is: [true] } }),
     image: {
       type: 'image',
       label: 'picture',
       optional: true,
       doc: 'picture mode: the picture seen through the kaleidoscope (the built-in checker when unwired)',
+      when: inMode('image'),
     },
-    imageCenter: { type: 'point', label: 'picture centre', default: [0, 0] },
-    imageSize: { type: 'number', label: 'picture height', default: 1, min: 0, step: 0.01 },
-    imageRotation: { type: 'number', label: 'picture rotation °', default: 0, step: 1 },
+    imageCenter: { type: 'point', label: 'picture centre', default: [0, 0], when: inMode('image') },
+    imageSize: {
+      type: 'number',
+      label: 'picture height',
+      default: 1,
+      min: 0,
+      step: 0.01,
+      when: inMode('image'),
+    },
+    imageRotation: {
+      type: 'number',
+      label: 'picture rotation °',
+      default: 0,
+      step: 1,
+      when: inMode('image'),
+    },
     seeds: {
       type: 'seed',
       label: 'seeds',
@@ -56,6 +91,7 @@ export const tileNode = defineNode({
       label: 'inner area',
       optional: true,
       doc: 'when wired, only points whose final point lies inside this circle keep their colour (Fig. 22)',
+      when: TILED,
     },
   },
   outputs: { tile: { type: 'tile', label: 'tile' } },
@@ -69,11 +105,12 @@ export const tileNode = defineNode({
       step: 0.005,
       label: 'palette step',
       doc: 'palette t = depth × step',
+      when: inMode('cosine'),
     },
-    hueOffset: { kind: 'number', default: 0.01, min: 0, max: 1, step: 0.01, label: 'hue start' },
-    hueStep: { kind: 'number', default: 0.05, min: -1, max: 1, step: 0.005, label: 'hue per step' },
-    saturation: { kind: 'number', default: 1, min: 0, max: 1, step: 0.01, label: 'saturation' },
-    value: { kind: 'number', default: 1, min: 0, max: 1, step: 0.01, label: 'value' },
+    hueOffset: hsv(0.01, 0, 'hue start'),
+    hueStep: hsv(0.05, -1, 'hue per step', 0.005),
+    saturation: hsv(1, 0, 'saturation'),
+    value: hsv(1, 0, 'value'),
     glow: {
       kind: 'number',
       default: 0,
@@ -82,18 +119,21 @@ export const tileNode = defineNode({
       step: 0.5,
       label: 'limit glow px',
       doc: 'limit-set mode: a glow about this many pixels wide around the limit set; 0 = none',
+      when: inMode('limit-set'),
     },
     fillTile: {
       kind: 'boolean',
       default: false,
       label: 'fill tile',
       doc: 'paint depth 0 (the tile itself) in the tile fill colour',
+      when: TILED,
     },
     seedsOnly: {
       kind: 'boolean',
       default: false,
       label: 'seeds only',
       doc: 'points that hit no seed get the background: only the orbits show',
+      more: true,
     },
     seedFade: {
       kind: 'number',
@@ -103,6 +143,7 @@ export const tileNode = defineNode({
       step: 0.01,
       label: 'seed fade',
       doc: 'each step darkens the images of the seeds by this much (0 = all as bright as the seed)',
+      more: true,
     },
     edgeWidth: {
       kind: 'number',
@@ -112,6 +153,8 @@ export const tileNode = defineNode({
       step: 0.5,
       label: 'edge px',
       doc: 'tile edges of constant pixel width; 0 = none',
+      when: TILED,
+      more: true,
     },
   },
   evaluate: ({ inputs, params, nodeId }) => {

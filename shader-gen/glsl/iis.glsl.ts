@@ -15,7 +15,7 @@ import { glslTwin } from './element-twins.ts';
 import type { SeedsGlsl } from './seeds.glsl.ts';
 import { type GlslFunction, glslFunction } from './snippet.ts';
 import type { SourceBuilder } from './source.ts';
-import type { SceneValues } from './values.ts';
+import { ELEMENT_ARRAY, type SceneValues } from './values.ts';
 
 /** Stands in for +∞ where the CPU starts a minimum at Infinity (GLSL ES has no literal for it). */
 export const GLSL_FAR = '3.0e38';
@@ -49,10 +49,23 @@ export function elementFunctions(placed: readonly PlacedElement[], edges: boolea
   ]);
 }
 
+const UNIFORM_ROW = new RegExp(`^${ELEMENT_ARRAY}\\[(\\d+)\\]$`);
+
+/** The local `elN` that holds uniform row `u_el[N]` in runIis (null for a baked literal). */
+const hoistedRow = (expr: string): string | null => {
+  const m = UNIFORM_ROW.exec(expr);
+  return m ? `el${m[1]}` : null;
+};
+
 /**
  * `bool runIis(inout vec2 p, inout float s, inout int depth)`: true when p escaped. The loop only
  * steps (each element's block: step it, and restart if it applied); once depth reaches maxIter
  * the blocks after the loop only ask whether some element holds p.
+ *
+ * Speed (SwiftShader, tests/bench/shader-ratio.ts): the uniform rows and maxIter are copied into
+ * locals before the loop — read inside the loop, every pass reloaded them (2× slower) — and the
+ * loop runs on depth alone: every pass either returns or adds ≥ 1 to depth (each twin's contract,
+ * see GlslStepBlock), so there are at most maxIter passes without a second counter.
  */
 export function emitRunIis(
   out: SourceBuilder,
@@ -66,18 +79,27 @@ export function emitRunIis(
     `${indent}seed = seedAt(p);`,
     `${indent}if (seed >= 0) return false;`,
   ];
+  const local = (expr: string) => hoistedRow(expr) ?? expr;
+  const hoisted = placed.flatMap(({ data }) =>
+    data.flatMap((expr) => {
+      const name = hoistedRow(expr);
+      return name ? [`  vec4 ${name} = ${expr};`] : [];
+    }),
+  );
+  const literalLimit = /^\d+$/.test(maxIter);
   out.push(
     withSeeds
       ? 'bool runIis(inout vec2 p, inout float s, inout int depth, inout int seed) {'
       : 'bool runIis(inout vec2 p, inout float s, inout int depth) {',
-    `  for (int iteration = 0; iteration < ${maxIter}; ++iteration) {`,
+    ...hoisted,
+    ...(literalLimit ? [] : [`  int maxIter = ${maxIter};`]),
+    `  while (depth < ${literalLimit ? maxIter : 'maxIter'}) {`,
     ...(withSeeds ? seedTest('    ') : []),
-    `    if (depth >= ${maxIter}) break;`,
   );
   placed.forEach(({ twin, data }, i) => {
     out.block(i + 1, [
       `    { // ${twin.kind}`,
-      ...data.map((expr, k) => `      vec4 d${k} = ${expr};`),
+      ...data.map((expr, k) => `      vec4 d${k} = ${local(expr)};`),
       ...twin.step.code.split('\n').map((line) => `      ${line}`),
       '    }',
     ]);
@@ -85,8 +107,8 @@ export function emitRunIis(
   out.push('    return true;', '  }');
   if (withSeeds) out.push(...seedTest('  '));
   out.push('  // depth ≥ maxIter: escaped only if no element holds p.');
-  placed.forEach(({ twin, args }, i) => {
-    out.block(i + 1, [`  if (${twin.inside.name}(p, ${args})) return false;`]);
+  placed.forEach(({ twin, data }, i) => {
+    out.block(i + 1, [`  if (${twin.inside.name}(p, ${data.map(local).join(', ')})) return false;`]);
   });
   out.push('  return true;', '}');
 }

@@ -16,12 +16,24 @@ export interface PngExportOptions {
   /** Pixels outside the tiling keep alpha 0 instead of the background colour. */
   readonly transparent: boolean;
   readonly view: View;
+  /**
+   * Height in device pixels of the picture the export should look like (the live view): tile
+   * edges are drawn in pixels, so they are widened by height / referenceHeight to keep their look.
+   */
+  readonly referenceHeight: number;
+}
+
+/** The scene with its pixel-sized tile edges widened by `factor` (edge px × factor). */
+export function scaleEdges(scene: Scene, factor: number): Scene {
+  if (scene.tile.edgeWidth <= 0 || factor === 1) return scene;
+  return { ...scene, tile: { ...scene.tile, edgeWidth: scene.tile.edgeWidth * factor } };
 }
 
 /** The PNG bytes (graph embedded), or null when `onProgress` returned false (cancelled). */
 export async function renderPng(
   viewport: Viewport,
   doc: GraphDoc,
+  scene: Scene,
   o: PngExportOptions,
   onProgress?: (fraction: number) => boolean,
 ): Promise<Uint8Array | null> {
@@ -31,6 +43,7 @@ export async function renderPng(
     samples: o.samples,
     view: o.view,
     transparent: o.transparent,
+    scene: scaleEdges(scene, o.height / o.referenceHeight),
     onProgress,
   });
   if (!pixels) return null;
@@ -41,10 +54,11 @@ export async function renderPng(
 export async function exportPng(
   viewport: Viewport,
   doc: GraphDoc,
+  scene: Scene,
   o: PngExportOptions,
   onProgress?: (fraction: number) => boolean,
 ): Promise<boolean> {
-  const png = await renderPng(viewport, doc, o, onProgress);
+  const png = await renderPng(viewport, doc, scene, o, onProgress);
   if (!png) return false;
   download(`${fileStem(doc)}.png`, png as Uint8Array<ArrayBuffer>, 'image/png');
   return true;

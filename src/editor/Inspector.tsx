@@ -1,9 +1,11 @@
 /**
  * The inspector for the selected node: its doc, an editable label, every input (wired or inline)
- * and param, the read-out and the full list of its diagnostics.
+ * and param that matters in the node's set-up (field-visibility.ts; "More" fields included), the
+ * read-out and the full list of its diagnostics.
  */
 import { useEffect, useState } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import { isFieldShown } from '../../nodes/core/field-visibility.ts';
 import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
 import type { GraphNode } from '../../nodes/graph/document.ts';
 import type { NodeEvaluation } from '../../nodes/graph/evaluate.ts';
@@ -25,6 +27,12 @@ export function Inspector({ node, connected, evaluation, diagnostics, onLabel, o
   const def = registry.get(node.type);
   const [label, setLabel] = useState(node.label ?? '');
   useEffect(() => setLabel(node.label ?? ''), [node.label]);
+  // Only the fields that matter in this set-up (and any with a problem of its own), as on the node.
+  const withProblem = new Set(diagnostics.flatMap((d) => (d.port ? [d.port] : [])));
+  const shown = (name: string) =>
+    withProblem.has(name) || (!!def && isFieldShown(def, name, node.params, connected));
+  const inputs = def ? Object.entries(def.inputs).filter(([name]) => shown(name)) : [];
+  const params = def ? Object.entries(def.params).filter(([name]) => shown(name)) : [];
 
   return (
     <aside className="kf-inspector" aria-label="Inspector">
@@ -50,9 +58,9 @@ export function Inspector({ node, connected, evaluation, diagnostics, onLabel, o
             onKeyDown={(e) => e.key === 'Enter' && (e.target as HTMLInputElement).blur()}
           />
         </label>
-        {def && Object.keys(def.inputs).length > 0 && <h3>Inputs</h3>}
+        {inputs.length > 0 && <h3>Inputs</h3>}
         {def &&
-          Object.entries(def.inputs).map(([port, spec]) => (
+          inputs.map(([port, spec]) => (
             <div key={port} className="kf-inspector__item">
               {connected.has(port) || !hasInlineEditor(spec, node.params[port]) ? (
                 <div className="kf-field">
@@ -73,9 +81,9 @@ export function Inspector({ node, connected, evaluation, diagnostics, onLabel, o
               {spec.doc && <p className="kf-inspector__hint">{spec.doc}</p>}
             </div>
           ))}
-        {def && Object.keys(def.params).length > 0 && <h3>Settings</h3>}
+        {params.length > 0 && <h3>Settings</h3>}
         {def &&
-          Object.entries(def.params).map(([name, spec]) => (
+          params.map(([name, spec]) => (
             <div key={name} className="kf-inspector__item">
               <ParamWidget
                 name={name}

@@ -1,7 +1,8 @@
 /**
  * The ONE node component: everything it shows comes from the node type's declaration (NodeDef) —
  * header, typed ports (coloured by PORT_TYPE_INFO, labelled), inline widgets for unconnected
- * inputs and params, the evaluation's read-out, and a badge for the node's diagnostics.
+ * inputs and params (only those that matter in the node's set-up, rarely used ones under "More";
+ * see node-fields.ts), the evaluation's read-out, and a badge for the node's diagnostics.
  */
 import { Handle, type NodeProps, Position, useConnection } from '@xyflow/react';
 import { memo } from 'react';
@@ -10,6 +11,8 @@ import { canConnect, PORT_TYPE_INFO, type PortType } from '../../nodes/core/port
 import { inHandle, outHandle, portOfHandle } from './connection.ts';
 import { useEditorActions } from './editor-context.ts';
 import type { KfNode, KfNodeData } from './flow-model.ts';
+import { MoreSection } from './MoreSection.tsx';
+import { type NodeField, nodeFields } from './node-fields.ts';
 import { hasInlineEditor } from './widgets/inline-editor.ts';
 import { InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
 
@@ -92,6 +95,46 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
     return side === 'in' || !canConnect(type, wire.type);
   };
 
+  /** Fields with a diagnostic of their own are shown whatever the set-up, so no problem hides. */
+  const fields = def
+    ? nodeFields(def, node.params, connected, new Set(diagnostics.flatMap((d) => (d.port ? [d.port] : []))))
+    : null;
+
+  const fieldRow = (f: NodeField) => {
+    const problems = portDiag(f.name);
+    const rowClass = problems.length ? ` kf-row--${worst(problems)}` : '';
+    const title = problems.map((d) => d.message).join('\n') || undefined;
+    if (f.kind === 'param')
+      return (
+        <div key={`p-${f.name}`} className={`kf-row kf-row--param${rowClass}`} title={title}>
+          <ParamWidget
+            name={f.name}
+            spec={f.spec}
+            value={node.params[f.name]}
+            onEdit={editParam(id, f.name)}
+          />
+        </div>
+      );
+    const { name: port, spec } = f;
+    const widget =
+      !connected.has(port) && hasInlineEditor(spec, node.params[port]) ? (
+        <InputWidget name={port} spec={spec} value={node.params[port]} onEdit={editParam(id, port)} />
+      ) : null;
+    return (
+      <div key={`i-${port}`} className={`kf-row kf-row--in${rowClass}`} title={title}>
+        <Port
+          side="in"
+          port={port}
+          label={spec.label ?? port}
+          type={spec.type}
+          doc={spec.doc}
+          dim={dims('in', spec.type)}
+        />
+        {widget ?? <span className="kf-row__label">{spec.label ?? port}</span>}
+      </div>
+    );
+  };
+
   const accent = def?.color ?? '#e5484d';
   return (
     <div
@@ -129,45 +172,12 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
               />
             </div>
           ))}
-        {def &&
-          Object.entries(def.inputs).map(([port, spec]) => {
-            const isConnected = connected.has(port);
-            const problems = portDiag(port);
-            const widget =
-              !isConnected && hasInlineEditor(spec, node.params[port]) ? (
-                <InputWidget name={port} spec={spec} value={node.params[port]} onEdit={editParam(id, port)} />
-              ) : null;
-            return (
-              <div
-                key={`i-${port}`}
-                className={`kf-row kf-row--in${problems.length ? ` kf-row--${worst(problems)}` : ''}`}
-                title={problems.map((d) => d.message).join('\n') || undefined}
-              >
-                <Port
-                  side="in"
-                  port={port}
-                  label={spec.label ?? port}
-                  type={spec.type}
-                  doc={spec.doc}
-                  dim={dims('in', spec.type)}
-                />
-                {widget ?? <span className="kf-row__label">{spec.label ?? port}</span>}
-              </div>
-            );
-          })}
-        {def &&
-          Object.entries(def.params).map(([name, spec]) => {
-            const problems = portDiag(name);
-            return (
-              <div
-                key={`p-${name}`}
-                className={`kf-row kf-row--param${problems.length ? ` kf-row--${worst(problems)}` : ''}`}
-                title={problems.map((d) => d.message).join('\n') || undefined}
-              >
-                <ParamWidget name={name} spec={spec} value={node.params[name]} onEdit={editParam(id, name)} />
-              </div>
-            );
-          })}
+        {fields?.main.map(fieldRow)}
+        {fields && fields.more.length > 0 && (
+          <MoreSection nodeId={id} count={fields.more.length}>
+            {fields.more.map(fieldRow)}
+          </MoreSection>
+        )}
         {!def && (
           <>
             {data.orphanPorts.outputs.map((port) => (

@@ -16,6 +16,7 @@ export interface KfNodeData extends Record<string, unknown> {
   readonly def: NodeDef | undefined;
   /** Inputs that have an edge (they show no inline widget). */
   readonly connected: ReadonlySet<string>;
+  /** For the read-out: kept from an earlier evaluation while read-out and diagnostics are unchanged. */
   readonly evaluation: NodeEvaluation | undefined;
   readonly diagnostics: readonly Diagnostic[];
   /** Ports named by edges of an unknown-type node (so its wires still show). */
@@ -34,6 +35,31 @@ export function diagnosticsByNode(diagnostics: readonly Diagnostic[]): Map<strin
     by.set(d.nodeId, list);
   }
   return by;
+}
+
+const sameList = (a: readonly string[], b: readonly string[]) =>
+  a.length === b.length && a.every((x, i) => x === b[i]);
+const sameDiagnostics = (a: readonly Diagnostic[], b: readonly Diagnostic[]) =>
+  a.length === b.length &&
+  a.every((d, i) => d.code === b[i].code && d.message === b[i].message && d.severity === b[i].severity && d.port === b[i].port);
+
+/**
+ * `prev` when nothing the node shows changed (same document node, wires, read-out, diagnostics,
+ * hover): its React Flow node keeps its identity and does not re-render. With hundreds of nodes a
+ * rebuild of every node per selection, hover or drop costs a visible hitch.
+ */
+function reuseData(prev: KfNodeData | undefined, next: KfNodeData): KfNodeData {
+  const same =
+    prev !== undefined &&
+    prev.node === next.node &&
+    prev.def === next.def &&
+    prev.hovered === next.hovered &&
+    prev.evaluation?.readout === next.evaluation?.readout &&
+    sameList([...prev.connected], [...next.connected]) &&
+    sameDiagnostics(prev.diagnostics, next.diagnostics) &&
+    sameList(prev.orphanPorts.inputs, next.orphanPorts.inputs) &&
+    sameList(prev.orphanPorts.outputs, next.orphanPorts.outputs);
+  return same ? prev : next;
 }
 
 export function toFlowNodes(
@@ -60,21 +86,26 @@ export function toFlowNodes(
           inputs: [...new Set(doc.edges.filter((e) => e.to.node === node.id).map((e) => e.to.port))],
           outputs: [...new Set(doc.edges.filter((e) => e.from.node === node.id).map((e) => e.from.port))],
         };
+    const data = reuseData(prev?.data, {
+      node,
+      def,
+      connected: connected.get(node.id) ?? new Set(),
+      evaluation: evaluations.get(node.id),
+      diagnostics: diagnostics.get(node.id) ?? [],
+      orphanPorts,
+      hovered: hovered === node.id,
+    });
+    const [x, y] = node.position;
+    const selected = selection.has(node.id);
+    if (prev?.data === data && prev.selected === selected && prev.position.x === x && prev.position.y === y)
+      return prev;
     return {
       id: node.id,
       type: 'kf',
-      position: { x: node.position[0], y: node.position[1] },
-      selected: selection.has(node.id),
+      position: { x, y },
+      selected,
       ...(prev?.measured ? { measured: prev.measured } : {}),
-      data: {
-        node,
-        def,
-        connected: connected.get(node.id) ?? new Set(),
-        evaluation: evaluations.get(node.id),
-        diagnostics: diagnostics.get(node.id) ?? [],
-        orphanPorts,
-        hovered: hovered === node.id,
-      },
+      data,
     };
   });
 }

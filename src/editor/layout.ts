@@ -5,6 +5,7 @@
 import type { InputSpec, NodeDef } from '../../nodes/core/define-node.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc, GraphNode } from '../../nodes/graph/document.ts';
+import { nodeFields } from './node-fields.ts';
 import { hasInlineEditor } from './widgets/inline-editor.ts';
 
 export interface Size {
@@ -37,9 +38,11 @@ export function estimateSize(
   connected: ReadonlySet<string>,
 ): Size {
   if (!def) return { width: NODE_WIDTH, height: HEADER + BODY_PADDING + ROW * 3 };
-  let rows = Object.keys(def.outputs).length + Object.keys(def.params).length;
-  for (const [port, spec] of Object.entries(def.inputs))
-    rows += inputRows(spec, node.params[port], connected.has(port));
+  // The rows the node shows in its set-up, with its "More" section closed (one toggle row).
+  const { main, more } = nodeFields(def, node.params, connected);
+  let rows = Object.keys(def.outputs).length + (more.length > 0 ? 1 : 0);
+  for (const f of main)
+    rows += f.kind === 'input' ? inputRows(f.spec, node.params[f.name], connected.has(f.name)) : 1;
   // Most nodes show a read-out; reserving its row for all keeps the estimate on the safe side.
   return { width: NODE_WIDTH, height: HEADER + BODY_PADDING + rows * ROW + READOUT };
 }

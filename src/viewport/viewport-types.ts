@@ -1,6 +1,6 @@
 /** The Viewport's public option and result types (viewport.ts), the contract the editor uses. */
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
-import type { View } from '../../nodes/core/scene.ts';
+import type { Scene, View } from '../../nodes/core/scene.ts';
 
 export interface ViewportOptions {
   /** The compiler's and the driver's diagnostics (KF403 with node ids), whenever they change; [] when clean. */
@@ -37,4 +37,6 @@ export interface RenderToPixelsOptions {
   // biome-ignore lint/suspicious/noConfusingVoidType: the editor's API (a callback may return nothing)
   onProgress?(f: number): boolean | void;
   tile?: number;
+  /** The scene to draw instead of the live one (e.g. with edge widths scaled for a larger export). */
+  scene?: Scene;
 }

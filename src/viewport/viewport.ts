@@ -132,7 +132,7 @@ export class Viewport {
    * top row first; null when onProgress returned false. Uses the baked program when it builds.
    */
   async renderToPixels(opts: RenderToPixelsOptions): Promise<Uint8ClampedArray | null> {
-    const scene = this.scene;
+    const scene = opts.scene ?? this.scene;
     if (!scene) throw new Error('renderToPixels: no scene was set');
     const renderer = this.requireRenderer();
     const program = this.programs.exportProgram(renderer, scene);

@@ -148,12 +148,39 @@ function measure(scene: Scene, hand: string | null, frames: number): GpuBenchRes
   };
 }
 
+/** Frame times (ms) per program and round of `interleaved`, in the order the programs were given. */
+export type InterleavedTimes = Record<string, number[]>;
+
+/**
+ * Renders several programs of one scene in turn (A B C A B C …) for `rounds` rounds, all with the
+ * round's jitter, after one warm-up frame each: machine-load drift then hits every program alike,
+ * so the ratios of their times are trustworthy even where the absolute times are not.
+ */
+function interleaved(
+  scene: Scene,
+  programs: Record<string, { vertex: string; fragment: string; uniforms: readonly UniformEntry[] }>,
+  rounds: number,
+): InterleavedTimes {
+  const built = Object.entries(programs).map(
+    ([name, p]) => [name, build(p.vertex, p.fragment, p.uniforms, scene.view)] as const,
+  );
+  const times: InterleavedTimes = {};
+  for (const [name, b] of built) {
+    drawFrame(b, 0, scene.view);
+    times[name] = [];
+  }
+  for (let r = 0; r < rounds; r++) {
+    for (const [name, b] of built) times[name].push(drawFrame(b, r + 1, scene.view));
+  }
+  return times;
+}
+
 function renderer(): string {
   const info = gl.getExtension('WEBGL_debug_renderer_info');
   return String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
 }
 
-const bench = { measure, renderer };
+const bench = { measure, renderer, interleaved };
 declare global {
   interface Window {
     kfBench: typeof bench;

@@ -115,8 +115,13 @@ describe('save and open', () => {
 
   it('pasting a whole document opens it (copied nodes still paste as nodes)', async () => {
     const text = example('kaleidoscope-442');
+    await page.evaluate(() => (document.activeElement as HTMLElement | null)?.blur());
+    await page.keyboard.press('Control+a');
+    await page.keyboard.press('Control+c'); // nodes on the editor's clipboard must not paste too
     await pasteText(page, text);
     await expect.poll(() => currentDoc(page)).toEqual(JSON.parse(text));
+    await page.waitForTimeout(400);
+    expect(await currentDoc(page)).toEqual(JSON.parse(text));
     expect(await page.getByRole('button', { name: 'Undo' }).getAttribute('title')).toContain('pasted graph');
   });
 });
@@ -207,8 +212,8 @@ describe('PNG export', () => {
     console.info(
       `4096² export: ${seconds.toFixed(1)} s; vs live 512²: mean |Δ| ${inner.toFixed(2)} (centre pixels), ${blocks.toFixed(2)} (8×8 blocks)`,
     );
-    expect(inner).toBeLessThan(2);
-    expect(blocks).toBeLessThan(3);
+    expect(inner).toBeLessThan(2.5); // one pixel of misalignment gives about 10
+    expect(blocks).toBeLessThan(2);
 
     const embedded = extractGraph(bytes);
     expect(embedded.ok && embedded.doc).toEqual(doc);
@@ -257,7 +262,7 @@ describe('classroom and embed', () => {
     await p.getByTestId('present-mode').waitFor();
     expect(await p.locator('.react-flow').count()).toBe(0);
     const steps = p.getByTestId('step-now');
-    const total = Number((await steps.textContent()).match(/Step (\d+) \/ (\d+)/)![2]);
+    const total = Number(((await steps.textContent()) ?? '').match(/Step (\d+) \/ (\d+)/)![2]);
     expect(total).toBeGreaterThan(3);
     expect(await steps.textContent()).toContain(`Step ${total} / ${total}`);
     await p.screenshot({ path: join(shots, 'io-present-full.png') });
@@ -271,7 +276,10 @@ describe('classroom and embed', () => {
     for (let i = 1; i <= total; i++) {
       await p.keyboard.press('ArrowRight');
       counts.push(await drawn());
-      if (i === 3) await p.screenshot({ path: join(shots, 'io-present-step3.png') });
+      if (i === 3) {
+        await p.waitForTimeout(500); // the picture fades out while the construction is built
+        await p.screenshot({ path: join(shots, 'io-present-step3.png') });
+      }
     }
     expect(counts[0]).toBeLessThan(all);
     expect(counts.at(-1)).toBe(all);

@@ -94,17 +94,18 @@ export async function dragNode(
   const x = box.x + Math.min(40, box.width / 2);
   const y = box.y + box.height / 2;
   await page.mouse.move(x, y);
-  await page.evaluate(() => {
-    const w = window as unknown as { __kfFrames: number[]; __kfFramesOn: boolean };
-    w.__kfFrames = [];
-    w.__kfFramesOn = true;
-    const loop = (t: number) => {
-      if (!w.__kfFramesOn) return;
-      w.__kfFrames.push(t);
+  // A string, not a function: tsx (the bench runner) would wrap a named inner function in a
+  // `__name` helper that does not exist in the page.
+  await page.evaluate(`(() => {
+    window.__kfFrames = [];
+    window.__kfFramesOn = true;
+    const loop = (t) => {
+      if (!window.__kfFramesOn) return;
+      window.__kfFrames.push(t);
       requestAnimationFrame(loop);
     };
     requestAnimationFrame(loop);
-  });
+  })()`);
   await page.mouse.down();
   for (let i = 1; i <= steps; i++) await page.mouse.move(x + (dx * i) / steps, y + (dy * i) / steps);
   const frames = await page.evaluate(() =>

@@ -53,9 +53,10 @@ describe('editor at scale', () => {
     });
     const drag = await dragNode(page, id, 160, 90);
     expect(drag.frameMs.length).toBeGreaterThan(0);
-    // The document moved by the pointer's travel in graph units (rounded to whole units).
-    expect(drag.to[0] - drag.from[0]).toBeCloseTo(160 / zoom, -1);
-    expect(drag.to[1] - drag.from[1]).toBeCloseTo(90 / zoom, -1);
+    // The document moved by the pointer's travel in graph units (React Flow starts the drag a few
+    // pixels in, past its drag threshold, and positions are rounded to whole units).
+    expect(Math.abs(drag.to[0] - drag.from[0] - 160 / zoom)).toBeLessThan(16 / zoom);
+    expect(Math.abs(drag.to[1] - drag.from[1] - 90 / zoom)).toBeLessThan(16 / zoom);
     expect(await page.evaluate(() => window.__kleinflow!.store.getState().history.past.length)).toBe(
       steps + 1,
     );

@@ -88,7 +88,7 @@ describe('#line markers map compiler errors to nodes', () => {
   const program = compile(scene);
 
   it('an error inside element 2 is reported as source string 2, which lineMap names', () => {
-    const broken = program.source.replace('vec4 d0 = u_el[4];', 'vec4 d0 = oops;');
+    const broken = program.source.replace('vec4 d0 = el4;', 'vec4 d0 = oops;');
     expect(broken).not.toBe(program.source);
     const errors = validateShaders([{ name: 'broken', source: broken, stage: 'frag' }]).get('broken')!;
     const match = /ERROR: (\d+):(\d+):.*oops/.exec(errors.join('\n'));

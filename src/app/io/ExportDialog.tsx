@@ -62,7 +62,8 @@ export function ExportDialog({ viewSize, view, defaultSamples, run, onClose }: P
     setError(null);
     setProgress(0);
     try {
-      const done = await run({ width, height, samples, transparent, view }, (f) => {
+      const referenceHeight = viewSize.height * (window.devicePixelRatio || 1);
+      const done = await run({ width, height, samples, transparent, view, referenceHeight }, (f) => {
         setProgress(f);
         return !cancelled.current;
       });
@@ -152,7 +153,7 @@ export function ExportDialog({ viewSize, view, defaultSamples, run, onClose }: P
             disabled={busy}
             onChange={(e) => setSamples(clampInt(Number(e.target.value), 1, LIMITS.maxSamples))}
           />
-          <span className="kf-export__note"> per pixel (anti-aliasing; more is smoother and slower)</span>
+          <span className="kf-export__note"> per pixel (more: smoother, slower)</span>
         </span>
         <span>Background</span>
         <span className="kf-export__radios" role="radiogroup" aria-label="Background">

@@ -13,7 +13,7 @@ import { isTyping } from '../../editor/typing.ts';
 import type { OpenResult } from '../../io/document-io.ts';
 import type { EditorStore } from '../../state/store.ts';
 import type { Viewport } from '../../viewport/viewport.ts';
-import { exportGlsl, exportPng } from '../export.ts';
+import { exportGlsl, exportPng, type PngExportOptions } from '../export.ts';
 import { readDocumentFile, saveDocument } from '../files.ts';
 import type { MenuItem } from '../Menu.tsx';
 import { DropOverlay } from './DropOverlay.tsx';
@@ -143,8 +143,9 @@ export function useDocumentIo({ store, scene, load, viewport }: Options): Docume
       if (isTyping(e.target)) return;
       const result = openPastedText(e.clipboardData?.getData('text/plain') ?? '');
       if (!result) return;
+      // The editor's own paste handler still sees the event (it clears its fallback timer) and
+      // ignores it: the text is not its `kleinflow-clipboard` format.
       e.preventDefault();
-      e.stopImmediatePropagation(); // not the editor's node paste
       accept('the pasted graph', result);
     };
     window.addEventListener('dragenter', enter);
@@ -180,10 +181,10 @@ export function useDocumentIo({ store, scene, load, viewport }: Options): Docume
     { label: 'Shadertoy (.shadertoy.glsl)', hint: 'paste into Shadertoy', onSelect: () => glsl('shadertoy') },
   ];
 
-  const runExport = async (o: Parameters<typeof exportPng>[2], onProgress: (f: number) => boolean) => {
+  const runExport = async (o: PngExportOptions, onProgress: (f: number) => boolean) => {
     const v = viewport();
     if (!v) throw new Error('the WebGL2 renderer is not running');
-    const done = await exportPng(v, store.getState().doc, o, onProgress);
+    const done = await exportPng(v, store.getState().doc, currentScene.current, o, onProgress);
     if (done) say('ok', `Exported ${o.width} × ${o.height} PNG (the graph is inside it).`);
     return done;
   };

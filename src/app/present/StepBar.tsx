@@ -8,6 +8,22 @@ interface Props {
   onCount(count: number): void;
 }
 
+/** A bar-and-triangle "to the end" icon (SVG: the ⏮ ⏭ glyphs are missing from many fonts). */
+function EndIcon({ flip = false }: { flip?: boolean }) {
+  return (
+    <svg
+      viewBox="0 0 12 12"
+      width="12"
+      height="12"
+      aria-hidden="true"
+      style={flip ? { transform: 'scaleX(-1)' } : undefined}
+    >
+      <path d="M2 1.5 L8 6 L2 10.5 Z" fill="currentColor" />
+      <rect x="8.5" y="1.5" width="1.6" height="9" fill="currentColor" />
+    </svg>
+  );
+}
+
 export function StepBar({ steps, count, onCount }: Props) {
   const current = count > 0 ? steps[count - 1] : undefined;
   const go = (n: number) => onCount(Math.min(steps.length, Math.max(0, n)));
@@ -21,7 +37,7 @@ export function StepBar({ steps, count, onCount }: Props) {
         onClick={() => go(0)}
         disabled={count === 0}
       >
-        ⏮
+        <EndIcon flip />
       </button>
       <button
         type="button"
@@ -66,7 +82,7 @@ export function StepBar({ steps, count, onCount }: Props) {
         onClick={() => go(steps.length)}
         disabled={count === steps.length}
       >
-        ⏭
+        <EndIcon />
       </button>
     </nav>
   );

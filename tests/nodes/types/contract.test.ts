@@ -72,6 +72,29 @@ describe.each(registry.all.map((def) => [def.type, def] as const))('node type "%
     expect(clash, 'an input and a param share a name').toEqual([]);
   });
 
+  it('names an existing enum or toggle, with legal values and no cycle, in every when / more', () => {
+    const fields = [...Object.entries(def.inputs), ...Object.entries(def.params)];
+    for (const [name, spec] of fields) {
+      for (const cond of [spec.when, spec.more === true ? undefined : spec.more]) {
+        if (!cond) continue;
+        const control = Object.hasOwn(def.params, cond.param) ? def.params[cond.param] : undefined;
+        expect(control?.kind, `${name}: "${cond.param}" is an enum or boolean param`).toMatch(
+          /^(enum|boolean)$/,
+        );
+        expect(cond.param, `${name} depends on itself`).not.toBe(name);
+        expect(cond.is.length, `${name}: lists at least one value`).toBeGreaterThan(0);
+        const legal: readonly unknown[] = control?.kind === 'enum' ? control.options : [true, false];
+        for (const v of cond.is) expect(legal, `${name}: value ${String(v)} of "${cond.param}"`).toContain(v);
+      }
+      // following `when` from param to param ends (isFieldShown would cut a cycle, hiding a bug)
+      const seen = new Set([name]);
+      for (let c = spec.when; c; c = def.params[c.param]?.when) {
+        expect(seen.has(c.param), `${name}: a cycle of conditions through "${c.param}"`).toBe(false);
+        seen.add(c.param);
+      }
+    }
+  });
+
   it('has a migration for every version below its own', () => {
     for (let v = 1; v < def.version; v++)
       expect(typeof def.migrations?.[v], `migration ${v} → ${v + 1}`).toBe('function');

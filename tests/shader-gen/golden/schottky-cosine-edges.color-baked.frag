@@ -96,8 +96,7 @@ vec2 pixelToWorld(vec3 view, vec2 size, vec2 px, vec2 o) {
 }
 
 bool runIis(inout vec2 p, inout float s, inout int depth) {
-  for (int iteration = 0; iteration < 60; ++iteration) {
-    if (depth >= 60) break;
+  while (depth < 60) {
 #line 1 1
     { // mobius
       vec4 d0 = vec4(-1.0, 0.0, 0.6, 0.0);
@@ -127,7 +126,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
         continue;
       }
     }
-#line 131 0
+#line 130 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
@@ -135,7 +134,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   if (mobiusInside(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0))) return false;
 #line 1 2
   if (inversionInside(p, vec4(0.0, 1.6, 0.5, 0.0))) return false;
-#line 139 0
+#line 138 0
   return true;
 }
 
@@ -145,7 +144,7 @@ float sceneBoundaryDistance(vec2 p) {
   d = min(d, mobiusBoundaryDistance(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0)));
 #line 1 2
   d = min(d, inversionBoundaryDistance(p, vec4(0.0, 1.6, 0.5, 0.0)));
-#line 149 0
+#line 148 0
   return d;
 }
 

@@ -144,16 +144,21 @@ vec2 pixelToWorld(vec3 view, vec2 size, vec2 px, vec2 o) {
 }
 
 bool runIis(inout vec2 p, inout float s, inout int depth, inout int seed) {
-  for (int iteration = 0; iteration < u_maxIterations; ++iteration) {
+  vec4 el0 = u_el[0];
+  vec4 el1 = u_el[1];
+  vec4 el2 = u_el[2];
+  vec4 el3 = u_el[3];
+  vec4 el4 = u_el[4];
+  int maxIter = u_maxIterations;
+  while (depth < maxIter) {
     seed = seedAt(p);
     if (seed >= 0) return false;
-    if (depth >= u_maxIterations) break;
 #line 1 1
     { // mobius
-      vec4 d0 = u_el[0];
-      vec4 d1 = u_el[1];
-      vec4 d2 = u_el[2];
-      vec4 d3 = u_el[3];
+      vec4 d0 = el0;
+      vec4 d1 = el1;
+      vec4 d2 = el2;
+      vec4 d3 = el3;
       if (inRegion(d2, p)) {
         invertState(p, s, d0.xy, d0.z);
         invertState(p, s, d1.xy, d1.z);
@@ -168,7 +173,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth, inout int seed) {
     }
 #line 1 2
     { // inversion
-      vec4 d0 = u_el[4];
+      vec4 d0 = el4;
       float dx = p.x - d0.x;
       float dy = p.y - d0.y;
       if (!(dx * dx + dy * dy >= d0.z * d0.z)) {
@@ -177,17 +182,17 @@ bool runIis(inout vec2 p, inout float s, inout int depth, inout int seed) {
         continue;
       }
     }
-#line 181 0
+#line 186 0
     return true;
   }
   seed = seedAt(p);
   if (seed >= 0) return false;
   // depth ≥ maxIter: escaped only if no element holds p.
 #line 1 1
-  if (mobiusInside(p, u_el[0], u_el[1], u_el[2], u_el[3])) return false;
+  if (mobiusInside(p, el0, el1, el2, el3)) return false;
 #line 1 2
-  if (inversionInside(p, u_el[4])) return false;
-#line 191 0
+  if (inversionInside(p, el4)) return false;
+#line 196 0
   return true;
 }
 
@@ -197,7 +202,7 @@ float sceneBoundaryDistance(vec2 p) {
   d = min(d, mobiusBoundaryDistance(p, u_el[0], u_el[1], u_el[2], u_el[3]));
 #line 1 2
   d = min(d, inversionBoundaryDistance(p, u_el[4]));
-#line 201 0
+#line 206 0
   return d;
 }
 

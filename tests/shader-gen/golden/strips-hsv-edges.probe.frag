@@ -18,7 +18,7 @@ float stripHeight(vec4 d0, vec2 p) {
 }
 
 int foldCount(float k) {
-  return int(min(abs(k), 1.0e9));
+  return max(int(min(abs(k), 1.0e9)), 1);
 }
 
 float stripIndex(vec4 d0, vec4 d1, vec2 p) {
@@ -39,12 +39,16 @@ vec2 pixelToWorld(vec3 view, vec2 size, vec2 px, vec2 o) {
 }
 
 bool runIis(inout vec2 p, inout float s, inout int depth) {
-  for (int iteration = 0; iteration < u_maxIterations; ++iteration) {
-    if (depth >= u_maxIterations) break;
+  vec4 el0 = u_el[0];
+  vec4 el1 = u_el[1];
+  vec4 el2 = u_el[2];
+  vec4 el3 = u_el[3];
+  int maxIter = u_maxIterations;
+  while (depth < maxIter) {
 #line 1 1
     { // parallel-mirrors
-      vec4 d0 = u_el[0];
-      vec4 d1 = u_el[1];
+      vec4 d0 = el0;
+      vec4 d1 = el1;
       float D = d1.x;
       float h = stripHeight(d0, p);
       float k = floor(h / D);
@@ -58,8 +62,8 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
     }
 #line 1 2
     { // translation
-      vec4 d0 = u_el[2];
-      vec4 d1 = u_el[3];
+      vec4 d0 = el2;
+      vec4 d1 = el3;
       float k = stripIndex(d0, d1, p);
       if (k != 0.0) {
         p = vec2(p.x - k * d1.y, p.y - k * d1.z);
@@ -67,15 +71,15 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
         continue;
       }
     }
-#line 71 0
+#line 75 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
 #line 1 1
-  if (parallelMirrorsInside(p, u_el[0], u_el[1])) return false;
+  if (parallelMirrorsInside(p, el0, el1)) return false;
 #line 1 2
-  if (translationInside(p, u_el[2], u_el[3])) return false;
-#line 79 0
+  if (translationInside(p, el2, el3)) return false;
+#line 83 0
   return true;
 }
 

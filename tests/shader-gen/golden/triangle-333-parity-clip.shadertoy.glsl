@@ -51,8 +51,7 @@ vec3 toSrgb(vec3 c) {
 }
 
 bool runIis(inout vec2 p, inout float s, inout int depth) {
-  for (int iteration = 0; iteration < 100; ++iteration) {
-    if (depth >= 100) break;
+  while (depth < 100) {
     { // reflection
       vec4 d0 = vec4(0.0, 0.0, 0.0, 1.0);
       if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {

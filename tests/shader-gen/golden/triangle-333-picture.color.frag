@@ -61,11 +61,14 @@ vec2 pixelToWorld(vec3 view, vec2 size, vec2 px, vec2 o) {
 }
 
 bool runIis(inout vec2 p, inout float s, inout int depth) {
-  for (int iteration = 0; iteration < u_maxIterations; ++iteration) {
-    if (depth >= u_maxIterations) break;
+  vec4 el0 = u_el[0];
+  vec4 el1 = u_el[1];
+  vec4 el2 = u_el[2];
+  int maxIter = u_maxIterations;
+  while (depth < maxIter) {
 #line 1 1
     { // reflection
-      vec4 d0 = u_el[0];
+      vec4 d0 = el0;
       if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
         reflectState(p, d0.xy, d0.zw);
         depth += 1;
@@ -74,7 +77,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
     }
 #line 1 2
     { // reflection
-      vec4 d0 = u_el[1];
+      vec4 d0 = el1;
       if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
         reflectState(p, d0.xy, d0.zw);
         depth += 1;
@@ -83,24 +86,24 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
     }
 #line 1 3
     { // reflection
-      vec4 d0 = u_el[2];
+      vec4 d0 = el2;
       if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
         reflectState(p, d0.xy, d0.zw);
         depth += 1;
         continue;
       }
     }
-#line 94 0
+#line 97 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
 #line 1 1
-  if (reflectionInside(p, u_el[0])) return false;
+  if (reflectionInside(p, el0)) return false;
 #line 1 2
-  if (reflectionInside(p, u_el[1])) return false;
+  if (reflectionInside(p, el1)) return false;
 #line 1 3
-  if (reflectionInside(p, u_el[2])) return false;
-#line 104 0
+  if (reflectionInside(p, el2)) return false;
+#line 107 0
   return true;
 }
 

@@ -1,0 +1,86 @@
+/**
+ * Generated vs hand-written shader speed (part of `npm run bench`; run alone with
+ * `npx tsx tests/bench/shader-ratio.ts [rounds]`). For every example with a hand-written probe
+ * shader (tests/bench/hand-written/), one Chromium session renders the generated uniform probe
+ * program, the generated baked one and the hand-written one at 512², INTERLEAVED (U B H U B H …)
+ * for ROUNDS rounds, each frame ended by readPixels; prints the median frame times and the ratios
+ * uniform/hand and baked/hand (median of the per-round ratios: each round's three frames ran under
+ * the same machine load). Never fails on a time; compare ratios, not absolute times.
+ */
+import { fileURLToPath } from 'node:url';
+import { compile } from '../../shader-gen/compile.ts';
+import { exampleScene } from '../src/viewport/fixtures.ts';
+import { launchChromium } from '../support/browser.ts';
+import { bundle } from '../support/bundle.ts';
+import { HAND_WRITTEN } from './hand-written/index.ts';
+
+/** Rounds of U B H frames (at least 9 for a steady median on a shared 2-core machine). */
+const ROUNDS = 15;
+
+const median = (xs: readonly number[]) => {
+  const s = [...xs].sort((a, b) => a - b);
+  return s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
+};
+const ms = (x: number) => x.toFixed(1);
+const times = (x: number) => `${x.toFixed(2)}×`;
+
+const HEADER = ['example', 'uniform ms', 'baked ms', 'hand ms', 'uniform/hand', 'baked/hand'];
+
+function printTable(rows: string[][]): void {
+  const widths = HEADER.map((h, i) => Math.max(h.length, ...rows.map((r) => r[i].length)));
+  const line = (cells: string[]) =>
+    cells.map((c, i) => (i === 0 ? c.padEnd(widths[i]) : c.padStart(widths[i]))).join('  ');
+  console.log(line(HEADER));
+  console.log(widths.map((w) => '-'.repeat(w)).join('  '));
+  for (const r of rows) console.log(line(r));
+}
+
+export async function run(rounds = ROUNDS): Promise<void> {
+  const script = await bundle(fileURLToPath(new URL('./gpu-page.ts', import.meta.url)));
+  const browser = await launchChromium();
+  try {
+    const page = await browser.newPage();
+    await page.setContent('<!doctype html><canvas width="1" height="1"></canvas>');
+    await page.addScriptTag({ content: script });
+    console.log(
+      `\nGenerated vs hand-written probe shader, 512², ${rounds} interleaved rounds (U B H …), ` +
+        'each frame ended by readPixels; ratios are medians of the per-round ratios.\n',
+    );
+    const rows: string[][] = [];
+    for (const { example, source } of HAND_WRITTEN) {
+      const scene = exampleScene(example);
+      const uniform = compile(scene, { variant: 'probe' });
+      const baked = compile(scene, { variant: 'probe', baked: true });
+      const programs = {
+        uniform: { vertex: uniform.vertexSource, fragment: uniform.source, uniforms: uniform.uniforms },
+        baked: { vertex: baked.vertexSource, fragment: baked.source, uniforms: baked.uniforms },
+        hand: { vertex: uniform.vertexSource, fragment: source, uniforms: [] },
+      };
+      const t = await page.evaluate(([s, p, n]) => window.kfBench.interleaved(s, p, n), [
+        scene,
+        programs,
+        rounds,
+      ] as const);
+      const perRound = (name: 'uniform' | 'baked') => median(t[name].map((x, r) => x / t.hand[r]));
+      rows.push([
+        example,
+        ms(median(t.uniform)),
+        ms(median(t.baked)),
+        ms(median(t.hand)),
+        times(perRound('uniform')),
+        times(perRound('baked')),
+      ]);
+    }
+    printTable(rows);
+  } finally {
+    await browser.close();
+  }
+}
+
+if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {
+  const rounds = Number(process.argv[2] ?? ROUNDS);
+  run(Number.isInteger(rounds) && rounds >= 1 ? rounds : ROUNDS).catch((e) => {
+    console.error(e);
+    process.exitCode = 1;
+  });
+}

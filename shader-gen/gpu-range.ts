@@ -24,12 +24,28 @@ function firstBeyond(value: unknown, max: number): number | undefined {
   return undefined;
 }
 
-/** The first element (then the clip disk) holding a number beyond LIMITS.gpuMaxMagnitude. */
+/**
+ * The first scene value beyond LIMITS.gpuMaxMagnitude that becomes a uniform: elements, then the
+ * tile's seeds, picture placement and inner circle, then the clip disk. Picture data (`src`) holds no
+ * numbers that reach the shader, so only the geometric fields are checked.
+ */
 export function firstOutOfGpuRange(scene: Scene, max: number = LIMITS.gpuMaxMagnitude): OutOfRange | null {
   for (const e of scene.elements) {
     const value = firstBeyond(e, max);
     if (value !== undefined) return { nodeId: e.nodeId, value };
   }
+  const { tile } = scene;
+  for (const seed of tile.seeds ?? []) {
+    const value =
+      seed.kind === 'disk'
+        ? firstBeyond([seed.c, seed.r], max)
+        : firstBeyond([seed.center, seed.width, seed.height, seed.rotation], max);
+    if (value !== undefined) return { nodeId: seed.nodeId, value };
+  }
+  const coloring = tile.coloring;
+  const placement = coloring.mode === 'image' ? [coloring.center, coloring.size, coloring.rotation] : [];
+  const tileValue = firstBeyond([placement, tile.inner ?? null], max);
+  if (tileValue !== undefined) return { nodeId: tile.nodeId || undefined, value: tileValue };
   const clip = firstBeyond(scene.clip, max);
   if (clip !== undefined) return { nodeId: scene.renderNodeId ?? undefined, value: clip };
   return null;

@@ -1,5 +1,6 @@
 /**
- * GLSL twin of inversion.ts. Packing (1 vec4): d0 = (c.x, c.y, r, 0).
+ * GLSL twin of inversion.ts. Packing (1 vec4): d0 = (c.x, c.y, r, r²): r² computed once on the CPU
+ * (in float64, then rounded like every uniform) rather than every pass of the loop.
  */
 import type { InversionElement } from '../../nodes/core/scene.ts';
 import { type GlslElementTwin, glslStepBlock } from '../glsl/element-twin.ts';
@@ -8,22 +9,17 @@ import { glslFunction } from '../glsl/snippet.ts';
 import { CENTRE_GUARD } from './inversion.ts';
 
 /**
- * invertState: p ← c + r²(p−c)/|p−c|², s ← s·r²/|p−c|² (same operations, same order); the
- * centre itself goes to c + (r·G, 0) with scale G² (inversion.ts CENTRE_GUARD).
+ * invertState(p, s, c, r²): p ← c + k(p−c), s ← s·k with k = min(r²/|p−c|², G²) (same operations,
+ * same order; the cap keeps the centre finite, see inversion.ts CENTRE_GUARD). r²/0 is +∞ in GLSL ES
+ * 3.00 float arithmetic on IEEE hardware, and min(+∞, G²) = G².
  */
 export const invertStateGlsl = glslFunction(
   'invertState',
   `
-void invertState(inout vec2 p, inout float s, vec2 c, float r) {
+void invertState(inout vec2 p, inout float s, vec2 c, float r2) {
   float dx = p.x - c.x;
   float dy = p.y - c.y;
-  float d2 = dx * dx + dy * dy;
-  if (d2 == 0.0) {
-    p = vec2(c.x + r * ${floatLiteral(CENTRE_GUARD)}, c.y);
-    s *= ${floatLiteral(CENTRE_GUARD * CENTRE_GUARD)};
-    return;
-  }
-  float k = (r * r) / d2;
+  float k = min(r2 / (dx * dx + dy * dy), ${floatLiteral(CENTRE_GUARD * CENTRE_GUARD)});
   p = vec2(c.x + dx * k, c.y + dy * k);
   s *= k;
 }`,
@@ -32,13 +28,13 @@ void invertState(inout vec2 p, inout float s, vec2 c, float r) {
 export const inversionGlsl: GlslElementTwin<InversionElement> = {
   kind: 'inversion',
   vec4s: 1,
-  pack: (e) => [e.c[0], e.c[1], e.r, 0],
+  pack: (e) => [e.c[0], e.c[1], e.r, e.r * e.r],
   step: glslStepBlock(
     `
 float dx = p.x - d0.x;
 float dy = p.y - d0.y;
-if (!(dx * dx + dy * dy >= d0.z * d0.z)) {
-  invertState(p, s, d0.xy, d0.z);
+if (!(dx * dx + dy * dy >= d0.w)) {
+  invertState(p, s, d0.xy, d0.w);
   depth += 1;
   continue;
 }`,
@@ -50,7 +46,7 @@ if (!(dx * dx + dy * dy >= d0.z * d0.z)) {
 bool inversionInside(vec2 p, vec4 d0) {
   float dx = p.x - d0.x;
   float dy = p.y - d0.y;
-  return dx * dx + dy * dy < d0.z * d0.z;
+  return dx * dx + dy * dy < d0.w;
 }`,
   ),
   boundaryDistance: glslFunction(

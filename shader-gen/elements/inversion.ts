@@ -3,9 +3,11 @@ import type { InversionElement } from '../../nodes/core/scene.ts';
 import type { ElementKind, IisState } from './element-kind.ts';
 
 /**
- * The point exactly at an inversion centre maps to ∞ (r²/0): it goes instead to the far point
- * c + (r·G, 0) with scale G², as if it lay r/G to the right of c (G = CENTRE_GUARD), so the run
- * stays finite and the GPU twin does the same.
+ * The point at an inversion centre maps to ∞ (r²/0), which no float can carry: the scale factor
+ * k = r²/|p−c|² is capped at G² (G = CENTRE_GUARD), so the run stays finite. Only points within
+ * r/G of the centre feel the cap; the centre itself stays where it is (it never escapes: the run
+ * ends at maxIterations). The GPU twin does the same with one `min`, where a branch for the centre
+ * cost SwiftShader a third of an inversion-heavy frame (tests/bench/shader-ratio.ts).
  */
 export const CENTRE_GUARD = 1e9;
 
@@ -14,13 +16,8 @@ export function invertState(st: IisState, cx: number, cy: number, r: number): vo
   const dx = st.x - cx;
   const dy = st.y - cy;
   const d2 = dx * dx + dy * dy;
-  if (d2 === 0) {
-    st.x = cx + r * CENTRE_GUARD;
-    st.y = cy;
-    st.s *= CENTRE_GUARD * CENTRE_GUARD;
-    return;
-  }
-  const k = (r * r) / d2;
+  // d2 = 0 gives ∞ (r > 0), which the cap turns into G².
+  const k = Math.min((r * r) / d2, CENTRE_GUARD * CENTRE_GUARD);
   st.x = cx + dx * k;
   st.y = cy + dy * k;
   st.s *= k;

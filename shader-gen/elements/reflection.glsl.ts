@@ -1,5 +1,7 @@
 /**
- * GLSL twin of reflection.ts. Packing (1 vec4): d0 = (q.x, q.y, n.x, n.y), n a unit normal.
+ * GLSL twin of reflection.ts. Packing (1 vec4): d0 = (q.x, q.y, n.x, n.y), n a unit normal. The
+ * step reuses the side test's (p−q)·n for the reflection (reflectState's operations, computed
+ * once: the same value the test saw).
  */
 import type { ReflectionElement } from '../../nodes/core/scene.ts';
 import { type GlslElementTwin, glslStepBlock } from '../glsl/element-twin.ts';
@@ -21,12 +23,13 @@ export const reflectionGlsl: GlslElementTwin<ReflectionElement> = {
   pack: (e) => [e.q[0], e.q[1], e.n[0], e.n[1]],
   step: glslStepBlock(
     `
-if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
-  reflectState(p, d0.xy, d0.zw);
+float h = (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w;
+if (!(h >= 0.0)) {
+  h *= 2.0;
+  p = vec2(p.x - h * d0.z, p.y - h * d0.w);
   depth += 1;
   continue;
 }`,
-    [reflectStateGlsl],
   ),
   inside: glslFunction(
     'reflectionInside',

@@ -148,6 +148,28 @@ describe('editor', () => {
     await expect.poll(() => field.inputValue()).toBe(before);
   });
 
+  it("shows only the tile's fields for its colouring mode; rare settings fold under More", async () => {
+    const tile = nodeEl(page, 't');
+    const labels = () => tile.locator('.kf-field__label, .kf-row__label').allTextContents();
+    const mode = tile.locator('select[aria-label="colouring"]');
+    const before = await mode.inputValue();
+    await mode.selectOption('cosine');
+    await expect.poll(labels).toContain('palette a');
+    expect(await labels()).not.toContain('hue start');
+    expect(await labels()).not.toContain('seeds only'); // folded under More
+    await mode.selectOption('limit-set');
+    await expect.poll(labels).toContain('limit glow px');
+    expect(await labels()).not.toContain('palette a');
+    await tile.getByRole('button', { name: 'more' }).click();
+    await expect.poll(labels).toContain('seeds only');
+    await tile.getByRole('button', { name: 'less' }).click();
+    await expect.poll(labels).not.toContain('seeds only');
+    // Hidden fields keep their values: two undos give the original mode and its rows back.
+    await page.keyboard.press('Control+z');
+    await page.keyboard.press('Control+z');
+    await expect.poll(() => mode.inputValue()).toBe(before);
+  });
+
   it('refuses an invalid connection, dimming the ports that cannot take it', async () => {
     const edges = await edgeCount(page);
     const from = handle(page, 't', 'out', 'tile');

@@ -92,6 +92,7 @@ describe('save and open', () => {
     expect(text).toContain('nodes[0].position');
     expect(text).toContain('edges[0].from');
     expect(text).toContain('your graph is unchanged');
+    await page.screenshot({ path: join(shots, 'io-open-report.png') });
     expect(await currentDoc(page)).toEqual(before);
     await report(page).getByRole('button', { name: 'Dismiss' }).click();
     await openViaPicker(page, 'notes.txt', Buffer.from('hello'), 'text/plain');
@@ -108,6 +109,7 @@ describe('save and open', () => {
       .poll(async () => ((await currentDoc(page)) as { nodes: unknown[] }).nodes.length)
       .toBeGreaterThan(0);
     expect(await page.getByTestId('drop-overlay').count()).toBe(0);
+    await page.screenshot({ path: join(shots, 'io-flower-drop.png') });
     expect(await page.getByRole('button', { name: 'Undo' }).getAttribute('title')).toMatch(
       /open .*triangle\.json/,
     );
@@ -240,6 +242,9 @@ function meanDiff(a: Rgba, b: Rgba, where: (x: number, y: number) => boolean): n
   return sum / n;
 }
 
+/** Present/embed have no status line: wait for the canvas to hold a frame (a short settle). */
+const waitForPicture = (p: Page) => p.waitForTimeout(1500);
+
 const XSS = '<img src=x onerror=alert(1)>';
 const GLSL = '}; void main(){ #define X';
 
@@ -297,6 +302,8 @@ describe('classroom and embed', () => {
     await p.getByTestId('embed-mode').waitFor();
     expect(await p.locator('.react-flow, .kf-topbar, .kf-steps').count()).toBe(0);
     expect(await p.getByRole('link', { name: 'Open in Kleinflow' }).getAttribute('href')).toMatch(/#g=/);
+    await waitForPicture(p);
+    await p.screenshot({ path: join(shots, 'io-embed.png') });
     await p.close();
   });
 

@@ -17,6 +17,8 @@ interface Props {
   readonly viewSize: Size;
   readonly view: View;
   readonly defaultSamples: number;
+  /** The tile's edge width in pixels (0: no edges), to say how the export widens it. */
+  readonly edgeWidth: number;
   /** Renders and downloads; resolves false when cancelled. `onProgress` returning false cancels. */
   run(o: PngExportOptions, onProgress: (f: number) => boolean): Promise<boolean>;
   onClose(): void;
@@ -34,7 +36,7 @@ const PRESETS: readonly { label: string; size?: Size }[] = [
 
 const clampInt = (v: number, lo: number, hi: number) => Math.min(hi, Math.max(lo, Math.round(v) || lo));
 
-export function ExportDialog({ viewSize, view, defaultSamples, run, onClose }: Props) {
+export function ExportDialog({ viewSize, view, defaultSamples, edgeWidth, run, onClose }: Props) {
   const ref = useRef<HTMLDialogElement>(null);
   const [width, setWidth] = useState(Math.max(1, Math.round(viewSize.width)));
   const [height, setHeight] = useState(Math.max(1, Math.round(viewSize.height)));
@@ -56,13 +58,15 @@ export function ExportDialog({ viewSize, view, defaultSamples, run, onClose }: P
   });
   const megabytes = Math.ceil((width * height * 4) / 2 ** 20);
   const busy = progress !== null;
+  // Tile edges are sized in device pixels of the live view.
+  const referenceHeight = viewSize.height * (window.devicePixelRatio || 1);
+  const edgeFactor = height / referenceHeight;
 
   const start = async () => {
     cancelled.current = false;
     setError(null);
     setProgress(0);
     try {
-      const referenceHeight = viewSize.height * (window.devicePixelRatio || 1);
       const done = await run({ width, height, samples, transparent, view, referenceHeight }, (f) => {
         setProgress(f);
         return !cancelled.current;
@@ -179,6 +183,12 @@ export function ExportDialog({ viewSize, view, defaultSamples, run, onClose }: P
           </label>
         </span>
       </div>
+      {edgeWidth > 0 && Math.abs(edgeFactor - 1) > 0.01 && (
+        <p className="kf-export__note">
+          Tile edges are drawn {(edgeWidth * edgeFactor).toFixed(1)} px wide ({edgeWidth} px ×{' '}
+          {edgeFactor.toFixed(2)}) so the picture looks like the view.
+        </p>
+      )}
       {busy && (
         <div className="kf-export__progress">
           <progress max={1} value={progress} aria-label="Export progress" />

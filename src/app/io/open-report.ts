@@ -19,7 +19,12 @@ const SOURCE_NAME: Record<OpenSource, string> = {
   'share-link': 'shared link',
 };
 
-const item = (d: Diagnostic) => ({ path: d.path ?? '(document)', text: d.message, code: d.code });
+/** One line per problem; a message that already starts with its path does not repeat it. */
+function item(d: Diagnostic) {
+  const path = d.path ?? '(document)';
+  const text = d.message.startsWith(`${path}: `) ? d.message.slice(path.length + 2) : d.message;
+  return { path, text, code: d.code };
+}
 
 /** The report for `result` from `what` (a file name, "the clipboard", "the link"); null when nothing to say. */
 export function openReport(what: string, result: OpenResult): OpenReport | null {

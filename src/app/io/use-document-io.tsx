@@ -199,6 +199,7 @@ export function useDocumentIo({ store, scene, load, viewport }: Options): Docume
           viewSize={renderSize()}
           view={store.getState().doc.view}
           defaultSamples={Math.max(scene.samples, 16)}
+          edgeWidth={scene.tile.edgeWidth}
           run={runExport}
           onClose={() => setExporting(false)}
         />

@@ -21,13 +21,7 @@ bool inRegion(vec4 g, vec2 p) {
 void invertState(inout vec2 p, inout float s, vec2 c, float r) {
   float dx = p.x - c.x;
   float dy = p.y - c.y;
-  float d2 = dx * dx + dy * dy;
-  if (d2 == 0.0) {
-    p = vec2(c.x + r * 1000000000.0, c.y);
-    s *= 1000000000000000000.0;
-    return;
-  }
-  float k = (r * r) / d2;
+  float k = min((r * r) / (dx * dx + dy * dy), 1000000000000000000.0);
   p = vec2(c.x + dx * k, c.y + dy * k);
   s *= k;
 }
@@ -126,7 +120,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
         continue;
       }
     }
-#line 130 0
+#line 124 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
@@ -134,7 +128,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   if (mobiusInside(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0))) return false;
 #line 1 2
   if (inversionInside(p, vec4(0.0, 1.6, 0.5, 0.0))) return false;
-#line 138 0
+#line 132 0
   return true;
 }
 
@@ -144,7 +138,7 @@ float sceneBoundaryDistance(vec2 p) {
   d = min(d, mobiusBoundaryDistance(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0)));
 #line 1 2
   d = min(d, inversionBoundaryDistance(p, vec4(0.0, 1.6, 0.5, 0.0)));
-#line 148 0
+#line 142 0
   return d;
 }
 

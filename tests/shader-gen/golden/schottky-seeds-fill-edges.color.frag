@@ -41,13 +41,7 @@ bool inRegion(vec4 g, vec2 p) {
 void invertState(inout vec2 p, inout float s, vec2 c, float r) {
   float dx = p.x - c.x;
   float dy = p.y - c.y;
-  float d2 = dx * dx + dy * dy;
-  if (d2 == 0.0) {
-    p = vec2(c.x + r * 1000000000.0, c.y);
-    s *= 1000000000000000000.0;
-    return;
-  }
-  float k = (r * r) / d2;
+  float k = min((r * r) / (dx * dx + dy * dy), 1000000000000000000.0);
   p = vec2(c.x + dx * k, c.y + dy * k);
   s *= k;
 }
@@ -182,7 +176,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth, inout int seed) {
         continue;
       }
     }
-#line 186 0
+#line 180 0
     return true;
   }
   seed = seedAt(p);
@@ -192,7 +186,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth, inout int seed) {
   if (mobiusInside(p, el0, el1, el2, el3)) return false;
 #line 1 2
   if (inversionInside(p, el4)) return false;
-#line 196 0
+#line 190 0
   return true;
 }
 
@@ -202,7 +196,7 @@ float sceneBoundaryDistance(vec2 p) {
   d = min(d, mobiusBoundaryDistance(p, u_el[0], u_el[1], u_el[2], u_el[3]));
 #line 1 2
   d = min(d, inversionBoundaryDistance(p, u_el[4]));
-#line 206 0
+#line 200 0
   return d;
 }
 

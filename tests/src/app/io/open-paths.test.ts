@@ -58,6 +58,7 @@ describe('open report', () => {
     expect(result.ok ? 0 : result.diagnostics.length).toBe(report.items.length);
     expect(report.items.every((i) => i.path.length > 0)).toBe(true);
     expect(report.items.some((i) => i.path.startsWith('nodes[0]'))).toBe(true);
+    expect(report.items.every((i) => !i.text.startsWith(`${i.path}:`))).toBe(true);
   });
 
   it('says nothing after a clean open', () => {

@@ -9,18 +9,19 @@ import { glslFunction } from '../glsl/snippet.ts';
 import { CENTRE_GUARD } from './inversion.ts';
 
 /**
- * invertState(p, s, c, r²): p ← c + k(p−c), s ← s·k with k = min(r²/|p−c|², G²) (same operations,
- * same order; the cap keeps the centre finite, see inversion.ts CENTRE_GUARD). r²/0 is +∞ in GLSL ES
- * 3.00 float arithmetic on IEEE hardware, and min(+∞, G²) = G².
+ * invertState(p, s, c, r, r²): p ← c + k(p−c), s ← s·k with k = min(r²/|p−c|², G²), the centre
+ * itself to c + (r·G, 0) (same operations, same order as inversion.ts; r²/0 is +∞ in IEEE
+ * arithmetic and min(+∞, G²) = G²). No branch: see inversion.ts CENTRE_GUARD.
  */
 export const invertStateGlsl = glslFunction(
   'invertState',
   `
-void invertState(inout vec2 p, inout float s, vec2 c, float r2) {
+void invertState(inout vec2 p, inout float s, vec2 c, float r, float r2) {
   float dx = p.x - c.x;
   float dy = p.y - c.y;
-  float k = min(r2 / (dx * dx + dy * dy), ${floatLiteral(CENTRE_GUARD * CENTRE_GUARD)});
-  p = vec2(c.x + dx * k, c.y + dy * k);
+  float d2 = dx * dx + dy * dy;
+  float k = min(r2 / d2, ${floatLiteral(CENTRE_GUARD * CENTRE_GUARD)});
+  p = vec2(d2 == 0.0 ? c.x + r * ${floatLiteral(CENTRE_GUARD)} : c.x + dx * k, c.y + dy * k);
   s *= k;
 }`,
 );
@@ -34,7 +35,7 @@ export const inversionGlsl: GlslElementTwin<InversionElement> = {
 float dx = p.x - d0.x;
 float dy = p.y - d0.y;
 if (!(dx * dx + dy * dy >= d0.w)) {
-  invertState(p, s, d0.xy, d0.w);
+  invertState(p, s, d0.xy, d0.z, d0.w);
   depth += 1;
   continue;
 }`,

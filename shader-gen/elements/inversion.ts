@@ -3,11 +3,12 @@ import type { InversionElement } from '../../nodes/core/scene.ts';
 import type { ElementKind, IisState } from './element-kind.ts';
 
 /**
- * The point at an inversion centre maps to ∞ (r²/0), which no float can carry: the scale factor
- * k = r²/|p−c|² is capped at G² (G = CENTRE_GUARD), so the run stays finite. Only points within
- * r/G of the centre feel the cap; the centre itself stays where it is (it never escapes: the run
- * ends at maxIterations). The GPU twin does the same with one `min`, where a branch for the centre
- * cost SwiftShader a third of an inversion-heavy frame (tests/bench/shader-ratio.ts).
+ * The point exactly at an inversion centre maps to ∞ (r²/0): it goes instead to the far point
+ * c + (r·G, 0) with scale G², as if it lay r/G to the right of c (G = CENTRE_GUARD), so the run
+ * stays finite and the GPU twin does the same. The scale factor is capped at G² (it only bites
+ * within r/G of the centre, where it keeps the run finite too): written as min and a choice of x
+ * rather than an early return, the GPU twin needs no branch, which costs SwiftShader about a third
+ * of an inversion-heavy frame (tests/bench/shader-ratio.ts).
  */
 export const CENTRE_GUARD = 1e9;
 
@@ -16,9 +17,9 @@ export function invertState(st: IisState, cx: number, cy: number, r: number): vo
   const dx = st.x - cx;
   const dy = st.y - cy;
   const d2 = dx * dx + dy * dy;
-  // d2 = 0 gives ∞ (r > 0), which the cap turns into G².
+  // k = r²/|p−c|² ≤ G²; at the centre r²/0 = ∞ becomes G², and dy·k = 0.
   const k = Math.min((r * r) / d2, CENTRE_GUARD * CENTRE_GUARD);
-  st.x = cx + dx * k;
+  st.x = d2 === 0 ? cx + r * CENTRE_GUARD : cx + dx * k;
   st.y = cy + dy * k;
   st.s *= k;
 }

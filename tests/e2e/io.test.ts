@@ -194,6 +194,18 @@ describe('PNG export', () => {
     await dialog.getByLabel('Size').selectOption({ label: '4096 × 4096' });
     await dialog.getByLabel('Samples').fill('4');
     await page.screenshot({ path: join(shots, 'io-export-dialog.png') });
+    // Cancel stops the tiled render: no download, the dialog is ready again.
+    let downloads = 0;
+    const count = () => downloads++;
+    page.on('download', count);
+    await dialog.getByRole('button', { name: /^Export 4096/ }).click();
+    await dialog.getByRole('progressbar').waitFor();
+    await page.screenshot({ path: join(shots, 'io-export-progress.png') });
+    await dialog.getByRole('button', { name: 'Cancel' }).click();
+    await dialog.getByRole('button', { name: /^Export 4096/ }).waitFor();
+    page.off('download', count);
+    expect(downloads).toBe(0);
+
     const started = Date.now();
     const [download] = await Promise.all([
       page.waitForEvent('download', { timeout: 120_000 }),

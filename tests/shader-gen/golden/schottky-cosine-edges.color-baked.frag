@@ -18,11 +18,12 @@ bool inRegion(vec4 g, vec2 p) {
   return g.w > 0.5 ? d2 > r2 : d2 < r2;
 }
 
-void invertState(inout vec2 p, inout float s, vec2 c, float r) {
+void invertState(inout vec2 p, inout float s, vec2 c, float r, float r2) {
   float dx = p.x - c.x;
   float dy = p.y - c.y;
-  float k = min((r * r) / (dx * dx + dy * dy), 1000000000000000000.0);
-  p = vec2(c.x + dx * k, c.y + dy * k);
+  float d2 = dx * dx + dy * dy;
+  float k = min(r2 / d2, 1000000000000000000.0);
+  p = vec2(d2 == 0.0 ? c.x + r * 1000000000.0 : c.x + dx * k, c.y + dy * k);
   s *= k;
 }
 
@@ -41,7 +42,7 @@ float mobiusBoundaryDistance(vec2 p, vec4 d0, vec4 d1, vec4 d2, vec4 d3) {
 bool inversionInside(vec2 p, vec4 d0) {
   float dx = p.x - d0.x;
   float dy = p.y - d0.y;
-  return dx * dx + dy * dy < d0.z * d0.z;
+  return dx * dx + dy * dy < d0.w;
 }
 
 float inversionBoundaryDistance(vec2 p, vec4 d0) {
@@ -98,37 +99,37 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
       vec4 d2 = vec4(-1.0, 0.0, 0.6, 0.0);
       vec4 d3 = vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0);
       if (inRegion(d2, p)) {
-        invertState(p, s, d0.xy, d0.z);
-        invertState(p, s, d1.xy, d1.z);
+        invertState(p, s, d0.xy, d0.z, d0.z * d0.z);
+        invertState(p, s, d1.xy, d1.z, d1.z * d1.z);
         depth += 1;
         continue;
       } else if (inRegion(d3, p)) {
-        invertState(p, s, d1.xy, d1.z);
-        invertState(p, s, d0.xy, d0.z);
+        invertState(p, s, d1.xy, d1.z, d1.z * d1.z);
+        invertState(p, s, d0.xy, d0.z, d0.z * d0.z);
         depth += 1;
         continue;
       }
     }
 #line 1 2
     { // inversion
-      vec4 d0 = vec4(0.0, 1.6, 0.5, 0.0);
+      vec4 d0 = vec4(0.0, 1.6, 0.5, 0.25);
       float dx = p.x - d0.x;
       float dy = p.y - d0.y;
-      if (!(dx * dx + dy * dy >= d0.z * d0.z)) {
-        invertState(p, s, d0.xy, d0.z);
+      if (!(dx * dx + dy * dy >= d0.w)) {
+        invertState(p, s, d0.xy, d0.z, d0.w);
         depth += 1;
         continue;
       }
     }
-#line 124 0
+#line 125 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
 #line 1 1
   if (mobiusInside(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0))) return false;
 #line 1 2
-  if (inversionInside(p, vec4(0.0, 1.6, 0.5, 0.0))) return false;
-#line 132 0
+  if (inversionInside(p, vec4(0.0, 1.6, 0.5, 0.25))) return false;
+#line 133 0
   return true;
 }
 
@@ -137,8 +138,8 @@ float sceneBoundaryDistance(vec2 p) {
 #line 1 1
   d = min(d, mobiusBoundaryDistance(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0)));
 #line 1 2
-  d = min(d, inversionBoundaryDistance(p, vec4(0.0, 1.6, 0.5, 0.0)));
-#line 142 0
+  d = min(d, inversionBoundaryDistance(p, vec4(0.0, 1.6, 0.5, 0.25)));
+#line 143 0
   return d;
 }
 

@@ -38,11 +38,12 @@ bool inRegion(vec4 g, vec2 p) {
   return g.w > 0.5 ? d2 > r2 : d2 < r2;
 }
 
-void invertState(inout vec2 p, inout float s, vec2 c, float r) {
+void invertState(inout vec2 p, inout float s, vec2 c, float r, float r2) {
   float dx = p.x - c.x;
   float dy = p.y - c.y;
-  float k = min((r * r) / (dx * dx + dy * dy), 1000000000000000000.0);
-  p = vec2(c.x + dx * k, c.y + dy * k);
+  float d2 = dx * dx + dy * dy;
+  float k = min(r2 / d2, 1000000000000000000.0);
+  p = vec2(d2 == 0.0 ? c.x + r * 1000000000.0 : c.x + dx * k, c.y + dy * k);
   s *= k;
 }
 
@@ -61,7 +62,7 @@ float mobiusBoundaryDistance(vec2 p, vec4 d0, vec4 d1, vec4 d2, vec4 d3) {
 bool inversionInside(vec2 p, vec4 d0) {
   float dx = p.x - d0.x;
   float dy = p.y - d0.y;
-  return dx * dx + dy * dy < d0.z * d0.z;
+  return dx * dx + dy * dy < d0.w;
 }
 
 float inversionBoundaryDistance(vec2 p, vec4 d0) {
@@ -154,13 +155,13 @@ bool runIis(inout vec2 p, inout float s, inout int depth, inout int seed) {
       vec4 d2 = el2;
       vec4 d3 = el3;
       if (inRegion(d2, p)) {
-        invertState(p, s, d0.xy, d0.z);
-        invertState(p, s, d1.xy, d1.z);
+        invertState(p, s, d0.xy, d0.z, d0.z * d0.z);
+        invertState(p, s, d1.xy, d1.z, d1.z * d1.z);
         depth += 1;
         continue;
       } else if (inRegion(d3, p)) {
-        invertState(p, s, d1.xy, d1.z);
-        invertState(p, s, d0.xy, d0.z);
+        invertState(p, s, d1.xy, d1.z, d1.z * d1.z);
+        invertState(p, s, d0.xy, d0.z, d0.z * d0.z);
         depth += 1;
         continue;
       }
@@ -170,13 +171,13 @@ bool runIis(inout vec2 p, inout float s, inout int depth, inout int seed) {
       vec4 d0 = el4;
       float dx = p.x - d0.x;
       float dy = p.y - d0.y;
-      if (!(dx * dx + dy * dy >= d0.z * d0.z)) {
-        invertState(p, s, d0.xy, d0.z);
+      if (!(dx * dx + dy * dy >= d0.w)) {
+        invertState(p, s, d0.xy, d0.z, d0.w);
         depth += 1;
         continue;
       }
     }
-#line 180 0
+#line 181 0
     return true;
   }
   seed = seedAt(p);
@@ -186,7 +187,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth, inout int seed) {
   if (mobiusInside(p, el0, el1, el2, el3)) return false;
 #line 1 2
   if (inversionInside(p, el4)) return false;
-#line 190 0
+#line 191 0
   return true;
 }
 
@@ -196,7 +197,7 @@ float sceneBoundaryDistance(vec2 p) {
   d = min(d, mobiusBoundaryDistance(p, u_el[0], u_el[1], u_el[2], u_el[3]));
 #line 1 2
   d = min(d, inversionBoundaryDistance(p, u_el[4]));
-#line 200 0
+#line 201 0
   return d;
 }
 

@@ -18,11 +18,6 @@ uniform int u_maxIterations;
 uniform vec3 u_odd;
 out vec4 outColor; // linear RGB; alpha u_bgAlpha on the background
 
-void reflectState(inout vec2 p, vec2 q, vec2 n) {
-  float h = 2.0 * ((p.x - q.x) * n.x + (p.y - q.y) * n.y);
-  p = vec2(p.x - h * n.x, p.y - h * n.y);
-}
-
 bool reflectionInside(vec2 p, vec4 d0) {
   return (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w < 0.0;
 }
@@ -64,8 +59,10 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
 #line 1 1
     { // reflection
       vec4 d0 = el0;
-      if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
-        reflectState(p, d0.xy, d0.zw);
+      float h = (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w;
+      if (!(h >= 0.0)) {
+        h *= 2.0;
+        p = vec2(p.x - h * d0.z, p.y - h * d0.w);
         depth += 1;
         continue;
       }
@@ -73,8 +70,10 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
 #line 1 2
     { // reflection
       vec4 d0 = el1;
-      if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
-        reflectState(p, d0.xy, d0.zw);
+      float h = (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w;
+      if (!(h >= 0.0)) {
+        h *= 2.0;
+        p = vec2(p.x - h * d0.z, p.y - h * d0.w);
         depth += 1;
         continue;
       }
@@ -82,13 +81,15 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
 #line 1 3
     { // reflection
       vec4 d0 = el2;
-      if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
-        reflectState(p, d0.xy, d0.zw);
+      float h = (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w;
+      if (!(h >= 0.0)) {
+        h *= 2.0;
+        p = vec2(p.x - h * d0.z, p.y - h * d0.w);
         depth += 1;
         continue;
       }
     }
-#line 92 0
+#line 93 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
@@ -98,7 +99,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   if (reflectionInside(p, el1)) return false;
 #line 1 3
   if (reflectionInside(p, el2)) return false;
-#line 102 0
+#line 103 0
   return true;
 }
 

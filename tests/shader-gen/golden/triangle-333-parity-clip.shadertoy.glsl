@@ -1,10 +1,5 @@
 // Kleinflow: an Iterated Inversion System, generated from a node graph. Paste into Shadertoy.
 
-void reflectState(inout vec2 p, vec2 q, vec2 n) {
-  float h = 2.0 * ((p.x - q.x) * n.x + (p.y - q.y) * n.y);
-  p = vec2(p.x - h * n.x, p.y - h * n.y);
-}
-
 bool reflectionInside(vec2 p, vec4 d0) {
   return (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w < 0.0;
 }
@@ -54,24 +49,30 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   while (depth < 100) {
     { // reflection
       vec4 d0 = vec4(0.0, 0.0, 0.0, 1.0);
-      if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
-        reflectState(p, d0.xy, d0.zw);
+      float h = (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w;
+      if (!(h >= 0.0)) {
+        h *= 2.0;
+        p = vec2(p.x - h * d0.z, p.y - h * d0.w);
         depth += 1;
         continue;
       }
     }
     { // reflection
       vec4 d0 = vec4(0.0, 0.0, 0.8660254037844386, -0.5000000000000001);
-      if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
-        reflectState(p, d0.xy, d0.zw);
+      float h = (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w;
+      if (!(h >= 0.0)) {
+        h *= 2.0;
+        p = vec2(p.x - h * d0.z, p.y - h * d0.w);
         depth += 1;
         continue;
       }
     }
     { // reflection
       vec4 d0 = vec4(1.0, 0.0, -0.8660254037844386, -0.5000000000000001);
-      if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
-        reflectState(p, d0.xy, d0.zw);
+      float h = (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w;
+      if (!(h >= 0.0)) {
+        h *= 2.0;
+        p = vec2(p.x - h * d0.z, p.y - h * d0.w);
         depth += 1;
         continue;
       }

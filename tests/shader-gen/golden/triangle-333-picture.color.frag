@@ -19,11 +19,6 @@ uniform vec2 u_pictureRot;
 uniform sampler2D u_image0;
 out vec4 outColor; // linear RGB; alpha u_bgAlpha on the background
 
-void reflectState(inout vec2 p, vec2 q, vec2 n) {
-  float h = 2.0 * ((p.x - q.x) * n.x + (p.y - q.y) * n.y);
-  p = vec2(p.x - h * n.x, p.y - h * n.y);
-}
-
 bool reflectionInside(vec2 p, vec4 d0) {
   return (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w < 0.0;
 }
@@ -69,8 +64,10 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
 #line 1 1
     { // reflection
       vec4 d0 = el0;
-      if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
-        reflectState(p, d0.xy, d0.zw);
+      float h = (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w;
+      if (!(h >= 0.0)) {
+        h *= 2.0;
+        p = vec2(p.x - h * d0.z, p.y - h * d0.w);
         depth += 1;
         continue;
       }
@@ -78,8 +75,10 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
 #line 1 2
     { // reflection
       vec4 d0 = el1;
-      if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
-        reflectState(p, d0.xy, d0.zw);
+      float h = (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w;
+      if (!(h >= 0.0)) {
+        h *= 2.0;
+        p = vec2(p.x - h * d0.z, p.y - h * d0.w);
         depth += 1;
         continue;
       }
@@ -87,13 +86,15 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
 #line 1 3
     { // reflection
       vec4 d0 = el2;
-      if (!((p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w >= 0.0)) {
-        reflectState(p, d0.xy, d0.zw);
+      float h = (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w;
+      if (!(h >= 0.0)) {
+        h *= 2.0;
+        p = vec2(p.x - h * d0.z, p.y - h * d0.w);
         depth += 1;
         continue;
       }
     }
-#line 97 0
+#line 98 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
@@ -103,7 +104,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   if (reflectionInside(p, el1)) return false;
 #line 1 3
   if (reflectionInside(p, el2)) return false;
-#line 107 0
+#line 108 0
   return true;
 }
 

@@ -15,7 +15,7 @@ if (k != 0.0) {
   p = vec2(p.x - k * d1.x * d0.z, p.y - k * d1.x * d0.w);
   // The axis is the line through q along n: its normal is perp(n) = (−n_y, n_x).
   if (mod(k, 2.0) != 0.0) reflectState(p, d0.xy, vec2(-d0.w, d0.z));
-  depth += foldCount(k);
+  depth += foldCount(k) - 1;
   continue;
 }`,
     [stripIndexGlsl, reflectStateGlsl, foldCountGlsl],

@@ -9,21 +9,32 @@ import { glslFunction } from '../glsl/snippet.ts';
 import { CENTRE_GUARD } from './inversion.ts';
 
 /**
- * invertState(p, s, c, r, r²): p ← c + k(p−c), s ← s·k with k = min(r²/|p−c|², G²), the centre
- * itself to c + (r·G, 0) (same operations, same order as inversion.ts; r²/0 is +∞ in IEEE
- * arithmetic and min(+∞, G²) = G²). No branch: see inversion.ts CENTRE_GUARD.
+ * invertOffset(p, s, c, r, r², dx, dy, d²) with (dx, dy) = p − c and d² = dx² + dy² already at
+ * hand (the inversion's own side test computed them): k = min(r²/d², G²), p ← c + k(dx, dy) +
+ * (r·G, 0) at the centre only, s ← s·k (same operations, same order as inversion.ts; r²/0 is +∞
+ * in IEEE arithmetic and min(+∞, G²) = G²; step(d², 0) = 1 exactly when d² = 0, as d² ≥ 0). No
+ * branch and no `?:`: see inversion.ts CENTRE_GUARD.
  */
+export const invertOffsetGlsl = glslFunction(
+  'invertOffset',
+  `
+void invertOffset(inout vec2 p, inout float s, vec2 c, float r, float r2, float dx, float dy, float d2) {
+  float k = min(r2 / d2, ${floatLiteral(CENTRE_GUARD * CENTRE_GUARD)});
+  p = vec2(c.x + dx * k + step(d2, 0.0) * (r * ${floatLiteral(CENTRE_GUARD)}), c.y + dy * k);
+  s *= k;
+}`,
+);
+
+/** invertState(p, s, c, r, r²): inversion.ts invertState, for the kinds that invert unconditionally. */
 export const invertStateGlsl = glslFunction(
   'invertState',
   `
 void invertState(inout vec2 p, inout float s, vec2 c, float r, float r2) {
   float dx = p.x - c.x;
   float dy = p.y - c.y;
-  float d2 = dx * dx + dy * dy;
-  float k = min(r2 / d2, ${floatLiteral(CENTRE_GUARD * CENTRE_GUARD)});
-  p = vec2(d2 == 0.0 ? c.x + r * ${floatLiteral(CENTRE_GUARD)} : c.x + dx * k, c.y + dy * k);
-  s *= k;
+  invertOffset(p, s, c, r, r2, dx, dy, dx * dx + dy * dy);
 }`,
+  [invertOffsetGlsl],
 );
 
 export const inversionGlsl: GlslElementTwin<InversionElement> = {
@@ -34,12 +45,12 @@ export const inversionGlsl: GlslElementTwin<InversionElement> = {
     `
 float dx = p.x - d0.x;
 float dy = p.y - d0.y;
-if (!(dx * dx + dy * dy >= d0.w)) {
-  invertState(p, s, d0.xy, d0.z, d0.w);
-  depth += 1;
+float d2 = dx * dx + dy * dy;
+if (!(d2 >= d0.w)) {
+  invertOffset(p, s, d0.xy, d0.z, d0.w, dx, dy, d2);
   continue;
 }`,
-    [invertStateGlsl],
+    [invertOffsetGlsl],
   ),
   inside: glslFunction(
     'inversionInside',

@@ -5,10 +5,10 @@ import type { ElementKind, IisState } from './element-kind.ts';
 /**
  * The point exactly at an inversion centre maps to ∞ (r²/0): it goes instead to the far point
  * c + (r·G, 0) with scale G², as if it lay r/G to the right of c (G = CENTRE_GUARD), so the run
- * stays finite and the GPU twin does the same. The scale factor is capped at G² (it only bites
- * within r/G of the centre, where it keeps the run finite too): written as min and a choice of x
- * rather than an early return, the GPU twin needs no branch, which costs SwiftShader about a third
- * of an inversion-heavy frame (tests/bench/shader-ratio.ts).
+ * stays finite and the GPU twin does the same. Written without a branch or a choice, so that the
+ * GPU twin is pure arithmetic (SwiftShader pays for an `if` or a `?:` here with about a third of
+ * an inversion-heavy frame, tests/bench/shader-ratio.ts): k = min(r²/|p−c|², G²) — r²/0 = ∞
+ * becomes G², which also caps k within r/G of the centre — and x gains r·G only at the centre.
  */
 export const CENTRE_GUARD = 1e9;
 
@@ -17,9 +17,9 @@ export function invertState(st: IisState, cx: number, cy: number, r: number): vo
   const dx = st.x - cx;
   const dy = st.y - cy;
   const d2 = dx * dx + dy * dy;
-  // k = r²/|p−c|² ≤ G²; at the centre r²/0 = ∞ becomes G², and dy·k = 0.
   const k = Math.min((r * r) / d2, CENTRE_GUARD * CENTRE_GUARD);
-  st.x = d2 === 0 ? cx + r * CENTRE_GUARD : cx + dx * k;
+  // At the centre dx·k = dy·k = 0: x = cx + r·G, y = cy, scale G².
+  st.x = cx + dx * k + (d2 === 0 ? 1 : 0) * (r * CENTRE_GUARD);
   st.y = cy + dy * k;
   st.s *= k;
 }

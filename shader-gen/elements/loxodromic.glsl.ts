@@ -34,14 +34,12 @@ if (inRegion(d4, p)) {
   invertState(p, s, d2.xy, d2.z, d2.z * d2.z);
   invertState(p, s, d0.xy, d0.z, d0.z * d0.z);
   invertState(p, s, d1.xy, d1.z, d1.z * d1.z);
-  depth += 1;
   continue;
 } else if (inRegion(d5, p)) {
   invertState(p, s, d1.xy, d1.z, d1.z * d1.z);
   invertState(p, s, d0.xy, d0.z, d0.z * d0.z);
   invertState(p, s, d2.xy, d2.z, d2.z * d2.z);
   reflectState(p, d3.xy, d3.zw);
-  depth += 1;
   continue;
 }`,
     [inRegionGlsl, invertStateGlsl, reflectStateGlsl],

@@ -34,11 +34,9 @@ export const mobiusMatrixGlsl: GlslElementTwin<MobiusMatrixElement> = {
     `
 if (inRegion(d2, p)) {
   applyMobius(p, s, d0.xy, d0.zw, d1.xy, d1.zw, 1.0);
-  depth += 1;
   continue;
 } else if (inRegion(d3, p)) {
   applyMobius(p, s, d1.zw, d0.zw, d1.xy, d0.xy, -1.0);
-  depth += 1;
   continue;
 }`,
     [inRegionGlsl, applyMobiusGlsl],

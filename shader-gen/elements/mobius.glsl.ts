@@ -29,12 +29,10 @@ export const mobiusGlsl: GlslElementTwin<MobiusElement> = {
 if (inRegion(d2, p)) {
   invertState(p, s, d0.xy, d0.z, d0.z * d0.z);
   invertState(p, s, d1.xy, d1.z, d1.z * d1.z);
-  depth += 1;
   continue;
 } else if (inRegion(d3, p)) {
   invertState(p, s, d1.xy, d1.z, d1.z * d1.z);
   invertState(p, s, d0.xy, d0.z, d0.z * d0.z);
-  depth += 1;
   continue;
 }`,
     [inRegionGlsl, invertStateGlsl],

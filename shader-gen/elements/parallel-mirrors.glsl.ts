@@ -16,7 +16,7 @@ if (k != 0.0) {
   float r = h - k * D;
   float target = mod(k, 2.0) == 0.0 ? r : D - r;
   p = vec2(p.x + (target - h) * d0.z, p.y + (target - h) * d0.w);
-  depth += foldCount(k);
+  depth += foldCount(k) - 1;
   continue;
 }`,
     [stripHeightGlsl, foldCountGlsl],

@@ -21,16 +21,13 @@ export const reflectionGlsl: GlslElementTwin<ReflectionElement> = {
   kind: 'reflection',
   vec4s: 1,
   pack: (e) => [e.q[0], e.q[1], e.n[0], e.n[1]],
-  step: glslStepBlock(
-    `
+  step: glslStepBlock(`
 float h = (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w;
 if (!(h >= 0.0)) {
   h *= 2.0;
   p = vec2(p.x - h * d0.z, p.y - h * d0.w);
-  depth += 1;
   continue;
-}`,
-  ),
+}`),
   inside: glslFunction(
     'reflectionInside',
     `

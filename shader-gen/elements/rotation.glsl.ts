@@ -52,7 +52,7 @@ float m = wedgeIndex(d0, d1, dx, dy);
 if (!(m <= 0.0)) {
   vec2 w = complexPower(vec2(d1.y, -d1.z), int(m));
   p = vec2(d0.x + w.x * dx - w.y * dy, d0.y + w.y * dx + w.x * dy);
-  depth += max(int(m), 1); // m ≥ 1 here; NaN (int() undefined) counts 1
+  depth += max(int(m), 1) - 1; // m ≥ 1 here; NaN (int() undefined) counts 1
   continue;
 }`,
     [wedgeIndexGlsl, complexPowerGlsl],

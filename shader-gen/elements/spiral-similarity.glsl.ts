@@ -43,8 +43,7 @@ float dx = p.x - d0.x;
 float dy = p.y - d0.y;
 float rho = length(vec2(dx, dy));
 if (rho == 0.0) {
-  depth += 1; // the fixed point: one step at a time until maxIterations (not escaped)
-  continue;
+  continue; // the fixed point: one step at a time until maxIterations (not escaped)
 }
 float m = annulusIndex(d0, rho);
 if (m != 0.0) {
@@ -53,7 +52,7 @@ if (m != 0.0) {
   vec2 wm = complexPower(w, foldCount(m));
   p = vec2(d0.x + wm.x * dx - wm.y * dy, d0.y + wm.y * dx + wm.x * dy);
   s *= length(wm);
-  depth += foldCount(m);
+  depth += foldCount(m) - 1;
   continue;
 }`,
     [annulusIndexGlsl, spiralRatioGlsl, foldCountGlsl, complexPowerGlsl],

@@ -41,10 +41,10 @@ float stripBoundaryDistance(vec4 d0, vec4 d1, vec2 p) {
 );
 
 /**
- * depth += |k| for a fold by k periods. A point farther than 10⁹ periods away (only reachable
- * from absurd views) counts 10⁹, which keeps the int finite and still reaches any maxIterations.
- * At least 1 (a fold only happens for k ≠ 0; NaN, whose int() is undefined, counts 1): runIis
- * relies on every applied step adding ≥ 1 to depth.
+ * A fold by k periods counts |k| steps of depth (the loop adds 1, the step foldCount(k) − 1). A
+ * point farther than 10⁹ periods away (only reachable from absurd views) counts 10⁹, which keeps
+ * the int finite and still reaches any maxIterations. At least 1 (a fold only happens for k ≠ 0;
+ * NaN, whose int() is undefined, counts 1), so the step never takes depth back.
  */
 export const foldCountGlsl = glslFunction(
   'foldCount',

@@ -20,7 +20,7 @@ export const translationGlsl: GlslElementTwin<TranslationElement> = {
 float k = stripIndex(d0, d1, p);
 if (k != 0.0) {
   p = vec2(p.x - k * d1.y, p.y - k * d1.z);
-  depth += foldCount(k);
+  depth += foldCount(k) - 1;
   continue;
 }`,
     [stripIndexGlsl, foldCountGlsl],

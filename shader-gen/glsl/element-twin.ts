@@ -10,11 +10,13 @@ import type { GlslFunction } from './snippet.ts';
 /**
  * The CPU `step` as statements placed in the IIS loop body, in their own scope, with the element's
  * data bound to `vec4 d0, d1, …` and the loop's `vec2 p`, `float s`, `int depth` in scope: when the
- * element applies they update p, s and depth and `continue` (CPU: return true, the loop restarts);
- * otherwise they fall through (CPU: return false). A block that applies adds at least 1 to depth,
- * even on NaN (runIis loops while depth < maxIter, with no second counter). Inline rather than a
- * function returning bool: SwiftShader does not inline such calls, and the inline block runs about
- * twice as fast there.
+ * element applies they update p and s and `continue` (CPU: return true, the loop restarts);
+ * otherwise they fall through (CPU: return false). The loop's increment counts an applied step as
+ * 1 deep; a step worth n (n ≥ 1, a fold by n periods) adds the other n − 1 itself and never
+ * less than 0, even on NaN: runIis loops while depth < maxIter with no second counter. Inline
+ * rather than a function returning bool: SwiftShader does not inline such calls, and the inline
+ * block runs about twice as fast there. Prefer arithmetic (min, step) to `if` and `?:` inside a
+ * block: SwiftShader runs every branch and pays dearly for a select (inversion.ts CENTRE_GUARD).
  */
 export interface GlslStepBlock {
   readonly code: string;

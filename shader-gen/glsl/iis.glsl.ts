@@ -12,7 +12,7 @@ import { farDisk, limitReach } from '../far-disk.ts';
 import { shadeGlsl } from './colour.glsl.ts';
 import type { GlslElementTwin } from './element-twin.ts';
 import { glslTwin } from './element-twins.ts';
-import type { SeedsGlsl } from './seeds.glsl.ts';
+import type { SeedArg, SeedsGlsl } from './seeds.glsl.ts';
 import { type GlslFunction, glslFunction } from './snippet.ts';
 import type { SourceBuilder } from './source.ts';
 import { ELEMENT_ARRAY, type SceneValues } from './values.ts';
@@ -64,21 +64,17 @@ const hoistedRow = (expr: string): string | null => {
  *
  * Speed (SwiftShader, tests/bench/shader-ratio.ts): the uniform rows and maxIter are copied into
  * locals before the loop — read inside the loop, every pass reloaded them (2× slower) — and the
- * loop runs on depth alone: every pass either returns or adds ≥ 1 to depth (each twin's contract,
- * see GlslStepBlock), so there are at most maxIter passes without a second counter.
+ * loop runs on depth alone, its increment counting each applied step (a twin adds only what a
+ * step is worth beyond 1, see GlslStepBlock): every pass either returns or adds ≥ 1 to depth, so
+ * there are at most maxIter passes without a second counter, and no block pays for an add.
  */
 export function emitRunIis(
   out: SourceBuilder,
   placed: readonly PlacedElement[],
   maxIter: string,
-  withSeeds = false,
+  seedArgs: readonly SeedArg[] | null = null,
 ): void {
-  // With seeds (interpret.ts runIis's `visit`): at the start of every pass, a point in a seed stops
-  // the run, not escaped, with `seed` its index.
-  const seedTest = (indent: string) => [
-    `${indent}seed = seedAt(p);`,
-    `${indent}if (seed >= 0) return false;`,
-  ];
+  const withSeeds = seedArgs !== null;
   const local = (expr: string) => hoistedRow(expr) ?? expr;
   const hoisted = placed.flatMap(({ data }) =>
     data.flatMap((expr) => {
@@ -86,6 +82,17 @@ export function emitRunIis(
       return name ? [`  vec4 ${name} = ${expr};`] : [];
     }),
   );
+  // Seed data in uniforms (names, not literals) are copied into locals like the element rows.
+  const seedLocals = (seedArgs ?? []).map((a, k) => (/^\w+$/.test(a.expr) ? `seedArg${k}` : a.expr));
+  (seedArgs ?? []).forEach((a, k) => {
+    if (seedLocals[k] !== a.expr) hoisted.push(`  ${a.type} ${seedLocals[k]} = ${a.expr};`);
+  });
+  // With seeds (interpret.ts runIis's `visit`): at the start of every pass, a point in a seed stops
+  // the run, not escaped, with `seed` its index.
+  const seedTest = (indent: string) => [
+    `${indent}seed = seedAt(${['p', ...seedLocals].join(', ')});`,
+    `${indent}if (seed >= 0) return false;`,
+  ];
   const literalLimit = /^\d+$/.test(maxIter);
   out.push(
     withSeeds
@@ -93,7 +100,7 @@ export function emitRunIis(
       : 'bool runIis(inout vec2 p, inout float s, inout int depth) {',
     ...hoisted,
     ...(literalLimit ? [] : [`  int maxIter = ${maxIter};`]),
-    `  while (depth < ${literalLimit ? maxIter : 'maxIter'}) {`,
+    `  for (; depth < ${literalLimit ? maxIter : 'maxIter'}; ++depth) {`,
     ...(withSeeds ? seedTest('    ') : []),
   );
   placed.forEach(({ twin, data }, i) => {

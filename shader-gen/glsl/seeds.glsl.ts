@@ -20,19 +20,38 @@ bool seedDiskInside(vec2 p, vec4 d) {
 }`,
 );
 
+/** One argument of seedAt after p: its type and the expression the caller passes (uniform or literal). */
+export interface SeedArg {
+  readonly type: 'vec2' | 'vec4';
+  readonly expr: string;
+}
+
 export interface SeedsGlsl {
+  /** `int seedAt(vec2 p, a0, a1, …)`: the seeds' data are parameters, see `seedAtArgs`. */
   readonly seedAt: GlslFunction;
+  /**
+   * What to pass to seedAt after p. Parameters rather than uniforms read inside: runIis calls it
+   * every pass and copies the uniforms into locals once, before its loop (a uniform read in the
+   * loop costs SwiftShader about 2× the frame, see emitRunIis).
+   */
+  readonly seedAtArgs: readonly SeedArg[];
   readonly seedColour: GlslFunction;
 }
 
 export function seedsGlsl(seeds: readonly SeedSpec[], v: SceneValues): SeedsGlsl {
-  const at = ['int seedAt(vec2 p) {'];
+  const args: SeedArg[] = [];
+  /** Adds a seedAt parameter for `expr`; returns the parameter's name. */
+  const param = (type: SeedArg['type'], expr: string) => {
+    args.push({ type, expr });
+    return `a${args.length - 1}`;
+  };
+  const at: string[] = [];
   const colour = ['vec3 seedColour(int seed, vec2 p) {'];
   seeds.forEach((seed, i) => {
     if (seed.kind === 'disk') {
       const d = v.vec(`u_seed${i}`, [seed.c[0], seed.c[1], seed.r, 0]);
       const c = v.vec(`u_seedColor${i}`, seed.color);
-      at.push(`  if (seedDiskInside(p, ${d})) return ${i};`);
+      at.push(`  if (seedDiskInside(p, ${param('vec4', d)})) return ${i};`);
       colour.push(`  if (seed == ${i}) return toLinear(${c});`);
     } else {
       const rect = v.vec(`u_seed${i}`, [seed.center[0], seed.center[1], seed.width, seed.height]);
@@ -40,17 +59,19 @@ export function seedsGlsl(seeds: readonly SeedSpec[], v: SceneValues): SeedsGlsl
       const sampler = v.picture(seed.image.src);
       at.push(
         '  {',
-        `    vec2 uv = placeUv(${rect}, ${rot}, p);`,
+        `    vec2 uv = placeUv(${param('vec4', rect)}, ${param('vec2', rot)}, p);`,
         `    if (uv.x > 0.0 && uv.x < 1.0 && uv.y > 0.0 && uv.y < 1.0) return ${i};`,
         '  }',
       );
       colour.push(`  if (seed == ${i}) return textureLod(${sampler}, placeUv(${rect}, ${rot}, p), 0.0).rgb;`);
     }
   });
+  at.unshift(`int seedAt(${['vec2 p', ...args.map((a, k) => `${a.type} a${k}`)].join(', ')}) {`);
   at.push('  return -1;', '}');
   colour.push('  return vec3(0.0);', '}');
   return {
     seedAt: glslFunction('seedAt', at.join('\n'), [seedDiskInsideGlsl, placeUvGlsl]),
+    seedAtArgs: args,
     seedColour: glslFunction('seedColour', colour.join('\n'), [toLinearGlsl, placeUvGlsl]),
   };
 }

@@ -72,7 +72,7 @@ function sceneParts(scene: Scene, v: SceneValues, withColour: boolean) {
   const emitBody = (out: SourceBuilder, extra: readonly GlslFunction[]) => {
     const fns = [...elementFunctions(placed, edges), ...(shadeSample?.deps ?? []), ...extra];
     for (const code of collectFunctions(fns)) out.push(code, '');
-    emitRunIis(out, placed, maxIter, seeds !== null);
+    emitRunIis(out, placed, maxIter, seeds?.seedAtArgs ?? null);
     out.push('');
     if (edges) {
       emitBoundaryDistance(out, placed);

@@ -41,7 +41,13 @@ const sameList = (a: readonly string[], b: readonly string[]) =>
   a.length === b.length && a.every((x, i) => x === b[i]);
 const sameDiagnostics = (a: readonly Diagnostic[], b: readonly Diagnostic[]) =>
   a.length === b.length &&
-  a.every((d, i) => d.code === b[i].code && d.message === b[i].message && d.severity === b[i].severity && d.port === b[i].port);
+  a.every(
+    (d, i) =>
+      d.code === b[i].code &&
+      d.message === b[i].message &&
+      d.severity === b[i].severity &&
+      d.port === b[i].port,
+  );
 
 /**
  * `prev` when nothing the node shows changed (same document node, wires, read-out, diagnostics,

@@ -110,7 +110,7 @@ describe('uniforms', () => {
       // Pictures stay samplers (a texture cannot be a literal): u_image0, u_image1, …
       const samplers = [...p.source.matchAll(/^uniform sampler2D (\w+)/gm)].map((m) => m[1]);
       expect(samplers).toEqual(p.pictures.map((_, i) => `u_image${i}`));
-      expect(p.source).toContain(`while (depth < ${scene.maxIterations})`);
+      expect(p.source).toContain(`for (; depth < ${scene.maxIterations}; ++depth)`);
     });
   }
 

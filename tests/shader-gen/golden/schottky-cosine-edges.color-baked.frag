@@ -18,13 +18,16 @@ bool inRegion(vec4 g, vec2 p) {
   return g.w > 0.5 ? d2 > r2 : d2 < r2;
 }
 
+void invertOffset(inout vec2 p, inout float s, vec2 c, float r, float r2, float dx, float dy, float d2) {
+  float k = min(r2 / d2, 1000000000000000000.0);
+  p = vec2(c.x + dx * k + step(d2, 0.0) * (r * 1000000000.0), c.y + dy * k);
+  s *= k;
+}
+
 void invertState(inout vec2 p, inout float s, vec2 c, float r, float r2) {
   float dx = p.x - c.x;
   float dy = p.y - c.y;
-  float d2 = dx * dx + dy * dy;
-  float k = min(r2 / d2, 1000000000000000000.0);
-  p = vec2(d2 == 0.0 ? c.x + r * 1000000000.0 : c.x + dx * k, c.y + dy * k);
-  s *= k;
+  invertOffset(p, s, c, r, r2, dx, dy, dx * dx + dy * dy);
 }
 
 bool mobiusInside(vec2 p, vec4 d0, vec4 d1, vec4 d2, vec4 d3) {
@@ -91,7 +94,7 @@ vec2 pixelToWorld(vec3 view, vec2 size, vec2 px, vec2 o) {
 }
 
 bool runIis(inout vec2 p, inout float s, inout int depth) {
-  while (depth < 60) {
+  for (; depth < 60; ++depth) {
 #line 1 1
     { // mobius
       vec4 d0 = vec4(-1.0, 0.0, 0.6, 0.0);
@@ -101,12 +104,10 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
       if (inRegion(d2, p)) {
         invertState(p, s, d0.xy, d0.z, d0.z * d0.z);
         invertState(p, s, d1.xy, d1.z, d1.z * d1.z);
-        depth += 1;
         continue;
       } else if (inRegion(d3, p)) {
         invertState(p, s, d1.xy, d1.z, d1.z * d1.z);
         invertState(p, s, d0.xy, d0.z, d0.z * d0.z);
-        depth += 1;
         continue;
       }
     }
@@ -115,13 +116,13 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
       vec4 d0 = vec4(0.0, 1.6, 0.5, 0.25);
       float dx = p.x - d0.x;
       float dy = p.y - d0.y;
-      if (!(dx * dx + dy * dy >= d0.w)) {
-        invertState(p, s, d0.xy, d0.z, d0.w);
-        depth += 1;
+      float d2 = dx * dx + dy * dy;
+      if (!(d2 >= d0.w)) {
+        invertOffset(p, s, d0.xy, d0.z, d0.w, dx, dy, d2);
         continue;
       }
     }
-#line 125 0
+#line 126 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
@@ -129,7 +130,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   if (mobiusInside(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0))) return false;
 #line 1 2
   if (inversionInside(p, vec4(0.0, 1.6, 0.5, 0.25))) return false;
-#line 133 0
+#line 134 0
   return true;
 }
 
@@ -139,7 +140,7 @@ float sceneBoundaryDistance(vec2 p) {
   d = min(d, mobiusBoundaryDistance(p, vec4(-1.0, 0.0, 0.6, 0.0), vec4(0.2, 0.1, 1.0, 0.0), vec4(-1.0, 0.0, 0.6, 0.0), vec4(-0.9009174311926607, 0.00825688073394494, 0.5504587155963303, 0.0)));
 #line 1 2
   d = min(d, inversionBoundaryDistance(p, vec4(0.0, 1.6, 0.5, 0.25)));
-#line 143 0
+#line 144 0
   return d;
 }
 

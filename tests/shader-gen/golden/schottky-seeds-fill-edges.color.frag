@@ -38,13 +38,16 @@ bool inRegion(vec4 g, vec2 p) {
   return g.w > 0.5 ? d2 > r2 : d2 < r2;
 }
 
+void invertOffset(inout vec2 p, inout float s, vec2 c, float r, float r2, float dx, float dy, float d2) {
+  float k = min(r2 / d2, 1000000000000000000.0);
+  p = vec2(c.x + dx * k + step(d2, 0.0) * (r * 1000000000.0), c.y + dy * k);
+  s *= k;
+}
+
 void invertState(inout vec2 p, inout float s, vec2 c, float r, float r2) {
   float dx = p.x - c.x;
   float dy = p.y - c.y;
-  float d2 = dx * dx + dy * dy;
-  float k = min(r2 / d2, 1000000000000000000.0);
-  p = vec2(d2 == 0.0 ? c.x + r * 1000000000.0 : c.x + dx * k, c.y + dy * k);
-  s *= k;
+  invertOffset(p, s, c, r, r2, dx, dy, dx * dx + dy * dy);
 }
 
 bool mobiusInside(vec2 p, vec4 d0, vec4 d1, vec4 d2, vec4 d3) {
@@ -88,10 +91,10 @@ vec2 placeUv(vec4 rect, vec2 rot, vec2 p) {
   return vec2(lx / rect.z + 0.5, 0.5 - ly / rect.w);
 }
 
-int seedAt(vec2 p) {
-  if (seedDiskInside(p, u_seed0)) return 0;
+int seedAt(vec2 p, vec4 a0, vec4 a1, vec2 a2) {
+  if (seedDiskInside(p, a0)) return 0;
   {
-    vec2 uv = placeUv(u_seed1, u_seedRot1, p);
+    vec2 uv = placeUv(a1, a2, p);
     if (uv.x > 0.0 && uv.x < 1.0 && uv.y > 0.0 && uv.y < 1.0) return 1;
   }
   return -1;
@@ -144,9 +147,12 @@ bool runIis(inout vec2 p, inout float s, inout int depth, inout int seed) {
   vec4 el2 = u_el[2];
   vec4 el3 = u_el[3];
   vec4 el4 = u_el[4];
+  vec4 seedArg0 = u_seed0;
+  vec4 seedArg1 = u_seed1;
+  vec2 seedArg2 = u_seedRot1;
   int maxIter = u_maxIterations;
-  while (depth < maxIter) {
-    seed = seedAt(p);
+  for (; depth < maxIter; ++depth) {
+    seed = seedAt(p, seedArg0, seedArg1, seedArg2);
     if (seed >= 0) return false;
 #line 1 1
     { // mobius
@@ -157,12 +163,10 @@ bool runIis(inout vec2 p, inout float s, inout int depth, inout int seed) {
       if (inRegion(d2, p)) {
         invertState(p, s, d0.xy, d0.z, d0.z * d0.z);
         invertState(p, s, d1.xy, d1.z, d1.z * d1.z);
-        depth += 1;
         continue;
       } else if (inRegion(d3, p)) {
         invertState(p, s, d1.xy, d1.z, d1.z * d1.z);
         invertState(p, s, d0.xy, d0.z, d0.z * d0.z);
-        depth += 1;
         continue;
       }
     }
@@ -171,23 +175,23 @@ bool runIis(inout vec2 p, inout float s, inout int depth, inout int seed) {
       vec4 d0 = el4;
       float dx = p.x - d0.x;
       float dy = p.y - d0.y;
-      if (!(dx * dx + dy * dy >= d0.w)) {
-        invertState(p, s, d0.xy, d0.z, d0.w);
-        depth += 1;
+      float d2 = dx * dx + dy * dy;
+      if (!(d2 >= d0.w)) {
+        invertOffset(p, s, d0.xy, d0.z, d0.w, dx, dy, d2);
         continue;
       }
     }
-#line 181 0
+#line 185 0
     return true;
   }
-  seed = seedAt(p);
+  seed = seedAt(p, seedArg0, seedArg1, seedArg2);
   if (seed >= 0) return false;
   // depth ≥ maxIter: escaped only if no element holds p.
 #line 1 1
   if (mobiusInside(p, el0, el1, el2, el3)) return false;
 #line 1 2
   if (inversionInside(p, el4)) return false;
-#line 191 0
+#line 195 0
   return true;
 }
 
@@ -197,7 +201,7 @@ float sceneBoundaryDistance(vec2 p) {
   d = min(d, mobiusBoundaryDistance(p, u_el[0], u_el[1], u_el[2], u_el[3]));
 #line 1 2
   d = min(d, inversionBoundaryDistance(p, u_el[4]));
-#line 201 0
+#line 205 0
   return d;
 }
 

@@ -44,7 +44,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   vec4 el2 = u_el[2];
   vec4 el3 = u_el[3];
   int maxIter = u_maxIterations;
-  while (depth < maxIter) {
+  for (; depth < maxIter; ++depth) {
 #line 1 1
     { // parallel-mirrors
       vec4 d0 = el0;
@@ -56,7 +56,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
         float r = h - k * D;
         float target = mod(k, 2.0) == 0.0 ? r : D - r;
         p = vec2(p.x + (target - h) * d0.z, p.y + (target - h) * d0.w);
-        depth += foldCount(k);
+        depth += foldCount(k) - 1;
         continue;
       }
     }
@@ -67,7 +67,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
       float k = stripIndex(d0, d1, p);
       if (k != 0.0) {
         p = vec2(p.x - k * d1.y, p.y - k * d1.z);
-        depth += foldCount(k);
+        depth += foldCount(k) - 1;
         continue;
       }
     }

@@ -55,7 +55,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   vec4 el1 = u_el[1];
   vec4 el2 = u_el[2];
   int maxIter = u_maxIterations;
-  while (depth < maxIter) {
+  for (; depth < maxIter; ++depth) {
 #line 1 1
     { // reflection
       vec4 d0 = el0;
@@ -63,7 +63,6 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
       if (!(h >= 0.0)) {
         h *= 2.0;
         p = vec2(p.x - h * d0.z, p.y - h * d0.w);
-        depth += 1;
         continue;
       }
     }
@@ -74,7 +73,6 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
       if (!(h >= 0.0)) {
         h *= 2.0;
         p = vec2(p.x - h * d0.z, p.y - h * d0.w);
-        depth += 1;
         continue;
       }
     }
@@ -85,11 +83,10 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
       if (!(h >= 0.0)) {
         h *= 2.0;
         p = vec2(p.x - h * d0.z, p.y - h * d0.w);
-        depth += 1;
         continue;
       }
     }
-#line 93 0
+#line 90 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
@@ -99,7 +96,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   if (reflectionInside(p, el1)) return false;
 #line 1 3
   if (reflectionInside(p, el2)) return false;
-#line 103 0
+#line 100 0
   return true;
 }
 

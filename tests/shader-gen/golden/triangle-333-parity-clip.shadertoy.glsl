@@ -46,14 +46,13 @@ vec3 toSrgb(vec3 c) {
 }
 
 bool runIis(inout vec2 p, inout float s, inout int depth) {
-  while (depth < 100) {
+  for (; depth < 100; ++depth) {
     { // reflection
       vec4 d0 = vec4(0.0, 0.0, 0.0, 1.0);
       float h = (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w;
       if (!(h >= 0.0)) {
         h *= 2.0;
         p = vec2(p.x - h * d0.z, p.y - h * d0.w);
-        depth += 1;
         continue;
       }
     }
@@ -63,7 +62,6 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
       if (!(h >= 0.0)) {
         h *= 2.0;
         p = vec2(p.x - h * d0.z, p.y - h * d0.w);
-        depth += 1;
         continue;
       }
     }
@@ -73,7 +71,6 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
       if (!(h >= 0.0)) {
         h *= 2.0;
         p = vec2(p.x - h * d0.z, p.y - h * d0.w);
-        depth += 1;
         continue;
       }
     }

@@ -60,7 +60,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   vec4 el1 = u_el[1];
   vec4 el2 = u_el[2];
   int maxIter = u_maxIterations;
-  while (depth < maxIter) {
+  for (; depth < maxIter; ++depth) {
 #line 1 1
     { // reflection
       vec4 d0 = el0;
@@ -68,7 +68,6 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
       if (!(h >= 0.0)) {
         h *= 2.0;
         p = vec2(p.x - h * d0.z, p.y - h * d0.w);
-        depth += 1;
         continue;
       }
     }
@@ -79,7 +78,6 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
       if (!(h >= 0.0)) {
         h *= 2.0;
         p = vec2(p.x - h * d0.z, p.y - h * d0.w);
-        depth += 1;
         continue;
       }
     }
@@ -90,11 +88,10 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
       if (!(h >= 0.0)) {
         h *= 2.0;
         p = vec2(p.x - h * d0.z, p.y - h * d0.w);
-        depth += 1;
         continue;
       }
     }
-#line 98 0
+#line 95 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
@@ -104,7 +101,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   if (reflectionInside(p, el1)) return false;
 #line 1 3
   if (reflectionInside(p, el2)) return false;
-#line 108 0
+#line 105 0
   return true;
 }
 

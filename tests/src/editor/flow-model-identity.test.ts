@@ -36,7 +36,11 @@ describe('React Flow nodes keep their identity while unchanged', () => {
   });
 
   it('moving a point rebuilds the point and the nodes whose read-out changed, not the rest', () => {
-    const moved = applyChange(doc, { type: 'set-params', patches: [{ nodeId: 'A', params: { x: -1.2 } }] }, registry);
+    const moved = applyChange(
+      doc,
+      { type: 'set-params', patches: [{ nodeId: 'A', params: { x: -1.2 } }] },
+      registry,
+    );
     const after = flow(moved, [], null, first);
     const rebuilt = after.filter((n, i) => n !== first[i]).map((n) => n.id);
     expect(rebuilt).toContain('A');

@@ -292,6 +292,35 @@ describe('editor', () => {
     await waitRendered(page);
     expect(thumbDiff(await renderPixels(page), tiling)).toBeLessThan(1);
 
+    // Drag the same corner in the render, by its handle: the tiling follows and the node's x and y
+    // change; one undo puts both the value and the picture back.
+    const grip = (await page.locator(`[data-handle="${points[0]}/point"]`).first().boundingBox())!;
+    const from = { x: grip.x + grip.width / 2, y: grip.y + grip.height / 2 };
+    await page.mouse.move(from.x, from.y);
+    await page.mouse.down();
+    for (let i = 1; i <= 10; i++) await page.mouse.move(from.x - 4 * i, from.y + 2 * i);
+    await page.mouse.up();
+    await expect
+      .poll(() => nodeEl(page, points[0]).locator('input[aria-label="x"]').inputValue())
+      .not.toBe('-1');
+    expect(Number(await nodeEl(page, points[0]).locator('input[aria-label="x"]').inputValue())).toBeLessThan(
+      -1,
+    );
+    expect(Number(await nodeEl(page, points[0]).locator('input[aria-label="y"]').inputValue())).toBeLessThan(
+      -0.5774,
+    );
+    await waitRendered(page);
+    expect(thumbDiff(await renderPixels(page), tiling)).toBeGreaterThan(2);
+    await page.mouse.click((await graphBox(page)).x + 1100, (await graphBox(page)).y + 700);
+    await page.keyboard.press('Control+z');
+    await expect.poll(() => nodeEl(page, points[0]).locator('input[aria-label="x"]').inputValue()).toBe('-1');
+    expect(Number(await nodeEl(page, points[0]).locator('input[aria-label="y"]').inputValue())).toBeCloseTo(
+      -0.5774,
+      3,
+    );
+    await waitRendered(page);
+    expect(thumbDiff(await renderPixels(page), tiling)).toBeLessThan(1);
+
     await page.screenshot({ path: join(root, 'test-artifacts', 'editor.png') });
 
     const [download] = await Promise.all([

@@ -4,9 +4,10 @@
  * mouse moves follows the pointer and lands in the document as one undo step. Frame times are
  * reported by `npm run bench` (tests/bench/editor.ts), never asserted here.
  */
+import { join } from 'node:path';
 import type { BrowserContext, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { type ServedApp, serveApp } from './app-server.ts';
+import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
 import { draggableNode, dragNode, editorScaleGraph, openLarge } from './scale-page.ts';
 
 const NODES = 500;
@@ -40,6 +41,7 @@ describe('editor at scale', () => {
     expect(shown).toBe(NODES);
     // Some nodes are on screen, not only in the DOM.
     await draggableNode(page);
+    await page.screenshot({ path: join(repoRoot, 'test-artifacts', 'scale-500-nodes.png') });
   }, 60_000);
 
   it('a node dragged with 30 mouse moves follows the pointer and is one undo step', async () => {

@@ -1,0 +1,89 @@
+/**
+ * `kleinflow check` also compiles the scene's shader, so the problems only the GPU program has
+ * (KF404 uniform budget, KF405 values beyond float32 range) are listed like every other one.
+ */
+import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { LIMITS } from '../../nodes/core/scene.ts';
+import { runCli } from './run-cli.ts';
+
+let dir = '';
+beforeAll(() => {
+  dir = mkdtempSync(join(tmpdir(), 'kleinflow-check-'));
+});
+afterAll(() => {
+  rmSync(dir, { recursive: true, force: true });
+});
+
+type Node = { id: string; type: string; position: [number, number]; params: Record<string, unknown> };
+/** A graph file: inversions in the given circles, all wired into one render node. */
+function inversions(name: string, circles: { c: [number, number]; r: number }[], extra: Node[] = []) {
+  const nodes: Node[] = circles.map((circle, i) => ({
+    id: `inv${i}`,
+    type: 'inversion',
+    position: [0, i * 100],
+    params: { circle },
+  }));
+  nodes.push({ id: 'out', type: 'render', position: [400, 0], params: {} }, ...extra);
+  const edges = circles.map((_, i) => ({
+    id: `e${i}`,
+    from: { node: `inv${i}`, port: 'element' },
+    to: { node: 'out', port: 'elements' },
+  }));
+  const path = join(dir, name);
+  writeFileSync(
+    path,
+    JSON.stringify({
+      format: 'kleinflow',
+      version: 1,
+      meta: {},
+      nodes,
+      edges,
+      view: { center: [0, 0], scale: 4 },
+    }),
+  );
+  return path;
+}
+
+describe('kleinflow check: shader diagnostics', () => {
+  it('lists KF405 for a circle beyond the GPU range once, as a warning (exit 0)', () => {
+    const path = inversions('huge.json', [
+      { c: [0, 0], r: 1 },
+      { c: [0, 0], r: 1e30 },
+    ]);
+    const r = runCli(['check', path]);
+    expect(r.status).toBe(0);
+    const lines = r.stdout.trim().split('\n');
+    expect(lines).toEqual([
+      expect.stringMatching(
+        /^warning KF405 nodes\[1\] \(node "inv1"\): a value of 1e\+30 is beyond what the GPU computes with/,
+      ),
+    ]);
+    expect(r.stderr).toMatch(/huge\.json: 0 errors, 1 warning/);
+  });
+
+  it('lists KF404 when the elements need more uniform vectors than every GPU has', () => {
+    const n = LIMITS.maxUniformVectors + 10;
+    const circles = Array.from({ length: n }, (_, i) => ({ c: [i * 3, 0] as [number, number], r: 1 }));
+    const r = runCli(['check', inversions('many.json', circles)]);
+    expect(r.status).toBe(0);
+    expect(r.stdout).toMatch(
+      new RegExp(
+        `^warning KF404 .*\\(node "out"\\): the scene needs \\d+ uniform vectors, more than the ${LIMITS.maxUniformVectors}`,
+        'm',
+      ),
+    );
+  });
+
+  it('still exits 1 when the evaluation has an error, and prints the shader warning too', () => {
+    const broken: Node = { id: 'x', type: 'foo', position: [0, 0], params: {} };
+    const path = inversions('both.json', [{ c: [0, 0], r: 1e30 }], [broken]);
+    const r = runCli(['check', path]);
+    expect(r.status).toBe(1);
+    expect(r.stdout).toMatch(/^error KF203 nodes\[2\]\.type \(node "x"\)/m);
+    expect(r.stdout).toMatch(/^warning KF405 nodes\[0\] \(node "inv0"\)/m);
+    expect(r.stderr).toMatch(/both\.json: 1 error, 1 warning/);
+  });
+});

@@ -29,6 +29,7 @@ import { type EditorActions, EditorContext } from './editor-context.ts';
 import { diagnosticsByNode, type KfNode, type KfNodeData, toFlowEdges, toFlowNodes } from './flow-model.ts';
 import { GraphPanels } from './GraphPanels.tsx';
 import { NodeView } from './NodeView.tsx';
+import { gridPosition } from './new-node.ts';
 import { Palette } from './Palette.tsx';
 import { addNodeChange, type PaletteState } from './palette-actions.ts';
 import { useFrameGraph } from './use-frame-graph.ts';
@@ -133,7 +134,7 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, frame
       const moves = dragged
         .map((n) => ({
           nodeId: n.id,
-          position: [Math.round(n.position.x), Math.round(n.position.y)] as [number, number],
+          position: gridPosition(n.position.x, n.position.y),
         }))
         .filter((m) => {
           const before = current.nodes.find((n) => n.id === m.nodeId)?.position;

@@ -3,13 +3,19 @@ import type { NodeDef } from '../../nodes/core/define-node.ts';
 import type { GraphDoc, GraphNode } from '../../nodes/graph/document.ts';
 import { idAllocator } from '../state/ids.ts';
 
+/** Whole graph units; `+ 0` turns Math.round's −0 into 0 so a saved position reads back equal. */
+export const gridPosition = (x: number, y: number): [number, number] => [
+  Math.round(x) + 0,
+  Math.round(y) + 0,
+];
+
 /** Params stay empty: the type's defaults apply until the user edits a value. */
 export function newNode(doc: GraphDoc, def: NodeDef, position: readonly [number, number]): GraphNode {
   return {
     id: idAllocator(doc)(def.type),
     type: def.type,
     version: def.version,
-    position: [Math.round(position[0]), Math.round(position[1])],
+    position: gridPosition(position[0], position[1]),
     params: {},
   };
 }

@@ -1,7 +1,8 @@
 /**
  * The nodes a Flower import adds that Flower had no node for: the Time node that drives animated
- * values, the tile that colours like Flower, and the render node with every mirror wired in
- * Flower's order (circles first: Flower tests them before the lines).
+ * values, the tile that colours like Flower (with every orbit seed wired into its `seeds`), and
+ * the render node with every mirror wired in Flower's order (circles first: Flower tests them
+ * before the lines).
  */
 import type { Diagnostic } from '../../../nodes/core/diagnostics.ts';
 import { toHex } from '../../../nodes/core/port-values.ts';
@@ -42,7 +43,7 @@ export function addTime(
   }
 }
 
-/** Adds the tile (Flower's colouring) and the render node with every mirror, in Flower's order. */
+/** Adds the tile (Flower's colouring, every seed) and the render node with every mirror, in Flower's order. */
 export function addOutput(
   graph: FlowerGraph,
   mapped: ReadonlyMap<string, MappedNode>,
@@ -79,6 +80,14 @@ export function addOutput(
     from: { node: tileId, port: 'tile' },
     to: { node: renderId, port: 'tile' },
   });
+  // Orbit seeds (Flower's OrbitSeed) are painted by the tile, in file order.
+  for (const fn of graph.nodes.filter((n) => mapped.get(n.id)?.seed)) {
+    edges.push({
+      id: `e${edges.length + 1}`,
+      from: { node: ids.get(fn.id)!, port: 'seed' },
+      to: { node: tileId, port: 'seeds' },
+    });
+  }
   for (const fn of mirrorOrder(graph, mapped)) {
     edges.push({
       id: `e${edges.length + 1}`,

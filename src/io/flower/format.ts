@@ -58,6 +58,43 @@ export function isFlowerDocument(json: unknown): boolean {
   );
 }
 
+/** How notes name a Flower node: `Point "16e8…"`. */
+export const named = (node: FlowerNode) => `${node.name} "${node.id}"`;
+
+export const finite = (v: unknown): v is number => typeof v === 'number' && Number.isFinite(v);
+
+/** The first of `keys` saved on the node as a finite number, with the key it was found under. */
+export function pickEntry(node: FlowerNode, ...keys: string[]): { key: string; value: number } | undefined {
+  for (const key of keys) {
+    const value = node.raw[key];
+    if (finite(value)) return { key, value };
+  }
+  return undefined;
+}
+
+/** The first of `keys` saved on the node as a finite number. */
+export const pick = (node: FlowerNode, ...keys: string[]): number | undefined =>
+  pickEntry(node, ...keys)?.value;
+
+/**
+ * The first of the point `names` saved on the node: `name: [x, y]`, `name: { x, y }`, or the pair
+ * `nameX`, `nameY` (as a Point's posX/posY), with the field(s) it was read from.
+ */
+export function pickPoint(
+  node: FlowerNode,
+  ...names: string[]
+): { key: string; value: [number, number] } | undefined {
+  for (const name of names) {
+    const v = node.raw[name];
+    if (Array.isArray(v) && v.length === 2 && finite(v[0]) && finite(v[1]))
+      return { key: name, value: [v[0], v[1]] };
+    if (isObject(v) && finite(v.x) && finite(v.y)) return { key: name, value: [v.x, v.y] };
+    const [x, y] = [node.raw[`${name}X`], node.raw[`${name}Y`]];
+    if (finite(x) && finite(y)) return { key: `${name}X/${name}Y`, value: [x, y] };
+  }
+  return undefined;
+}
+
 /** A KF502 import note at a path of the Flower file. */
 export const note = (path: string, text: string): Diagnostic => diag('importNote', { path }, text);
 const num = (v: unknown, fallback: number) => (typeof v === 'number' && Number.isFinite(v) ? v : fallback);

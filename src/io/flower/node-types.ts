@@ -8,9 +8,12 @@
  * (posX/posY hold the position); LineTwoPoints runs from its first input point p1 to p2 and a
  * LineMirror keeps the LEFT side of p1→p2 (`reverse` keeps the right: Kleinflow's `flip`);
  * CircleMirror inverts in its circle; both mirrors pass their input through to their output.
+ * OrbitSeed (a picture rectangle whose images are painted) becomes a seed picture wired into the
+ * tile; its saved fields are guessed (orbit-seed.ts).
  */
 import type { NodeRegistry } from '../../../nodes/core/registry.ts';
-import type { FlowerNode } from './format.ts';
+import { type FlowerNode, finite, named, pick } from './format.ts';
+import { mapOrbitSeed } from './orbit-seed.ts';
 
 /** Where a Flower output socket's value comes from in Kleinflow. */
 export type OutputSource = { readonly port: string } | { readonly passthroughInput: number } | null;
@@ -25,6 +28,8 @@ export interface MappedNode {
   readonly outputs: readonly OutputSource[];
   /** Mirrors are wired into the render: circles first, then lines (Flower's test order). */
   readonly mirror?: 'circle' | 'line';
+  /** Orbit seeds: their `seed` output is wired into the imported tile's `seeds`, in file order. */
+  readonly seed?: boolean;
   /** The input that the import's shared Time node drives (animated nodes). */
   readonly timeInput?: string;
   /** Warnings about what did not carry over. */
@@ -41,9 +46,6 @@ export interface MapContext {
   /** Flower type names of the nodes this node's outputs feed. */
   readonly consumers: readonly string[];
 }
-
-const finite = (v: unknown): v is number => typeof v === 'number' && Number.isFinite(v);
-const named = (node: FlowerNode) => `${node.name} "${node.id}"`;
 
 /** Inputs that Flower leaves at (0, 0) when unwired; Kleinflow uses its defaults and says so. */
 function unwiredPoints(node: FlowerNode, ctx: MapContext, ports: readonly string[]): string[] {
@@ -158,15 +160,12 @@ export const FLOWER_NODE_TYPES: Readonly<Record<string, FlowerTypeMap>> = {
   },
   // Its palette becomes the imported tile's colouring (import.ts, palette.ts).
   ColorPalettes: () => ({ skip: null }),
-  OrbitSeed: (node) => ({
-    skip: `${named(node)} cannot be mapped yet (Kleinflow has no orbit-seed node); the picture shows no seed`,
-  }),
-};
-
-/** The first of `keys` saved on the node as a finite number. */
-const pick = (node: FlowerNode, ...keys: string[]): number | undefined => {
-  for (const k of keys) if (finite(node.raw[k])) return node.raw[k] as number;
-  return undefined;
+  OrbitSeed: (node, ctx) =>
+    ctx.registry.get('seed-image')
+      ? mapOrbitSeed(node, ctx)
+      : {
+          skip: `${named(node)} cannot be mapped yet (Kleinflow has no orbit-seed node); the picture shows no seed`,
+        },
 };
 
 /** Flower's periods are in milliseconds (its presets use 1000); Kleinflow's in seconds. */

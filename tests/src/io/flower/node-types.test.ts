@@ -155,7 +155,7 @@ describe('Flower import: node types', () => {
     ]);
   });
 
-  it('CircularMotion becomes circular-motion driven by Time; OrbitSeed is reported, never dropped silently', () => {
+  it('CircularMotion becomes circular-motion driven by Time; OrbitSeed becomes a seed picture', () => {
     const json = graph({
       nodes: [
         fnode('CircularMotion', 'cm', { centerX: 1, centerY: 2, radius: 3, period: 4000, phaseShift: 0 }),
@@ -170,7 +170,16 @@ describe('Flower import: node types', () => {
     const motion = doc.nodes.find((n) => n.type === 'circular-motion')!;
     expect(motion.params).toEqual({ center: [1, 2], radius: 3, period: 4, phase: 0 });
     expect(doc.edges.some((e) => e.from.node === motion.id && e.to.port === 'a')).toBe(true);
-    expect(messages(notes)).toEqual([expect.stringMatching(/OrbitSeed "os" cannot be mapped yet/)]);
+    expect(doc.nodes.find((n) => n.type === 'seed-image')?.params).toEqual({
+      center: [0.5, 0.5],
+      width: 1,
+      height: 1,
+      rotation: 0,
+    });
+    expect(messages(notes)).toEqual([
+      expect.stringMatching(/OrbitSeed "os": Flower's seed picture is not carried over/),
+      expect.stringMatching(/OrbitSeed "os": .*fields are guessed/),
+    ]);
     const bare = imported(graph({ nodes: [fnode('CircularMotion', 'cm')], edges: [] }));
     expect(messages(bare.notes)).toEqual([expect.stringMatching(/no saved centre, radius, period found/)]);
   });

@@ -20,6 +20,7 @@ const SOCKETS: Record<string, [string[], string[]]> = {
   LineMirror: [['Line'], ['Line']],
   CircleThreePoints: [['Point', 'Point', 'Point'], ['Circle']],
   CircleMirror: [['Circle'], ['Circle']],
+  // No preset holds one, so its sockets are unknown: tests give layouts explicitly when they need them.
   OrbitSeed: [[], []],
   ColorPalettes: [['Vec3', 'Vec3', 'Vec3', 'Vec3'], []],
 };
@@ -27,8 +28,14 @@ const SOCKETS: Record<string, [string[], string[]]> = {
 export const inSocket = (node: string, i: number) => `${node}-in${i}`;
 export const outSocket = (node: string, i = 0) => `${node}-out${i}`;
 
-export function fnode(name: string, id: string, extra: Record<string, unknown> = {}): FlowerNodeJson {
-  const [ins, outs] = SOCKETS[name] ?? [[], []];
+/** A node with Flower's socket layout for its type, or `layout` ([input types, output types]). */
+export function fnode(
+  name: string,
+  id: string,
+  extra: Record<string, unknown> = {},
+  layout?: [string[], string[]],
+): FlowerNodeJson {
+  const [ins, outs] = layout ?? SOCKETS[name] ?? [[], []];
   return {
     name,
     x: 10,

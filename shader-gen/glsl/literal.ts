@@ -5,8 +5,21 @@
  * baked and the uniform program see the same numbers.
  */
 
-export function floatLiteral(x: number): string {
-  if (!Number.isFinite(x)) throw new Error(`cannot write ${x} as a GLSL literal`);
+/** The largest finite float32: (2 − 2⁻²³)·2¹²⁷. */
+export const FLOAT32_MAX = 3.4028234663852886e38;
+
+/**
+ * A scene number as the GPU can hold it: finite values beyond ±FLOAT32_MAX (a derived value such as
+ * r² of a huge but finite radius) are clamped to it — compile() already reports them with KF405 —
+ * so neither a uniform nor a literal is ever ∞. NaN is a bug upstream and throws.
+ */
+export function gpuFloat(x: number): number {
+  if (Number.isNaN(x)) throw new Error('cannot give NaN to the GPU');
+  return Math.max(-FLOAT32_MAX, Math.min(FLOAT32_MAX, x));
+}
+
+export function floatLiteral(value: number): string {
+  const x = gpuFloat(value);
   const s = String(x === 0 ? 0 : x); // −0 → "0"
   return /[.e]/.test(s) ? s : `${s}.0`;
 }

@@ -3,7 +3,7 @@
  * recompile) or literals (baked). Every call returns the GLSL expression to use in the code and,
  * for uniforms, records the declaration and the value to upload.
  */
-import { floatLiteral, intLiteral, vecLiteral } from './literal.ts';
+import { floatLiteral, gpuFloat, intLiteral, vecLiteral } from './literal.ts';
 
 export type UniformType = 'float' | 'int' | 'vec2' | 'vec3' | 'vec4' | 'vec4[]' | 'float[]';
 
@@ -55,7 +55,7 @@ export class SceneValues {
     for (let i = 0; i < data.length; i += 4) {
       const row = data.slice(i, i + 4);
       exprs.push(this.baked ? vecLiteral(row) : `${ELEMENT_ARRAY}[${this.rows.length / 4}]`);
-      if (!this.baked) this.rows.push(...row);
+      if (!this.baked) this.rows.push(...row.map(gpuFloat));
     }
     return exprs;
   }
@@ -87,7 +87,10 @@ export class SceneValues {
 
   private declare(entry: UniformEntry): string {
     if (this.uniforms.has(entry.name)) throw new Error(`uniform ${entry.name} declared twice`);
-    this.uniforms.set(entry.name, entry);
+    this.uniforms.set(
+      entry.name,
+      entry.type === 'int' ? entry : { ...entry, value: entry.value.map(gpuFloat) },
+    );
     return entry.name;
   }
 }

@@ -170,9 +170,11 @@ describe('GPU faults', () => {
     expect(title).toMatch(/KF403/);
     expect(title).toMatch(/kf_injected_error/);
     await page.waitForTimeout(1_000);
-    // Nothing drew since: the accumulation and the screen hold the last good picture.
+    // Nothing drew since: the accumulation holds the last good picture bit for bit. The screen is
+    // read through a compositor screenshot, whose element crop can move a single edge pixel (seen
+    // once in CI: 1 pixel of 69,000), so it gets the same ±2 / 0.1 % allowance as the checks below.
     expect(compareImages(accumulated, await snapshot()).offShare).toBe(0);
-    expect(compareImages(pixels, await shown()).offShare).toBe(0);
+    expect(compareImages(pixels, await shown(), 2).offShare).toBeLessThan(0.001);
 
     // Editing the graph back (undo) returns to the structure that compiled: no badge, same picture.
     await page.keyboard.press('Control+z');

@@ -9,7 +9,7 @@ import { LIMITS, type Scene, type SceneElement } from '../../nodes/core/scene.ts
 import { compile, FRAME_UNIFORMS, shadertoySource } from '../../shader-gen/compile.ts';
 import { ELEMENT_KINDS } from '../../shader-gen/elements/index.ts';
 import { GLSL_TWINS, glslTwin } from '../../shader-gen/glsl/element-twins.ts';
-import { floatLiteral } from '../../shader-gen/glsl/literal.ts';
+import { FLOAT32_MAX, floatLiteral } from '../../shader-gen/glsl/literal.ts';
 import { uniformRows } from '../../shader-gen/glsl/values.ts';
 import {
   COLORINGS,
@@ -236,11 +236,27 @@ describe('literals', () => {
     expect(() => floatLiteral(Number.NaN)).toThrow();
     fc.assert(
       fc.property(fc.double({ noNaN: true, noDefaultInfinity: true }), (x) => {
-        expect(Number(floatLiteral(x))).toBe(x === 0 ? 0 : x);
+        // Within float32's range a literal reads back exactly; beyond it, it is clamped (KF405 says so).
+        const held = Math.max(-FLOAT32_MAX, Math.min(FLOAT32_MAX, x));
+        expect(Number(floatLiteral(x))).toBe(held === 0 ? 0 : held);
         expect(floatLiteral(x)).toMatch(/[.e]/);
       }),
       { seed: 42, numRuns: 300 },
     );
+  });
+
+  it('never writes ∞: a derived value beyond float32 (r² of a huge radius) becomes ±FLOAT32_MAX', () => {
+    expect(floatLiteral(Number.POSITIVE_INFINITY)).toBe(floatLiteral(FLOAT32_MAX));
+    expect(floatLiteral(-1e300)).toBe(floatLiteral(-FLOAT32_MAX));
+    const huge: SceneElement = { kind: 'inversion', nodeId: 'i', c: [0, 0], r: 1e300 };
+    const scene: Scene = {
+      ...HAND_MADE_SCENES['rose-cosine'],
+      elements: [huge],
+    };
+    const program = compile(scene);
+    expect(program.uniforms.every((u) => u.value.every(Number.isFinite))).toBe(true);
+    expect(program.diagnostics.map((d) => d.code)).toContain('KF405');
+    expect(compile(scene, { baked: true }).source).not.toMatch(/Infinity/);
   });
 });
 

@@ -38,7 +38,7 @@ function memoryIo(files: Record<string, Uint8Array | string>) {
 
 const flower = JSON.stringify(
   graph(lineMirror('m', [0, 0], [1, 0], false), {
-    nodes: [fnode('OrbitSeed', 'seed'), fpoint('q', 2, 2)],
+    nodes: [fnode('Vec3', 'v'), fpoint('q', 2, 2)],
     edges: [fedge('Point', 'q', 'nowhere', 0)],
   }),
 );
@@ -61,7 +61,7 @@ describe('kleinflow convert', () => {
     ]);
     expect(text('out.kleinflow.json')).toBe(serializeDocument(loaded.doc));
     expect(out.stderr).toMatch(/edges\[3\]: edge names socket "nowhere-in0"/);
-    expect(out.stderr).toMatch(/in\.json: warning KF502 nodes\[4\]: OrbitSeed "seed" cannot be mapped yet/);
+    expect(out.stderr).toMatch(/in\.json: warning KF502 nodes\[4\]: Vec3 "v" cannot be mapped/);
     expect(out.stderr).toMatch(
       /in\.json: Flower graph → out\.kleinflow\.json: 7 nodes, 5 edges, 2 notes above\n$/,
     );

@@ -9,16 +9,17 @@
 export const FLOAT32_MAX = 3.4028234663852886e38;
 
 /**
- * A scene number as the GPU can hold it: finite values beyond ±FLOAT32_MAX (a derived value such as
- * r² of a huge but finite radius) are clamped to it — compile() already reports them with KF405 —
- * so neither a uniform nor a literal is ever ∞. NaN is a bug upstream and throws.
+ * A scene number as the GPU can hold it: values beyond ±FLOAT32_MAX (a derived value such as r² of
+ * a huge but finite radius) are clamped to it — compile() already reports them with KF405 — so
+ * neither a uniform nor a literal is ever ∞. NaN passes through untouched: it is a bug upstream,
+ * which the uniform upload path refuses loudly (src/viewport/uniforms.ts) and a literal cannot hold.
  */
 export function gpuFloat(x: number): number {
-  if (Number.isNaN(x)) throw new Error('cannot give NaN to the GPU');
-  return Math.max(-FLOAT32_MAX, Math.min(FLOAT32_MAX, x));
+  return Number.isNaN(x) ? x : Math.max(-FLOAT32_MAX, Math.min(FLOAT32_MAX, x));
 }
 
 export function floatLiteral(value: number): string {
+  if (Number.isNaN(value)) throw new Error('cannot write NaN as a GLSL literal');
   const x = gpuFloat(value);
   const s = String(x === 0 ? 0 : x); // −0 → "0"
   return /[.e]/.test(s) ? s : `${s}.0`;

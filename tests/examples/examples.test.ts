@@ -9,6 +9,7 @@ import { parseDocumentText } from '../../nodes/graph/load.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { rasterize } from '../../shader-gen/raster.ts';
 import { exampleNames, examplePath } from '../../src/cli/examples.ts';
+import { nodesOverlap, sizer } from '../../src/editor/layout.ts';
 
 const names = exampleNames();
 
@@ -41,6 +42,8 @@ describe('examples', () => {
       expect(new Set(nodes.map((n) => n.position.join(','))).size).toBe(nodes.length);
       const render = nodes.find((n) => n.type === 'render')!;
       expect(Math.max(...nodes.map((n) => n.position[0]))).toBe(render.position[0]);
+      // With the editor's own node sizes nothing overlaps, so the example opens exactly as saved.
+      expect(nodesOverlap(loaded.doc, sizer(loaded.doc, registry))).toBe(false);
     });
 
     it('renders a 64×64 picture that is not blank', () => {

@@ -1,7 +1,8 @@
 /**
  * Frames the graph whenever a document is loaded (`frameKey` changes) once React Flow has measured
- * the new nodes: fit it, but never below a readable zoom; a graph taller than the pane at that
- * zoom is aligned to its top (its headers stay visible) instead of being cut at both ends.
+ * the new nodes: fit it, but never below a readable zoom; a graph taller (wider) than the pane at
+ * that zoom is aligned to its top (left: where the construction starts) instead of being cut at
+ * both ends.
  */
 import { type Edge, useNodesInitialized, useReactFlow } from '@xyflow/react';
 import { type RefObject, useEffect, useRef } from 'react';
@@ -10,6 +11,7 @@ import type { KfNode } from './flow-model.ts';
 import { FIT_VIEW } from './layout.ts';
 
 const TOP_MARGIN_PX = 56;
+const LEFT_MARGIN_PX = 24;
 
 export function useFrameGraph(
   frameKey: number,
@@ -35,11 +37,19 @@ export function useFrameGraph(
     if (!current || !initialized || nodes.some((n) => !n.measured)) return;
     pending.current = false;
     void flow.fitView(FIT_VIEW).then(() => {
-      const { x, zoom } = flow.getViewport();
+      const fitted = flow.getViewport();
+      const { zoom } = fitted;
       const bounds = flow.getNodesBounds(flow.getNodes());
       const height = pane.current?.clientHeight ?? 0;
-      if (bounds.height * zoom + 2 * TOP_MARGIN_PX > height) {
-        void flow.setViewport({ x, y: TOP_MARGIN_PX - bounds.y * zoom, zoom });
+      const width = pane.current?.clientWidth ?? 0;
+      const tooTall = bounds.height * zoom + 2 * TOP_MARGIN_PX > height;
+      const tooWide = bounds.width * zoom + 2 * LEFT_MARGIN_PX > width;
+      if (tooTall || tooWide) {
+        void flow.setViewport({
+          x: tooWide ? LEFT_MARGIN_PX - bounds.x * zoom : fitted.x,
+          y: tooTall ? TOP_MARGIN_PX - bounds.y * zoom : fitted.y,
+          zoom,
+        });
       }
     });
   }, [initialized, doc, nodes, flow, pane]);

@@ -5,11 +5,11 @@
  * wrong ports and types; extreme numbers and number-like strings). Every choice comes from
  * fast-check, so a fixed seed gives the same documents every run.
  */
-import { readdirSync, readFileSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
 import fc from 'fast-check';
 import { canConnect } from '../../nodes/core/ports.ts';
 import { registry } from '../../nodes/types/index.ts';
-import { EXAMPLES_DIR } from '../support/examples.ts';
+import { exampleNames, examplePath } from '../../src/cli/examples.ts';
 
 type Json = null | boolean | number | string | Json[] | { [key: string]: Json };
 type JsonObject = { [key: string]: Json };
@@ -99,10 +99,10 @@ export interface Example {
 
 /** Every examples/*.kleinflow.json, read when the test runs. */
 export function readExamples(): Example[] {
-  return readdirSync(EXAMPLES_DIR)
-    .filter((f) => f.endsWith('.kleinflow.json'))
-    .sort()
-    .map((f) => ({ name: f, doc: JSON.parse(readFileSync(`${EXAMPLES_DIR}${f}`, 'utf8')) as JsonObject }));
+  return exampleNames().map((name) => ({
+    name: `${name}.kleinflow.json`,
+    doc: JSON.parse(readFileSync(examplePath(name), 'utf8')) as JsonObject,
+  }));
 }
 
 /** Every [container, key] inside `root` (objects and arrays, depth-first, document order). */

@@ -4,15 +4,16 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, describe, expect, it } from 'vitest';
 import { compile, shadertoySource } from '../../../../shader-gen/compile.ts';
+import { examplePath } from '../../../../src/cli/examples.ts';
 import { runCli } from '../../../cli/run-cli.ts';
 import { shadertoyWrapper, validateShaders } from '../../../shader-gen/support/glslang.ts';
-import { EXAMPLES_DIR, loadExample } from '../../../support/examples.ts';
+import { loadExample } from '../../../support/examples.ts';
 
 const dir = mkdtempSync(join(tmpdir(), 'kleinflow-glsl-'));
 afterAll(() => rmSync(dir, { recursive: true, force: true }));
 
 const example = 'hyperbolic-237';
-const graph = `${EXAMPLES_DIR}${example}.kleinflow.json`;
+const graph = examplePath(example);
 
 describe('kleinflow glsl', () => {
   it('prints the baked colour shader: the same text as compile(), valid GLSL ES 3.00', () => {

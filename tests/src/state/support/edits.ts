@@ -4,27 +4,24 @@
  * document. Some edits are deliberately invalid (a wire to a missing port, removing ids that do
  * not exist, adding a node whose id is taken): the store must refuse them cleanly.
  */
-import { readdirSync, readFileSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
 import fc from 'fast-check';
 import { emptyDocument, type GraphDoc } from '../../../../nodes/graph/document.ts';
 import { parseDocumentText } from '../../../../nodes/graph/load.ts';
 import { registry } from '../../../../nodes/types/index.ts';
+import { exampleNames, examplePath } from '../../../../src/cli/examples.ts';
 import { newNode } from '../../../../src/editor/new-node.ts';
 import { copyNodes, preparePaste } from '../../../../src/state/clipboard.ts';
 import { idAllocator } from '../../../../src/state/ids.ts';
 import type { EditorStore } from '../../../../src/state/store.ts';
-import { EXAMPLES_DIR } from '../../../support/examples.ts';
 
 /** Every example document, then the empty one: start documents are picked from this list. */
 export const START_DOCS: readonly GraphDoc[] = [
-  ...readdirSync(EXAMPLES_DIR)
-    .filter((f) => f.endsWith('.kleinflow.json'))
-    .sort()
-    .map((f) => {
-      const loaded = parseDocumentText(readFileSync(`${EXAMPLES_DIR}${f}`, 'utf8'));
-      if (!loaded.ok) throw new Error(`${f} does not load`);
-      return loaded.doc;
-    }),
+  ...exampleNames().map((f) => {
+    const loaded = parseDocumentText(readFileSync(examplePath(f), 'utf8'));
+    if (!loaded.ok) throw new Error(`${f} does not load`);
+    return loaded.doc;
+  }),
   emptyDocument('empty'),
 ];
 

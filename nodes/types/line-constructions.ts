@@ -33,40 +33,41 @@ export const perpendicularBisectorNode = defineNode({
   ...pointHandles('a', 'b'),
 });
 
-export const parallelLineNode = defineNode({
-  type: 'parallel-line',
-  version: 1,
-  label: 'Parallel line',
-  category: 'Construction',
-  color: '#4ecdc4',
-  doc: 'The line through a point parallel to a line (same direction).',
-  inputs: { line: lineIn, point: pointInput('through', 0, 1) },
-  outputs: lineOut,
-  params: { visible: VISIBLE },
-  evaluate: ({ inputs }) => {
-    const line = inputs.line as Line;
-    if (isDegenerateLine(line)) return fail(noLine);
-    return { outputs: { line: lineAlong(inputs.point as Vec2, sub(line.b, line.a)) } };
-  },
-  overlay: lineOverlay,
-  ...pointHandles('point'),
-});
+/**
+ * The line through a point whose direction is a given line's direction d turned by `turn`
+ * (identity: parallel; perp, d ↦ (−d_y, d_x): perpendicular).
+ */
+function lineThroughPoint(type: string, label: string, doc: string, turn: (d: Vec2) => Vec2) {
+  return defineNode({
+    type,
+    version: 1,
+    label,
+    category: 'Construction',
+    color: '#4ecdc4',
+    doc,
+    inputs: { line: lineIn, point: pointInput('through', 0, 1) },
+    outputs: lineOut,
+    params: { visible: VISIBLE },
+    evaluate: ({ inputs }) => {
+      const line = inputs.line as Line;
+      if (isDegenerateLine(line)) return fail(noLine);
+      return { outputs: { line: lineAlong(inputs.point as Vec2, turn(sub(line.b, line.a))) } };
+    },
+    overlay: lineOverlay,
+    ...pointHandles('point'),
+  });
+}
 
-export const perpendicularLineNode = defineNode({
-  type: 'perpendicular-line',
-  version: 1,
-  label: 'Perpendicular line',
-  category: 'Construction',
-  color: '#4ecdc4',
-  doc: "The line through a point at right angles to a line (its direction is the line's turned by +90°).",
-  inputs: { line: lineIn, point: pointInput('through', 0, 1) },
-  outputs: lineOut,
-  params: { visible: VISIBLE },
-  evaluate: ({ inputs }) => {
-    const line = inputs.line as Line;
-    if (isDegenerateLine(line)) return fail(noLine);
-    return { outputs: { line: lineAlong(inputs.point as Vec2, perp(sub(line.b, line.a))) } };
-  },
-  overlay: lineOverlay,
-  ...pointHandles('point'),
-});
+export const parallelLineNode = lineThroughPoint(
+  'parallel-line',
+  'Parallel line',
+  'The line through a point parallel to a line (same direction).',
+  (d) => d,
+);
+
+export const perpendicularLineNode = lineThroughPoint(
+  'perpendicular-line',
+  'Perpendicular line',
+  "The line through a point at right angles to a line (its direction is the line's turned by +90°).",
+  perp,
+);

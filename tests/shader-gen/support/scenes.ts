@@ -3,20 +3,20 @@
  * the examples do not use). Built directly as Scene values, so they stay the same whatever the
  * node types do; every element kind and every colouring mode appears.
  */
-import type { Coloring, Scene, SceneElement, SeedSpec, TileSpec } from '../../../nodes/core/scene.ts';
+import {
+  type Coloring,
+  DEFAULT_TILE,
+  type Scene,
+  type SceneElement,
+  type SeedSpec,
+  type TileSpec,
+} from '../../../nodes/core/scene.ts';
 import { BUILTIN_PICTURE, type Circle, type Vec2 } from '../../../nodes/core/values.ts';
 import { twoCircleRegions } from '../../../nodes/geometry/mobius.ts';
 
 export const COLORINGS: Readonly<Record<Coloring['mode'], Coloring>> = {
   'depth-hsv': { mode: 'depth-hsv', hueOffset: 0.01, hueStep: 0.05, saturation: 0.8, value: 0.95 },
-  cosine: {
-    mode: 'cosine',
-    a: [0.5, 0.5, 0.5],
-    b: [0.5, 0.5, 0.5],
-    c: [1, 1, 1],
-    d: [0, 0.33, 0.67],
-    step: 0.07,
-  },
+  cosine: DEFAULT_TILE.coloring,
   parity: { mode: 'parity', even: [0.93, 0.91, 0.85], odd: [0.13, 0.16, 0.24] },
   image: { mode: 'image', image: BUILTIN_PICTURE, center: [0.45, 0.3], size: 0.9, rotation: 0.3 },
   'limit-set': { mode: 'limit-set', glow: 4 },

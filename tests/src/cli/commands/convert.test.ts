@@ -1,40 +1,11 @@
 import { describe, expect, it } from 'vitest';
 import { parseDocumentText } from '../../../../nodes/graph/load.ts';
-import type { CliIo } from '../../../../src/cli/command.ts';
 import { main } from '../../../../src/cli/main.ts';
 import { serializeDocument } from '../../../../src/io/document-io.ts';
 import { encodePng } from '../../../../src/io/png.ts';
 import { embedGraph } from '../../../../src/io/png-graph.ts';
+import { memoryIo } from '../../../support/memory-io.ts';
 import { fedge, fnode, fpoint, graph, lineMirror } from '../../io/flower/support/flower-fixture.ts';
-
-/** A CliIo over an in-memory file table, capturing stdout and stderr. */
-function memoryIo(files: Record<string, Uint8Array | string>) {
-  const out = { stdout: '', stderr: '' };
-  const table = new Map(
-    Object.entries(files).map(([k, v]) => [k, typeof v === 'string' ? new TextEncoder().encode(v) : v]),
-  );
-  const io: CliIo = {
-    stdout: {
-      write: (t) => {
-        out.stdout += t;
-      },
-    },
-    stderr: {
-      write: (t) => {
-        out.stderr += t;
-      },
-    },
-    readFile: async (path) => {
-      const data = table.get(path);
-      if (!data) throw Object.assign(new Error('missing'), { code: 'ENOENT' });
-      return data;
-    },
-    writeFile: async (path, data) =>
-      void table.set(path, typeof data === 'string' ? new TextEncoder().encode(data) : data),
-  };
-  const text = (path: string) => new TextDecoder().decode(table.get(path));
-  return { io, out, text };
-}
 
 const flower = JSON.stringify(
   graph(lineMirror('m', [0, 0], [1, 0], false), {

@@ -2,14 +2,13 @@
  * The editor end to end in real Chromium (SwiftShader WebGL2): the app is built once with Vite,
  * served with `vite preview`, and driven with the mouse and keyboard like a person would.
  */
-import { mkdirSync, mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { mkdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import type { Browser, BrowserContext, Page } from 'playwright-core';
-import { build, type PreviewServer, preview } from 'vite';
+import type { BrowserContext, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
-import { launchChromium } from '../support/browser.ts';
+import { exampleNames, examplePath } from '../../src/cli/examples.ts';
+import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
 import {
   addNode,
   connect,
@@ -25,47 +24,28 @@ import {
   waitRendered,
 } from './editor-page.ts';
 
-const root = join(import.meta.dirname, '..', '..');
-let outDir = '';
-let server: PreviewServer;
-let browser: Browser;
+let app: ServedApp;
 let context: BrowserContext;
 let page: Page;
 const problems: string[] = [];
 
-const exampleTitles = readdirSync(join(root, 'examples'))
-  .filter((f) => f.endsWith('.kleinflow.json'))
-  .map((f) => JSON.parse(readFileSync(join(root, 'examples', f), 'utf8')).meta?.title as string);
+const exampleTitles = exampleNames().map(
+  (name) => JSON.parse(readFileSync(examplePath(name), 'utf8')).meta?.title as string,
+);
 
 beforeAll(async () => {
-  outDir = mkdtempSync(join(tmpdir(), 'kleinflow-e2e-'));
-  await build({ root, logLevel: 'error', build: { outDir, emptyOutDir: true } });
-  server = await preview({
-    root,
-    logLevel: 'error',
-    build: { outDir },
-    preview: { port: 0, host: '127.0.0.1' },
-  });
-  const url = server.resolvedUrls!.local[0];
-  browser = await launchChromium();
-  context = await browser.newContext({ viewport: { width: 1600, height: 960 }, acceptDownloads: true });
-  await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(url).origin });
-  // A small render pane keeps SwiftShader fast: the graph gets 75% of the width.
-  await context.addInitScript(() => {
-    if (!localStorage.getItem('kleinflow.split')) localStorage.setItem('kleinflow.split', '0.75');
-  });
+  app = await serveApp();
+  context = await app.newContext();
   page = await context.newPage();
   page.on('console', (m) => {
     if (m.type() === 'error') problems.push(`console: ${m.text()}`);
   });
   page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  await page.goto(url);
+  await page.goto(app.url);
 }, 180_000);
 
 afterAll(async () => {
-  await browser?.close();
-  await new Promise((r) => server?.httpServer.close(r));
-  if (outDir) rmSync(outDir, { recursive: true, force: true });
+  await app?.close();
 });
 
 describe('editor', () => {
@@ -276,8 +256,8 @@ describe('editor', () => {
     for (let i = 0; i < 4; i++) await page.mouse.wheel(0, 300);
     await waitRendered(page);
     const tiling = await renderPixels(page);
-    mkdirSync(join(root, 'test-artifacts'), { recursive: true });
-    await page.screenshot({ path: join(root, 'test-artifacts', 'editor-333.png') });
+    mkdirSync(join(repoRoot, 'test-artifacts'), { recursive: true });
+    await page.screenshot({ path: join(repoRoot, 'test-artifacts', 'editor-333.png') });
     expect(tiling.sd).toBeGreaterThan(30);
     expect(tiling.colours).toBeGreaterThan(20);
 
@@ -321,7 +301,7 @@ describe('editor', () => {
     await waitRendered(page);
     expect(thumbDiff(await renderPixels(page), tiling)).toBeLessThan(1);
 
-    await page.screenshot({ path: join(root, 'test-artifacts', 'editor.png') });
+    await page.screenshot({ path: join(repoRoot, 'test-artifacts', 'editor.png') });
 
     const [download] = await Promise.all([
       page.waitForEvent('download'),

@@ -36,6 +36,10 @@ export const timeNode = defineNode({
   },
 });
 
+/** The angle of a cycle at time t: α = 2π·t/period + phase (radians). */
+export const cycleAngle = (t: number, period: number, phase = 0): number =>
+  2 * Math.PI * (t / period) + phase;
+
 /** offset + amplitude·sin(2π·t/period + phase). */
 export const sineWave = (
   t: number,
@@ -43,7 +47,7 @@ export const sineWave = (
   amplitude: number,
   phase: number,
   offset: number,
-): number => offset + amplitude * Math.sin(2 * Math.PI * (t / period) + phase);
+): number => offset + amplitude * Math.sin(cycleAngle(t, period, phase));
 
 export const sineNode = defineNode({
   type: 'sine',
@@ -77,7 +81,7 @@ export const sineNode = defineNode({
 
 /** c + r·(cos α, sin α) with α = 2π·t/period + phase. */
 export function circularPosition(c: Vec2, r: number, t: number, period: number, phase: number): Vec2 {
-  const a = 2 * Math.PI * (t / period) + phase;
+  const a = cycleAngle(t, period, phase);
   return [c[0] + r * Math.cos(a), c[1] + r * Math.sin(a)];
 }
 
@@ -127,6 +131,6 @@ export const circularMotionNode = defineNode({
     const a = Math.atan2(to[1] - c[1], to[0] - c[0]);
     const t = ctx.inputs.t as number;
     const T = ctx.inputs.period as number;
-    return { radius: dist(c, to), phase: a - 2 * Math.PI * (t / T) };
+    return { radius: dist(c, to), phase: a - cycleAngle(t, T) };
   },
 });

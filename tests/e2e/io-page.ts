@@ -33,7 +33,14 @@ export async function dropFile(page: Page, name: string, buffer: Buffer, mimeTyp
   );
   await page.dispatchEvent('body', 'dragenter', { dataTransfer: dt });
   await page.dispatchEvent('body', 'dragover', { dataTransfer: dt });
-  const overlay = await page.getByTestId('drop-overlay').isVisible();
+  // React renders the overlay on its next commit: wait for it (isVisible() alone does not wait).
+  const overlay = await page
+    .getByTestId('drop-overlay')
+    .waitFor({ state: 'visible', timeout: 5_000 })
+    .then(
+      () => true,
+      () => false,
+    );
   await page.dispatchEvent('body', 'drop', { dataTransfer: dt });
   return overlay;
 }

@@ -3,6 +3,7 @@
  * the x-axis) and π/r (on line 2), as in math.md. q or r may be ∞ (written 0): cos(π/∞) = 1.
  */
 import type { Vec2 } from '../core/values.ts';
+import { cosPiOver, sinPiOver } from './angles.ts';
 
 export type TriangleGeometry = 'spherical' | 'euclidean' | 'hyperbolic';
 
@@ -30,14 +31,15 @@ export function triangleGeometry(p: number, q: number, r: number): TriangleGeome
  * the line p·u = size with inside p·u > size.
  */
 export function triangleMirrors(p: number, q: number, r: number, size = 1): TriangleMirrors {
-  const a = Math.PI / p;
-  const cq = q === 0 ? 1 : Math.cos(Math.PI / q);
-  const cr = r === 0 ? 1 : Math.cos(Math.PI / r);
+  const cp = cosPiOver(p);
+  const sp = sinPiOver(p);
+  const cq = cosPiOver(q);
+  const cr = cosPiOver(r);
   const uy = cq;
-  const ux = (cr + Math.cos(a) * cq) / Math.sin(a);
+  const ux = (cr + cp * cq) / sp;
   const geometry = triangleGeometry(p, q, r);
   const line1 = { q: [0, 0] as Vec2, n: [0, 1] as Vec2 };
-  const line2 = { q: [0, 0] as Vec2, n: [Math.sin(a), -Math.cos(a)] as Vec2 };
+  const line2 = { q: [0, 0] as Vec2, n: [sp, -cp] as Vec2 };
   if (geometry === 'euclidean') {
     const l = Math.hypot(ux, uy);
     const u: Vec2 = [ux / l, uy / l];

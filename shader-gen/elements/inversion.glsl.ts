@@ -6,21 +6,21 @@ import type { InversionElement } from '../../nodes/core/scene.ts';
 import { type GlslElementTwin, glslStepBlock } from '../glsl/element-twin.ts';
 import { floatLiteral } from '../glsl/literal.ts';
 import { glslFunction } from '../glsl/snippet.ts';
-import { CENTRE_GUARD } from './inversion.ts';
+import { CENTRE_GUARD, CENTRE_SHIFT } from './inversion.ts';
 
 /**
  * invertOffset(p, s, c, r, r², dx, dy, d²) with (dx, dy) = p − c and d² = dx² + dy² already at
- * hand (the inversion's own side test computed them): k = min(r²/d², G²), p ← c + k(dx, dy) +
- * (r·G, 0) at the centre only, s ← s·k (same operations, same order as inversion.ts; r²/0 is +∞
- * in IEEE arithmetic and min(+∞, G²) = G²; step(d², 0) = 1 exactly when d² = 0, as d² ≥ 0). No
- * branch and no `?:`: see inversion.ts CENTRE_GUARD.
+ * hand (the inversion's own side test computed them): k = min(r²/d², G²), p ← c + (dx + r/G, dy)·k,
+ * s ← s·k (same operations, same order as inversion.ts; r²/0 is +∞ in IEEE arithmetic and
+ * min(+∞, G²) = G², so the centre goes to c + (r·G, 0)). No branch and no `?:`: see inversion.ts
+ * CENTRE_GUARD.
  */
 export const invertOffsetGlsl = glslFunction(
   'invertOffset',
   `
 void invertOffset(inout vec2 p, inout float s, vec2 c, float r, float r2, float dx, float dy, float d2) {
   float k = min(r2 / d2, ${floatLiteral(CENTRE_GUARD * CENTRE_GUARD)});
-  p = vec2(c.x + dx * k + step(d2, 0.0) * (r * ${floatLiteral(CENTRE_GUARD)}), c.y + dy * k);
+  p = vec2(c.x + (dx + r * ${floatLiteral(CENTRE_SHIFT)}) * k, c.y + dy * k);
   s *= k;
 }`,
 );

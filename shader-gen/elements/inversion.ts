@@ -4,13 +4,19 @@ import type { ElementKind, IisState } from './element-kind.ts';
 
 /**
  * The point exactly at an inversion centre maps to ∞ (r²/0): it goes instead to the far point
- * c + (r·G, 0) with scale G², as if it lay r/G to the right of c (G = CENTRE_GUARD), so the run
- * stays finite and the GPU twin does the same. Written without a branch or a choice, so that the
- * GPU twin is pure arithmetic (SwiftShader pays for an `if` or a `?:` here with about a third of
- * an inversion-heavy frame, tests/bench/shader-ratio.ts): k = min(r²/|p−c|², G²) — r²/0 = ∞
- * becomes G², which also caps k within r/G of the centre — and x gains r·G only at the centre.
+ * c + (r·G, 0) with scale G², so the run stays finite and the GPU twin does the same (G =
+ * CENTRE_GUARD). The guard is two operations with no branch and no choice — SwiftShader pays for an
+ * `if` or a `?:` here with about a third of an inversion-heavy frame, and for each further operation
+ * with a few per cent (tests/bench/shader-ratio.ts):
+ *   k = min(r²/|d|², G²),  σ(p) = c + (d + (r/G, 0))·k      (d = p − c)
+ * r²/0 = ∞ becomes G², so the centre lands on c + (r/G)·G² = c + (r·G, 0). Elsewhere the shift
+ * (r/G)·k moves the exact image c + d·k by a fraction r/(G·|d|) of its distance from c: 1e-9 at the
+ * rim, 1e-7 at |d| = r/100 — below float32 resolution where the GPU works — and it only grows for
+ * points within r/100 of the centre, which all land beyond 100·r, far out where the tile is.
  */
-export const CENTRE_GUARD = 1e9;
+export const CENTRE_GUARD = 1e18;
+/** r/G as r · (1/G): one multiplication, the same in both twins. */
+export const CENTRE_SHIFT = 1 / CENTRE_GUARD;
 
 /** Inverts the state's point in (cx, cy, r) unconditionally; shared by the generator kinds. */
 export function invertState(st: IisState, cx: number, cy: number, r: number): void {
@@ -18,8 +24,7 @@ export function invertState(st: IisState, cx: number, cy: number, r: number): vo
   const dy = st.y - cy;
   const d2 = dx * dx + dy * dy;
   const k = Math.min((r * r) / d2, CENTRE_GUARD * CENTRE_GUARD);
-  // At the centre dx·k = dy·k = 0: x = cx + r·G, y = cy, scale G².
-  st.x = cx + dx * k + (d2 === 0 ? 1 : 0) * (r * CENTRE_GUARD);
+  st.x = cx + (dx + r * CENTRE_SHIFT) * k;
   st.y = cy + dy * k;
   st.s *= k;
 }

@@ -1,11 +1,15 @@
 /**
  * Generated vs hand-written shader speed (part of `npm run bench`; run alone with
- * `npx tsx tests/bench/shader-ratio.ts [rounds]`). For every example with a hand-written probe
- * shader (tests/bench/hand-written/), one Chromium session renders the generated uniform probe
- * program, the generated baked one and the hand-written one at 512², INTERLEAVED (U B H U B H …)
- * for ROUNDS rounds, each frame ended by readPixels; prints the median frame times and the ratios
- * uniform/hand and baked/hand (median of the per-round ratios: each round's three frames ran under
- * the same machine load). Never fails on a time; compare ratios, not absolute times.
+ * `npx tsx tests/bench/shader-ratio.ts [rounds]`). For every example with hand-written probe
+ * shaders (tests/bench/hand-written/), one Chromium session renders four programs at 512²,
+ * INTERLEAVED (U B H HU U B H HU …) for ROUNDS rounds, each frame ended by readPixels: the generated
+ * uniform program (U), the generated baked one (B), the hand-written one with constants (H) and the
+ * hand-written one with the values as uniforms (HU). Prints the median frame times and the ratios
+ * (medians of the per-round ratios: each round's frames ran under the same machine load):
+ * baked/hand and uniform/hand-uniform compare like with like; uniform/hand shows what values as
+ * uniforms cost at all on this renderer (SwiftShader folds constants into its machine code and
+ * reloads uniforms, so no uniform shader, hand-written or generated, comes near the constant one
+ * there). Never fails on a time; compare ratios, not absolute times.
  */
 import { fileURLToPath } from 'node:url';
 import { compile } from '../../shader-gen/compile.ts';
@@ -14,8 +18,8 @@ import { launchChromium } from '../support/browser.ts';
 import { bundle } from '../support/bundle.ts';
 import { HAND_WRITTEN } from './hand-written/index.ts';
 
-/** Rounds of U B H frames (at least 9 for a steady median on a shared 2-core machine). */
-const ROUNDS = 15;
+/** Rounds of U B H HU frames (a ratio moves by about ±0.02 between runs at 25–31 rounds here). */
+const ROUNDS = 31;
 
 const median = (xs: readonly number[]) => {
   const s = [...xs].sort((a, b) => a - b);
@@ -24,7 +28,16 @@ const median = (xs: readonly number[]) => {
 const ms = (x: number) => x.toFixed(1);
 const times = (x: number) => `${x.toFixed(2)}×`;
 
-const HEADER = ['example', 'uniform ms', 'baked ms', 'hand ms', 'uniform/hand', 'baked/hand'];
+const HEADER = [
+  'example',
+  'uniform ms',
+  'baked ms',
+  'hand ms',
+  'hand-uniform ms',
+  'baked/hand',
+  'uniform/hand-uniform',
+  'uniform/hand',
+];
 
 function printTable(rows: string[][]): void {
   const widths = HEADER.map((h, i) => Math.max(h.length, ...rows.map((r) => r[i].length)));
@@ -43,11 +56,12 @@ export async function run(rounds = ROUNDS): Promise<void> {
     await page.setContent('<!doctype html><canvas width="1" height="1"></canvas>');
     await page.addScriptTag({ content: script });
     console.log(
-      `\nGenerated vs hand-written probe shader, 512², ${rounds} interleaved rounds (U B H …), ` +
-        'each frame ended by readPixels; ratios are medians of the per-round ratios.\n',
+      `\nGenerated vs hand-written probe shaders, 512², ${rounds} interleaved rounds (U B H HU …), ` +
+        'each frame ended by readPixels; ratios are medians of the per-round ratios.\n' +
+        'hand = values as constants; hand-uniform = the same shader reading the values from uniforms.\n',
     );
     const rows: string[][] = [];
-    for (const { example, source } of HAND_WRITTEN) {
+    for (const { example, source, uniformSource } of HAND_WRITTEN) {
       const scene = exampleScene(example);
       const uniform = compile(scene, { variant: 'probe' });
       const baked = compile(scene, { variant: 'probe', baked: true });
@@ -55,20 +69,23 @@ export async function run(rounds = ROUNDS): Promise<void> {
         uniform: { vertex: uniform.vertexSource, fragment: uniform.source, uniforms: uniform.uniforms },
         baked: { vertex: baked.vertexSource, fragment: baked.source, uniforms: baked.uniforms },
         hand: { vertex: uniform.vertexSource, fragment: source, uniforms: [] },
+        handUniform: { vertex: uniform.vertexSource, fragment: uniformSource, uniforms: uniform.uniforms },
       };
       const t = await page.evaluate(([s, p, n]) => window.kfBench.interleaved(s, p, n), [
         scene,
         programs,
         rounds,
       ] as const);
-      const perRound = (name: 'uniform' | 'baked') => median(t[name].map((x, r) => x / t.hand[r]));
+      const perRound = (a: string, b: string) => median(t[a].map((x, r) => x / t[b][r]));
       rows.push([
         example,
         ms(median(t.uniform)),
         ms(median(t.baked)),
         ms(median(t.hand)),
-        times(perRound('uniform')),
-        times(perRound('baked')),
+        ms(median(t.handUniform)),
+        times(perRound('baked', 'hand')),
+        times(perRound('uniform', 'handUniform')),
+        times(perRound('uniform', 'hand')),
       ]);
     }
     printTable(rows);

@@ -181,22 +181,26 @@ describe('baked program = uniform program', () => {
 
 describe('hand-written bench shaders draw the same picture as the generated ones', () => {
   for (const shader of HAND_WRITTEN) {
-    it(`${shader.example}`, async () => {
-      const { scene } = loadExample(shader.example);
-      const generated = await renderProbe(scene);
-      const index = await gpu.program(compile(scene).vertexSource, shader.source);
-      const hand = await gpu.render(index, [], scene.view);
-      const same = compareImages(generated, hand);
-      const vsCpu = compareWithCpu(scene, hand);
-      row('hand-written and Shadertoy shaders', `hand-written ${shader.example}`, {
-        'same as generated': percent(same.agreement),
-        'vs CPU': percent(vsCpu.agreement),
-        'GPU ms': Math.round(hand.ms),
-        'generated GPU ms': Math.round(generated.ms),
+    for (const values of ['constants', 'uniforms'] as const) {
+      it(`${shader.example} (values as ${values})`, async () => {
+        const { scene } = loadExample(shader.example);
+        const generated = await renderProbe(scene);
+        const program = compile(scene, { variant: 'probe' });
+        const source = values === 'constants' ? shader.source : shader.uniformSource;
+        const index = await gpu.program(program.vertexSource, source);
+        const hand = await gpu.render(index, values === 'constants' ? [] : program.uniforms, scene.view);
+        const same = compareImages(generated, hand);
+        const vsCpu = compareWithCpu(scene, hand);
+        row('hand-written and Shadertoy shaders', `hand-written ${shader.example} (${values})`, {
+          'same as generated': percent(same.agreement),
+          'vs CPU': percent(vsCpu.agreement),
+          'GPU ms': Math.round(hand.ms),
+          'generated GPU ms': Math.round(generated.ms),
+        });
+        expect(same.agreement).toBeGreaterThanOrEqual(0.999);
+        expect(vsCpu.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
       });
-      expect(same.agreement).toBeGreaterThanOrEqual(0.999);
-      expect(vsCpu.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
-    });
+    }
   }
 });
 

@@ -39,11 +39,10 @@ describe('generated GLSL passes glslangValidator and WebGL identifier rules', ()
   const shaders: ShaderToCheck[] = [
     ...examples.flatMap((name) => shadersOf(`example-${name}`, loadExample(name).scene)),
     ...Object.entries(HAND_MADE_SCENES).flatMap(([name, scene]) => shadersOf(`scene-${name}`, scene)),
-    ...HAND_WRITTEN.map((h) => ({
-      name: `hand-written-${h.example}`,
-      source: h.source,
-      stage: 'frag' as const,
-    })),
+    ...HAND_WRITTEN.flatMap((h) => [
+      { name: `hand-written-${h.example}`, source: h.source, stage: 'frag' as const },
+      { name: `hand-written-uniform-${h.example}`, source: h.uniformSource, stage: 'frag' as const },
+    ]),
     { name: 'vertex', source: compile(HAND_MADE_SCENES.empty).vertexSource, stage: 'vert' },
   ];
   const results = validateShaders(shaders);
@@ -51,7 +50,7 @@ describe('generated GLSL passes glslangValidator and WebGL identifier rules', ()
   it('covers every example, every hand-made scene and every variant', () => {
     expect(examples.length).toBeGreaterThan(0);
     expect(shaders.length).toBe(
-      (examples.length + Object.keys(HAND_MADE_SCENES).length) * 5 + HAND_WRITTEN.length + 1,
+      (examples.length + Object.keys(HAND_MADE_SCENES).length) * 5 + HAND_WRITTEN.length * 2 + 1,
     );
   });
 

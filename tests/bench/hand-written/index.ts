@@ -1,20 +1,33 @@
 /**
- * Hand-written probe shaders, one per example they were written for: what a careful person would
- * write for that one scene (constants inline, no generality). The bench compares the generated
- * program's speed with these; tests/parity checks that they compute the same picture.
+ * Hand-written probe shaders, one pair per example they were written for: what a careful person
+ * would write for that one scene — once with its values as constants (no generality: the physical
+ * limit, compared with the baked program) and once with them as uniforms in compile()'s `u_el`
+ * layout (what a shader must do if a drag is not to recompile it: compared like for like with the
+ * uniform program). The bench compares the generated programs' speed with these; tests/parity
+ * checks that they compute the same picture.
  */
 import { readFileSync } from 'node:fs';
 
 export interface HandWrittenShader {
   /** The example (examples/<example>.kleinflow.json) the shader hard-codes. */
   readonly example: string;
-  /** The fragment shader (probe output, frame uniforms as in compile()). */
+  /** The fragment shader with the scene's values as constants (probe output, frame uniforms as in compile()). */
   readonly source: string;
+  /** The same shader reading the scene's values from compile()'s uniforms (`u_el`, `u_maxIterations`). */
+  readonly uniformSource: string;
 }
 
 const read = (file: string) => readFileSync(new URL(`./${file}`, import.meta.url), 'utf8');
 
 export const HAND_WRITTEN: readonly HandWrittenShader[] = [
-  { example: 'hyperbolic-237', source: read('hyperbolic-237.frag') },
-  { example: 'apollonian-gasket', source: read('apollonian-gasket.frag') },
+  {
+    example: 'hyperbolic-237',
+    source: read('hyperbolic-237.frag'),
+    uniformSource: read('hyperbolic-237.uniform.frag'),
+  },
+  {
+    example: 'apollonian-gasket',
+    source: read('apollonian-gasket.frag'),
+    uniformSource: read('apollonian-gasket.uniform.frag'),
+  },
 ];

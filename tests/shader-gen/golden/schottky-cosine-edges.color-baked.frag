@@ -19,8 +19,8 @@ bool inRegion(vec4 g, vec2 p) {
 }
 
 void invertOffset(inout vec2 p, inout float s, vec2 c, float r, float r2, float dx, float dy, float d2) {
-  float k = min(r2 / d2, 1000000000000000000.0);
-  p = vec2(c.x + dx * k + step(d2, 0.0) * (r * 1000000000.0), c.y + dy * k);
+  float k = min(r2 / d2, 1e+36);
+  p = vec2(c.x + (dx + r * 1e-18) * k, c.y + dy * k);
   s *= k;
 }
 

@@ -10,9 +10,10 @@ import type { ElementKind, IisState } from './element-kind.ts';
  * with a few per cent (tests/bench/shader-ratio.ts):
  *   k = min(r²/|d|², G²),  σ(p) = c + (d + (r/G, 0))·k      (d = p − c)
  * r²/0 = ∞ becomes G², so the centre lands on c + (r/G)·G² = c + (r·G, 0). Elsewhere the shift
- * (r/G)·k moves the exact image c + d·k by a fraction r/(G·|d|) of its distance from c: 1e-9 at the
- * rim, 1e-7 at |d| = r/100 — below float32 resolution where the GPU works — and it only grows for
- * points within r/100 of the centre, which all land beyond 100·r, far out where the tile is.
+ * (r/G)·k moves the exact image c + d·k by a fraction r/(G·|d|) of its distance from c: 1e-18 at
+ * the rim, 1e-16 at |d| = r/100 — below float64 resolution there (dx + r/G rounds back to dx), far
+ * below float32's — and it only grows for points within r/100 of the centre, which all land beyond
+ * 100·r, far out where the tile is.
  */
 export const CENTRE_GUARD = 1e18;
 /** r/G as r · (1/G): one multiplication, the same in both twins. */

@@ -14,6 +14,7 @@ import type { ElementKind, IisState } from '../../shader-gen/elements/element-ki
 import { type PreparedElements, prepare, runIis } from '../../shader-gen/interpret.ts';
 import { pixelToWorld } from '../../shader-gen/view.ts';
 import { exampleNames, examplePath } from '../../src/cli/examples.ts';
+import { median } from './report.ts';
 
 const GRID = 512;
 const COUNT_GRID = 128;
@@ -26,8 +27,6 @@ export interface CpuBenchRow {
   readonly testsPerPoint: number;
   readonly meanDepth: number;
 }
-
-const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
 /** Runs the loop at every pixel centre of a size² grid; returns the summed depth. */
 function sweep(scene: Scene, prepared: PreparedElements, size: number): number {

@@ -15,6 +15,7 @@ import {
   setFrameUniforms,
   uploadUniforms,
 } from '../../src/viewport/uniforms.ts';
+import { median } from './report.ts';
 
 export const SIZE = 512;
 
@@ -75,11 +76,6 @@ function drawFrame(b: Pick<Built, 'gp' | 'uniforms'>, k: number, view: Scene['vi
   gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.FLOAT, pixel);
   return performance.now() - t0;
 }
-
-const median = (xs: number[]) => {
-  const s = [...xs].sort((a, b) => a - b);
-  return s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-};
 
 /** Median frame time over `frames` frames (after one warm-up). */
 function frameTime(b: Built, view: Scene['view'], frames: number): number {

@@ -11,6 +11,7 @@ import { exampleScene } from '../src/viewport/fixtures.ts';
 import { launchChromium } from '../support/browser.ts';
 import { bundle } from '../support/bundle.ts';
 import type { GpuBenchResult } from './gpu-page.ts';
+import { printTable } from './report.ts';
 
 /** Frames per median (the brief asks for at least 5). */
 const FRAMES = 5;
@@ -58,15 +59,6 @@ const HEADER = [
   'value edit ms',
 ];
 
-function printTable(rows: string[][]): void {
-  const widths = HEADER.map((h, i) => Math.max(h.length, ...rows.map((r) => r[i].length)));
-  const line = (cells: string[]) =>
-    cells.map((c, i) => (i === 0 ? c.padEnd(widths[i]) : c.padStart(widths[i]))).join('  ');
-  console.log(line(HEADER));
-  console.log(widths.map((w) => '-'.repeat(w)).join('  '));
-  for (const r of rows) console.log(line(r));
-}
-
 export async function run(): Promise<void> {
   const examplesDir = fileURLToPath(new URL('../../examples/', import.meta.url));
   const names = readdirSync(examplesDir)
@@ -107,7 +99,7 @@ export async function run(): Promise<void> {
         ]);
       }
     }
-    printTable(rows);
+    printTable(HEADER, rows);
     for (const name of hand.keys()) {
       if (!names.includes(name)) console.log(`(hand-written shader for ${name}: no such example, skipped)`);
     }

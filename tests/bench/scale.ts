@@ -11,6 +11,7 @@ import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { compile } from '../../shader-gen/compile.ts';
+import { median } from './report.ts';
 
 const RUNS = 15;
 /** Untimed runs first, so the JIT has compiled the hot paths (an editor evaluates on every drag). */
@@ -74,8 +75,6 @@ export function scaleGraph(nodes: number): GraphDoc {
     view: { center: [0, 0], scale: 8 },
   };
 }
-
-const median = (xs: number[]) => [...xs].sort((a, b) => a - b)[Math.floor(xs.length / 2)];
 
 /** Median wall-clock and CPU milliseconds of RUNS calls (CPU time is steadier on a shared machine). */
 function time(fn: () => void): { wall: number; cpu: number } {

@@ -17,14 +17,11 @@ import { exampleScene } from '../src/viewport/fixtures.ts';
 import { launchChromium } from '../support/browser.ts';
 import { bundle } from '../support/bundle.ts';
 import { HAND_WRITTEN } from './hand-written/index.ts';
+import { median, printTable } from './report.ts';
 
 /** Rounds of U B H HU frames (a ratio moves by about ±0.02 between runs at 25–31 rounds here). */
 const ROUNDS = 31;
 
-const median = (xs: readonly number[]) => {
-  const s = [...xs].sort((a, b) => a - b);
-  return s.length % 2 ? s[(s.length - 1) / 2] : (s[s.length / 2 - 1] + s[s.length / 2]) / 2;
-};
 const ms = (x: number) => x.toFixed(1);
 const times = (x: number) => `${x.toFixed(2)}×`;
 
@@ -38,15 +35,6 @@ const HEADER = [
   'uniform/hand-uniform',
   'uniform/hand',
 ];
-
-function printTable(rows: string[][]): void {
-  const widths = HEADER.map((h, i) => Math.max(h.length, ...rows.map((r) => r[i].length)));
-  const line = (cells: string[]) =>
-    cells.map((c, i) => (i === 0 ? c.padEnd(widths[i]) : c.padStart(widths[i]))).join('  ');
-  console.log(line(HEADER));
-  console.log(widths.map((w) => '-'.repeat(w)).join('  '));
-  for (const r of rows) console.log(line(r));
-}
 
 export async function run(rounds = ROUNDS): Promise<void> {
   const script = await bundle(fileURLToPath(new URL('./gpu-page.ts', import.meta.url)));
@@ -88,7 +76,7 @@ export async function run(rounds = ROUNDS): Promise<void> {
         times(perRound('uniform', 'hand')),
       ]);
     }
-    printTable(rows);
+    printTable(HEADER, rows);
   } finally {
     await browser.close();
   }

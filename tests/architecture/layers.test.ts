@@ -1,10 +1,22 @@
 /**
- * The layering of architecture.md: src → shader-gen → nodes, and nodes/ + shader-gen/ free of React,
- * the DOM and WebGL (they also run in the CLI and in workers). Scans the source files' imports.
+ * The layering of docs/architecture.md "Layers": src → shader-gen → nodes, nodes/ and shader-gen/
+ * free of React, the DOM, WebGL and Node built-ins (they run in the CLI and in the browser), and the
+ * folder rules inside src/. The checker is first shown to catch made-up offenders, then run on
+ * every source file of the project.
  */
 import { readdirSync, readFileSync, statSync } from 'node:fs';
-import { dirname, join, relative, resolve } from 'node:path';
+import { join, resolve } from 'node:path';
 import { describe, expect, it } from 'vitest';
+import {
+  checkFile,
+  checkFiles,
+  DOM_GLOBALS,
+  importsOf,
+  repoPath,
+  type SourceFile,
+  SRC_RULES,
+  stripCommentsAndStrings,
+} from './layer-rules.ts';
 
 const ROOT = resolve(import.meta.dirname, '../..');
 const SOURCE = /\.(ts|tsx|mts|js|mjs|jsx)$/;
@@ -19,88 +31,11 @@ function filesUnder(dir: string): string[] {
   return out;
 }
 
-/**
- * Removes comments and the contents of '…' / "…" strings (keeping template literals, whose text is
- * generated GLSL), so that words in comments and import paths are not mistaken for code.
- */
-function stripCommentsAndStrings(src: string): string {
-  let out = '';
-  let i = 0;
-  while (i < src.length) {
-    const c = src[i];
-    const next = src[i + 1];
-    if (c === '/' && next === '/') {
-      while (i < src.length && src[i] !== '\n') i++;
-    } else if (c === '/' && next === '*') {
-      const end = src.indexOf('*/', i + 2);
-      i = end < 0 ? src.length : end + 2;
-      out += ' ';
-    } else if (c === "'" || c === '"') {
-      i++;
-      while (i < src.length && src[i] !== c && src[i] !== '\n') i += src[i] === '\\' ? 2 : 1;
-      i++;
-      out += `${c}${c}`;
-    } else if (c === '`') {
-      // copy the template literal verbatim (its ${…} parts are code and stay visible)
-      let j = i + 1;
-      while (j < src.length && src[j] !== '`') j += src[j] === '\\' ? 2 : 1;
-      out += src.slice(i, j + 1);
-      i = j + 1;
-    } else {
-      out += c;
-      i++;
-    }
-  }
-  return out;
-}
+const project = (dir: string): SourceFile[] =>
+  filesUnder(join(ROOT, dir)).map((f) => ({ path: repoPath(ROOT, f), source: readFileSync(f, 'utf8') }));
 
-/** Module specifiers of static imports, re-exports, dynamic imports and require calls. */
-function importsOf(src: string): string[] {
-  const specs: string[] = [];
-  const patterns = [
-    /\bimport\s+(?:type\s+)?[^'";]*?\bfrom\s*['"]([^'"]+)['"]/g,
-    /\bexport\s+(?:type\s+)?[^'";]*?\bfrom\s*['"]([^'"]+)['"]/g,
-    /\bimport\s*['"]([^'"]+)['"]/g,
-    /\bimport\s*\(\s*['"]([^'"]+)['"]\s*\)/g,
-    /\brequire\s*\(\s*['"]([^'"]+)['"]\s*\)/g,
-  ];
-  for (const re of patterns) for (const m of src.matchAll(re)) specs.push(m[1]);
-  return specs;
-}
-
-/** Which top-level folder a relative import lands in ('' for packages). */
-const layerOf = (file: string, spec: string) =>
-  spec.startsWith('.') ? relative(ROOT, resolve(dirname(file), spec)).split(/[\\/]/)[0] : '';
-
-const UI_PACKAGES = /^(react|react-dom|@xyflow\/|playwright|jsdom)(\/|$)/;
-const DOM_GLOBALS = /(?<![\w$.])(document|window)\s*\.|\bWebGL2RenderingContext\b/;
-
-interface Violation {
-  file: string;
-  what: string;
-}
-
-function check(dir: 'nodes' | 'shader-gen' | 'src'): Violation[] {
-  const bad: Violation[] = [];
-  for (const file of filesUnder(join(ROOT, dir))) {
-    const rel = relative(ROOT, file);
-    const src = readFileSync(file, 'utf8');
-    for (const spec of importsOf(src)) {
-      const layer = layerOf(file, spec);
-      if (dir === 'nodes' && (layer === 'shader-gen' || layer === 'src')) bad.push({ file: rel, what: spec });
-      if (dir === 'shader-gen' && layer === 'src') bad.push({ file: rel, what: spec });
-      if (dir !== 'src' && UI_PACKAGES.test(spec)) bad.push({ file: rel, what: spec });
-      if (dir !== 'src' && /^node:|^(fs|path|child_process|os)$/.test(spec))
-        bad.push({ file: rel, what: spec });
-    }
-    if (dir !== 'src') {
-      const code = stripCommentsAndStrings(src);
-      const m = code.match(DOM_GLOBALS);
-      if (m) bad.push({ file: rel, what: m[0] });
-    }
-  }
-  return bad;
-}
+/** The rules each made-up file breaks (by rule text), [] when it is clean. */
+const rulesBroken = (path: string, source: string) => checkFile({ path, source }).map((v) => v.rule);
 
 describe('the scanner', () => {
   it('finds every kind of import and ignores comments and strings', () => {
@@ -116,30 +51,97 @@ describe('the scanner', () => {
   });
 
   it('sees the project files', () => {
-    expect(filesUnder(join(ROOT, 'nodes')).length).toBeGreaterThan(20);
-    expect(filesUnder(join(ROOT, 'shader-gen')).length).toBeGreaterThan(5);
-    const imports = filesUnder(join(ROOT, 'nodes')).flatMap((f) => importsOf(readFileSync(f, 'utf8')));
+    expect(project('nodes').length).toBeGreaterThan(20);
+    expect(project('shader-gen').length).toBeGreaterThan(5);
+    const src = project('src');
+    for (const folder of ['app', 'editor', 'viewport', 'state', 'io', 'cli'])
+      expect(src.filter((f) => f.path.startsWith(`src/${folder}/`)).length).toBeGreaterThan(3);
+    const imports = project('nodes').flatMap((f) => importsOf(f.source));
     expect(imports.length).toBeGreaterThan(40);
+  });
+});
+
+describe('the checker catches made-up offenders', () => {
+  it('in nodes/ and shader-gen/', () => {
+    expect(
+      rulesBroken('nodes/geometry/x.ts', `import { compile } from '../../shader-gen/compile.ts';`),
+    ).toEqual(['nodes/ imports only nodes/']);
+    expect(rulesBroken('nodes/types/x.ts', `import { store } from '../../src/state/store.ts';`)).toEqual([
+      'nodes/ imports only nodes/',
+    ]);
+    expect(
+      rulesBroken('shader-gen/elements/x.ts', `export { v } from '../../src/viewport/viewport.ts';`),
+    ).toEqual(['shader-gen/ never imports src/']);
+    expect(rulesBroken('shader-gen/x.ts', `import { useState } from 'react';`)).toEqual([
+      'shader-gen/ has no UI packages',
+    ]);
+    expect(rulesBroken('nodes/core/x.ts', `const { Handle } = await import('@xyflow/react');`)).toEqual([
+      'nodes/ has no UI packages',
+    ]);
+    expect(rulesBroken('nodes/core/x.ts', `import { readFileSync } from 'node:fs';`)).toEqual([
+      'nodes/ runs in the browser too: no Node built-ins',
+    ]);
+    expect(rulesBroken('shader-gen/x.ts', 'const gl = canvas.getContext("webgl2");')).toEqual([
+      'shader-gen/ uses no DOM or WebGL',
+    ]);
+    expect(rulesBroken('nodes/x.ts', 'export const w = () => window.innerWidth;')).toEqual([
+      'nodes/ uses no DOM or WebGL',
+    ]);
+    expect(rulesBroken('nodes/x.ts', 'let g: WebGL2RenderingContext;')).toEqual([
+      'nodes/ uses no DOM or WebGL',
+    ]);
+  });
+
+  it('in src/, folder by folder', () => {
+    expect(rulesBroken('src/viewport/x.ts', `import { store } from '../state/store.ts';`)).toEqual([
+      'src/viewport/ may not import src/state/',
+    ]);
+    expect(rulesBroken('src/editor/x.tsx', `import { App } from '../app/App.tsx';`)).toEqual([
+      'src/editor/ may not import src/app/',
+    ]);
+    expect(
+      rulesBroken('src/cli/commands/x.ts', `import { Viewport } from '../../viewport/viewport.ts';`),
+    ).toEqual(['src/cli/ may not import src/viewport/']);
+    expect(rulesBroken('src/io/x.ts', `import { createRoot } from 'react-dom/client';`)).toEqual([
+      'src/io/ has no UI packages',
+    ]);
+    expect(rulesBroken('src/cli/x.ts', 'const a = document.createElement("a");')).toEqual([
+      'src/cli/ uses no DOM or WebGL',
+    ]);
+    expect(rulesBroken('src/newfolder/x.ts', '')).toEqual(['a src/ folder with no rule in SRC_RULES']);
+    expect(rulesBroken('src/app/x.ts', `import a from '../../../elsewhere/a.ts';`)).toEqual([
+      'a relative import leaves the code folders',
+    ]);
+  });
+
+  it('and lets allowed imports and mere mentions pass', () => {
+    expect(
+      rulesBroken('src/app/x.tsx', `import { Viewport } from '../viewport/viewport.ts';\nimport 'react';`),
+    ).toEqual([]);
+    expect(
+      rulesBroken(
+        'src/cli/x.ts',
+        `import { readFile } from 'node:fs/promises';\nimport { p } from '../io/png.ts';`,
+      ),
+    ).toEqual([]);
+    expect(rulesBroken('src/main.tsx', `import { App } from './app/App.tsx';`)).toEqual([]);
+    expect(
+      rulesBroken('nodes/x.ts', `// import React from 'react'; window.open()\nconst s = 'document.title';`),
+    ).toEqual([]);
   });
 });
 
 describe('layers (src → shader-gen → nodes)', () => {
   it('nodes/ imports nothing from shader-gen/ or src/, no UI packages, no Node built-ins, no DOM or WebGL', () => {
-    expect(check('nodes')).toEqual([]);
+    expect(checkFiles(project('nodes'))).toEqual([]);
   });
 
   it('shader-gen/ imports nothing from src/, no UI packages, no Node built-ins, no DOM or WebGL', () => {
-    expect(check('shader-gen')).toEqual([]);
+    expect(checkFiles(project('shader-gen'))).toEqual([]);
   });
 
-  it('src/ imports resolve inside the project layers', () => {
-    // src may use everything below it; this only checks that relative imports stay in the tree
-    for (const v of check('src')) expect(v).toBeUndefined();
-    for (const file of filesUnder(join(ROOT, 'src'))) {
-      for (const spec of importsOf(readFileSync(file, 'utf8'))) {
-        if (spec.startsWith('.'))
-          expect(['src', 'nodes', 'shader-gen', 'examples']).toContain(layerOf(file, spec));
-      }
-    }
+  it('src/ folders import only what their rule allows; cli/ and io/ run without a browser', () => {
+    expect(Object.keys(SRC_RULES).length).toBeGreaterThan(5);
+    expect(checkFiles(project('src'))).toEqual([]);
   });
 });

@@ -76,11 +76,33 @@ export interface ImageFrame {
   readonly offset: readonly [number, number];
 }
 
+export interface CompareOptions {
+  /**
+   * The least share of the image's pixels that must be compared (not excluded near a boundary).
+   * Every caller states it: an agreement over next to no pixels proves nothing, so falling short
+   * throws instead of reporting a vacuous 100 %.
+   */
+  readonly minCompared: number;
+  /** The part of a bigger image that `img` is (default: the whole image). */
+  readonly frame?: ImageFrame;
+}
+
+/** Throws when fewer than `minCompared` × pixels were compared (or minCompared is no share). */
+export function assertEnoughCompared(what: string, compared: number, pixels: number, minCompared: number) {
+  if (!(minCompared > 0 && minCompared <= 1))
+    throw new Error(`${what}: minCompared must be a share in (0, 1], got ${minCompared}`);
+  if (compared < minCompared * pixels)
+    throw new Error(
+      `${what}: only ${compared} of ${pixels} pixels were compared (${pixels - compared} lie near a boundary); at least ${Math.ceil(minCompared * pixels)} are needed`,
+    );
+}
+
 /**
  * Compares `img` (rendered with `scene.view` at jitter 0.5, by default as the whole image) with
- * the CPU, pixel by pixel.
+ * the CPU, pixel by pixel; throws unless at least `minCompared` of the pixels were compared.
  */
-export function compareWithCpu(scene: Scene, img: ProbeImage, frame?: ImageFrame): ParityStats {
+export function compareWithCpu(scene: Scene, img: ProbeImage, options: CompareOptions): ParityStats {
+  const frame = options.frame;
   const [W, H] = frame?.resolution ?? [img.width, img.height];
   const [ox, oy] = frame?.offset ?? [0, 0];
   const prepared = prepare(scene.elements);
@@ -109,6 +131,7 @@ export function compareWithCpu(scene: Scene, img: ProbeImage, frame?: ImageFrame
   }
   const pixels = img.width * img.height;
   const compared = pixels - excluded;
+  assertEnoughCompared('probe vs CPU', compared, pixels, options.minCompared);
   return {
     pixels,
     excluded,
@@ -116,7 +139,7 @@ export function compareWithCpu(scene: Scene, img: ProbeImage, frame?: ImageFrame
     depthMismatch,
     escapedMismatch,
     finalMismatch,
-    agreement: compared > 0 ? agree / compared : 1,
+    agreement: agree / compared,
     rawAgreement: rawAgree / pixels,
   };
 }
@@ -196,9 +219,14 @@ function colourMargin(scene: Scene, prepared: PreparedElements, w: readonly [num
 /**
  * Compares a colour-variant image (linear RGBA, rendered at the pixel centres) with the CPU's
  * sampleColour, channel by channel in 8-bit sRGB; pixels whose path or sample point lies within ε
- * of a boundary (an element's, or the clip circle's) are excluded as in compareWithCpu.
+ * of a boundary (an element's, or the clip circle's) are excluded as in compareWithCpu; throws
+ * unless at least `minCompared` of the pixels were compared.
  */
-export function compareColourWithCpu(scene: Scene, img: ProbeImage): ColourStats {
+export function compareColourWithCpu(
+  scene: Scene,
+  img: ProbeImage,
+  options: Omit<CompareOptions, 'frame'>,
+): ColourStats {
   const ctx = sampleContext(scene);
   const prepared = ctx.prepared;
   const eps = MARGIN_FRACTION * scene.view.scale;
@@ -230,5 +258,6 @@ export function compareColourWithCpu(scene: Scene, img: ProbeImage): ColourStats
   }
   const pixels = img.width * img.height;
   const compared = pixels - excluded;
-  return { pixels, excluded, compared, worstLevels, agreement: compared > 0 ? agree / compared : 1 };
+  assertEnoughCompared('colour vs CPU', compared, pixels, options.minCompared);
+  return { pixels, excluded, compared, worstLevels, agreement: agree / compared };
 }

@@ -128,7 +128,8 @@ describe('GPU faults', () => {
       const lost = new Promise((r) => canvas.addEventListener('webglcontextlost', r, { once: true }));
       ext.loseContext();
       await lost;
-      await new Promise((r) => setTimeout(r, 200));
+      // One display frame with the context lost: the viewport's loop must survive it.
+      await new Promise((r) => requestAnimationFrame(r));
       const restored = new Promise((r) => canvas.addEventListener('webglcontextrestored', r, { once: true }));
       ext.restoreContext();
       await restored;
@@ -169,10 +170,11 @@ describe('GPU faults', () => {
     const title = await nodeEl(page, brokenNode).locator('.kf-badge--error').getAttribute('title');
     expect(title).toMatch(/KF403/);
     expect(title).toMatch(/kf_injected_error/);
-    await page.waitForTimeout(1_000);
-    // Nothing drew since: the accumulation holds the last good picture bit for bit. The screen is
+    // Still again (no frame for longer than the idle bake) and not one frame drew since the last
+    // good picture: the accumulation holds it bit for bit. The screen is
     // read through a compositor screenshot, whose element crop can move a single edge pixel (seen
     // once in CI: 1 pixel of 69,000), so it gets the same ±2 / 0.1 % allowance as the checks below.
+    expect((await settle()).frames).toBe(good.frames);
     expect(compareImages(accumulated, await snapshot()).offShare).toBe(0);
     expect(compareImages(pixels, await shown(), 2).offShare).toBeLessThan(0.001);
 

@@ -17,6 +17,7 @@ import { compile } from '../../shader-gen/compile.ts';
 import { encodeBase64Url } from '../../src/io/base64url.ts';
 import { decodePng, encodePng } from '../../src/io/png.ts';
 import { extractGraph } from '../../src/io/png-graph.ts';
+import { AUTOSAVE_KEY } from '../../src/state/autosave.ts';
 import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
 import { waitRendered } from './editor-page.ts';
 import {
@@ -122,7 +123,8 @@ describe('save and open', () => {
     await page.keyboard.press('Control+c'); // nodes on the editor's clipboard must not paste too
     await pasteText(page, text);
     await expect.poll(() => currentDoc(page)).toEqual(JSON.parse(text));
-    await page.waitForTimeout(400);
+    // React has committed and painted twice since: a late paste of the copied nodes would show now.
+    await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
     expect(await currentDoc(page)).toEqual(JSON.parse(text));
     expect(await page.getByRole('button', { name: 'Undo' }).getAttribute('title')).toContain('pasted graph');
   });
@@ -184,7 +186,8 @@ describe('PNG export', () => {
     const EXPORT = 4096;
     await squarePane(page, SIDE);
     await waitRendered(page);
-    await page.waitForTimeout(400); // the view is stored in the document after pan/zoom settles
+    // Nothing in this file pans or zooms, so no view change is waiting to be stored: the graph the
+    // export embeds must be exactly this one.
     const doc = await currentDoc(page);
     const live = await livePixels(page);
     expect([live.width, live.height]).toEqual([SIDE, SIDE]);
@@ -254,8 +257,21 @@ function meanDiff(a: Rgba, b: Rgba, where: (x: number, y: number) => boolean): n
   return sum / n;
 }
 
-/** Present/embed have no status line: wait for the canvas to hold a frame (a short settle). */
-const waitForPicture = (p: Page) => p.waitForTimeout(1500);
+/**
+ * Present/embed have no status line: wait (through the `?test` hooks) until the viewport holds
+ * every sample the render node asks for.
+ */
+const waitForPicture = (p: Page) =>
+  p.waitForFunction(
+    () => {
+      const k = window.__kleinflow;
+      const render = k?.store.getState().doc.nodes.find((n) => n.type === 'render');
+      const target = Math.max(1, Number(render?.params.samples ?? 1));
+      return (k?.viewport?.stats.frames ?? 0) > 0 && (k?.viewport?.stats.samples ?? 0) >= target;
+    },
+    undefined,
+    { timeout: 60_000 },
+  );
 
 const XSS = '<img src=x onerror=alert(1)>';
 const GLSL = '}; void main(){ #define X';
@@ -274,7 +290,10 @@ describe('classroom and embed', () => {
     await p.setViewportSize({ width: 1100, height: 700 });
     await p.goto(app.url);
     await pasteText(p, example('kaleidoscope-333'));
-    await p.waitForTimeout(300);
+    // Present mode opens the autosaved document: wait until the paste is in storage.
+    await expect
+      .poll(() => p.evaluate((key) => JSON.parse(localStorage.getItem(key) ?? 'null'), AUTOSAVE_KEY))
+      .toEqual(JSON.parse(example('kaleidoscope-333')));
     await p.goto(`${app.url}?mode=present`);
     await p.getByTestId('present-mode').waitFor();
     expect(await p.locator('.react-flow').count()).toBe(0);
@@ -294,7 +313,10 @@ describe('classroom and embed', () => {
       await p.keyboard.press('ArrowRight');
       counts.push(await drawn());
       if (i === 3) {
-        await p.waitForTimeout(500); // the picture fades out while the construction is built
+        // The picture fades out while the construction is built: wait for the fade to end.
+        await p.waitForFunction(
+          () => getComputedStyle(document.querySelector('canvas.kf-render__canvas')!).opacity === '0',
+        );
         await p.screenshot({ path: join(shots, 'io-present-step3.png') });
       }
     }
@@ -310,7 +332,7 @@ describe('classroom and embed', () => {
   it('embed mode shows only the render and an Open in Kleinflow link carrying the graph', async () => {
     const p = watch(await context.newPage());
     await p.setViewportSize({ width: 480, height: 320 });
-    await p.goto(`${app.url}?mode=embed`);
+    await p.goto(`${app.url}?mode=embed&test`);
     await p.getByTestId('embed-mode').waitFor();
     expect(await p.locator('.react-flow, .kf-topbar, .kf-steps').count()).toBe(0);
     expect(await p.getByRole('link', { name: 'Open in Kleinflow' }).getAttribute('href')).toMatch(/#g=/);

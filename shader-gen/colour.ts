@@ -1,5 +1,5 @@
 /**
- * Colouring of an IIS result (math.md "Colouring"), in linear light. The GLSL twin lives in
+ * Colouring of an IIS result (docs/math.md "Colouring"), in linear light. The GLSL twin lives in
  * glsl/colour (shader issue) and follows these functions line by line.
  */
 import type { Coloring, TileSpec } from '../nodes/core/scene.ts';

@@ -1,5 +1,5 @@
 /**
- * Tile edges near ∞. The edge width uses d/s (math.md "Length scale"), d = the final point's
+ * Tile edges near ∞. The edge width uses d/s (docs/math.md "Length scale"), d = the final point's
  * distance to the nearest boundary. When every element acts on a bounded disk, the tile contains a
  * neighbourhood of ∞, and a point that lands far out (a point near an inversion centre) has a large
  * d that still shrinks to d/s → 0 at the centre: a tiny dot of edge colour at every centre.

@@ -1,5 +1,5 @@
 /**
- * The CPU reference of the IIS loop (math.md, normative), in float64:
+ * The CPU reference of the IIS loop (docs/math.md, normative), in float64:
  *   depth = 0; s = 1
  *   repeat: e = first element (graph order) whose inside holds p
  *           none → escaped; depth == maxIter → not escaped; else s *= scale_e(p); p = e(p); depth += 1
@@ -37,7 +37,7 @@ export function prepare(elements: readonly SceneElement[]): PreparedElements {
  * Runs the loop on `st` in place; returns whether the point escaped (reached the tile). A closed-form
  * element may add several steps at once, so depth can pass maxIter by that last fold. `visit`, when
  * given, sees the state at the start of every pass (every point of the path, the final one included);
- * when it returns true the run stops there, not escaped (orbit seeds: math.md "tested at the start
+ * when it returns true the run stops there, not escaped (orbit seeds: docs/math.md "tested at the start
  * of every step").
  */
 export function runIis(

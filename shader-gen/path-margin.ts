@@ -1,7 +1,7 @@
 /**
  * How close an IIS run comes to deciding differently: the minimum over every point of its path
  * of (distance to the nearest element boundary) / s, where s is the length scale accumulated so
- * far — the distance measured back in the original coordinates (math.md "Length scale"). Where
+ * far — the distance measured back in the original coordinates (docs/math.md "Length scale"). Where
  * this is below the rounding error of the arithmetic (float32 on GPUs), a GPU and the float64 CPU
  * may legitimately take different branches; the parity test excludes those samples.
  */

@@ -1,5 +1,5 @@
 /**
- * Orbit seeds on the CPU (math.md "orbit seeds"): which seed, if any, holds a point, and the
+ * Orbit seeds on the CPU (docs/math.md "orbit seeds"): which seed, if any, holds a point, and the
  * linear colour it paints there. glsl/seeds.glsl.ts is the twin: seedAt is emitted straight-line,
  * one block per seed, with the same tests.
  */

@@ -1,5 +1,5 @@
 /**
- * Pixel ↔ world mapping (math.md "Plane, view") and the sub-pixel sample pattern shared by the CPU
+ * Pixel ↔ world mapping (docs/math.md "Plane, view") and the sub-pixel sample pattern shared by the CPU
  * raster and the GPU's progressive accumulation.
  */
 import type { View } from '../nodes/core/scene.ts';

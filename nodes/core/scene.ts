@@ -32,7 +32,7 @@ export interface ReflectionElement extends ElementBase {
 }
 
 /**
- * Two-circle Möbius generator g = σ_C2∘σ_C1 (math.md). In A apply g, else in B apply
+ * Two-circle Möbius generator g = σ_C2∘σ_C1 (docs/math.md). In A apply g, else in B apply
  * g⁻¹ = σ_C1∘σ_C2; A is always tested first. A is bounded by C1, B by C1' = σ_C2(C1).
  */
 export interface MobiusElement extends ElementBase {
@@ -44,7 +44,7 @@ export interface MobiusElement extends ElementBase {
 }
 
 /**
- * Loxodromic generator from two nested circles and a control point (math.md): inside A (C1)
+ * Loxodromic generator from two nested circles and a control point (docs/math.md): inside A (C1)
  * p ← σ_C2(σ_C1(σ_C3(ρ_L(p)))); inside B (outside C1') p ← ρ_L(σ_C3(σ_C1(σ_C2(p)))).
  */
 export interface LoxodromicElement extends ElementBase {
@@ -60,7 +60,7 @@ export interface LoxodromicElement extends ElementBase {
 }
 
 /**
- * Möbius map from a det-1 matrix (math.md "Möbius from a matrix"), complex entries as [re, im]:
+ * Möbius map from a det-1 matrix (docs/math.md "Möbius from a matrix"), complex entries as [re, im]:
  * inside I(g) (`forward`, centre −d/c) apply g(z) = (az + b)/(cz + d); else inside I(g⁻¹)
  * (`backward`, centre a/c) apply g⁻¹(z) = (dz − b)/(−cz + a). Both radii are 1/|c|.
  */
@@ -156,7 +156,7 @@ export type Coloring =
   /** Two tones by the parity of depth. */
   | { readonly mode: 'parity'; readonly even: Color; readonly odd: Color }
   /**
-   * A true kaleidoscope of a picture: the picture's texel at the final point (math.md "by final
+   * A true kaleidoscope of a picture: the picture's texel at the final point (docs/math.md "by final
    * position"). The picture is `size` world units high, centred at `center`, turned by `rotation`
    * radians counter-clockwise, and repeats beyond its edges.
    */
@@ -176,7 +176,7 @@ export type Coloring =
   | { readonly mode: 'limit-set'; readonly glow: number };
 
 /**
- * An orbit seed (math.md "orbit seeds", the paper's Figs. 2 and 11): tested at the start of every
+ * An orbit seed (docs/math.md "orbit seeds", the paper's Figs. 2 and 11): tested at the start of every
  * step, so every image of the seed under the group is painted. A disk paints its colour; an image
  * rectangle (centre, width × height world units, turned by `rotation` radians) paints its picture.
  */

@@ -14,7 +14,7 @@ export function invertPoint(circle: Circle, p: Vec2): Vec2 | null {
 }
 
 /**
- * Image of circle C1 under inversion in C2 (math.md): δ = |c1−c2|² − r1², k = r2²/δ,
+ * Image of circle C1 under inversion in C2 (docs/math.md): δ = |c1−c2|² − r1², k = r2²/δ,
  * c1' = c2 + k(c1−c2), r1' = |k| r1. δ = 0 (C1 through c2) → the image is a line: null.
  */
 export function invertCircle(inC2: Circle, c1: Circle): Circle | null {

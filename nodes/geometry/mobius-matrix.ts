@@ -1,5 +1,5 @@
 /**
- * Möbius maps from a matrix (math.md "Möbius from a matrix"): g(z) = (az + b)/(cz + d), complex
+ * Möbius maps from a matrix (docs/math.md "Möbius from a matrix"): g(z) = (az + b)/(cz + d), complex
  * a, b, c, d, normalised so that ad − bc = 1. Type from the trace, isometric circles (the Ford-domain
  * IIS rule) and the matrix of a composition of two circle inversions.
  */

@@ -1,5 +1,5 @@
 /**
- * Two-circle Möbius generators g = σ_C2∘σ_C1 (math.md "Two-circle Möbius generator"): their type
+ * Two-circle Möbius generators g = σ_C2∘σ_C1 (docs/math.md "Two-circle Möbius generator"): their type
  * (from the real trace τ) and the regions A (where g applies) and B = g(complement of A).
  */
 import type { DiskRegion } from '../core/scene.ts';

@@ -1,6 +1,6 @@
 /**
  * Triangle groups (p, q, r): the three mirrors of the triangle with angles π/p (at 0), π/q (on
- * the x-axis) and π/r (on line 2), as in math.md. q or r may be ∞ (written 0): cos(π/∞) = 1.
+ * the x-axis) and π/r (on line 2), as in docs/math.md. q or r may be ∞ (written 0): cos(π/∞) = 1.
  */
 import type { Vec2 } from '../core/values.ts';
 import { cosPiOver, sinPiOver } from './angles.ts';

@@ -8,7 +8,7 @@ import { fmt, pointInput } from './shared.ts';
 /**
  * The two mirror directions: u (the start ray) and v = u turned by π/k. Mirror 1 keeps the left of
  * u (normal perp(u)), mirror 2 the right of v (normal −perp(v)): together they keep the wedge of
- * angle π/k between u and v (math.md: orient them so, or the kept region is the π − π/k wedge).
+ * angle π/k between u and v (docs/math.md: orient them so, or the kept region is the π − π/k wedge).
  */
 const mirrors = (inputs: Readonly<Record<string, unknown>>) => {
   const c = inputs.center as Vec2;

@@ -1,5 +1,5 @@
 /**
- * Orbit seeds (math.md "orbit seeds", the paper's Figs. 2 and 11): shapes placed in the plane whose
+ * Orbit seeds (docs/math.md "orbit seeds", the paper's Figs. 2 and 11): shapes placed in the plane whose
  * images under the whole IIS the tile paints. Wire them into the tile's `seeds` input.
  */
 import { defineNode } from '../core/define-node.ts';

@@ -1,5 +1,5 @@
 /**
- * The strip generators (closed-form elements, math.md): translation, parallel mirrors and glide
+ * The strip generators (closed-form elements, docs/math.md): translation, parallel mirrors and glide
  * reflection. Each acts across the strip 0 ≤ (p − origin)·n < period, n the unit direction.
  */
 import { defineNode, type NodeDef } from '../core/define-node.ts';

@@ -1,5 +1,5 @@
 /**
- * The contract of an element kind: its CPU step (the reference semantics of math.md) and, beside
+ * The contract of an element kind: its CPU step (the reference semantics of docs/math.md) and, beside
  * it, its GLSL twin. The IIS loop (interpret.ts, and the generated shader) calls `step` for each
  * element in graph order and restarts from the first element after every application.
  */
@@ -9,7 +9,7 @@ import type { SceneElement } from '../../nodes/core/scene.ts';
 export interface IisState {
   x: number;
   y: number;
-  /** Product of the conformal factors |g'(p)| along the path (math.md "Length scale"). */
+  /** Product of the conformal factors |g'(p)| along the path (docs/math.md "Length scale"). */
   s: number;
   depth: number;
 }

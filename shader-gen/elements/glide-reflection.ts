@@ -1,5 +1,5 @@
 /**
- * Glide reflection along the axis through q in direction n, period D (closed form, math.md): the
+ * Glide reflection along the axis through q in direction n, period D (closed form, docs/math.md): the
  * glide is "translate by D·n, then reflect in the axis". With k = ⌊h/D⌋, h = (p − q)·n: translate
  * by −kD·n into the tile 0 ≤ h < D and, when k is odd, reflect across the axis (normal perp(n)).
  * depth += |k|; scale 1.

@@ -1,5 +1,5 @@
 /**
- * Loxodromic generator (math.md): inside A, p ← σ_C2(σ_C1(σ_C3(ρ_L(p)))) (ρ_L first); else inside
+ * Loxodromic generator (docs/math.md): inside A, p ← σ_C2(σ_C1(σ_C3(ρ_L(p)))) (ρ_L first); else inside
  * B, p ← ρ_L(σ_C3(σ_C1(σ_C2(p)))) (σ_C2 first). +1 per application.
  */
 import type { LoxodromicElement } from '../../nodes/core/scene.ts';

@@ -1,5 +1,5 @@
 /**
- * Möbius map from a det-1 matrix, Ford-domain rule (math.md "Möbius from a matrix"): inside the
+ * Möbius map from a det-1 matrix, Ford-domain rule (docs/math.md "Möbius from a matrix"): inside the
  * isometric circle I(g) (centre −d/c) apply g(z) = (az + b)/(cz + d), scale 1/|cz + d|²; else inside
  * I(g⁻¹) (centre a/c) apply g⁻¹(z) = (dz − b)/(−cz + a), scale 1/|−cz + a|². I(g) is tested first.
  */

@@ -1,6 +1,6 @@
 /**
  * Two-circle Möbius generator: in A, g = σ_C2∘σ_C1 (σ_C1 first); else in B, g⁻¹ = σ_C1∘σ_C2.
- * A is always tested before B (math.md). Scale: the product of both inversions' factors.
+ * A is always tested before B (docs/math.md). Scale: the product of both inversions' factors.
  */
 import type { MobiusElement } from '../../nodes/core/scene.ts';
 import { inRegion, regionBoundaryDistance } from './disk-region.ts';

@@ -1,5 +1,5 @@
 /**
- * Parallel mirrors h = 0 and h = D (closed form, math.md): the group they generate folds the
+ * Parallel mirrors h = 0 and h = D (closed form, docs/math.md): the group they generate folds the
  * plane onto the strip 0 ≤ h < D. With k = ⌊h/D⌋ and r = h − kD ∈ [0, D): an even k is a
  * translation by −kD (h ← r), an odd k adds one reflection (h ← D − r). depth += |k|, the number
  * of mirrors crossed; scale 1.

@@ -1,5 +1,5 @@
 /**
- * Rotation of order k about c (closed form, math.md): θ = 2π/k, the tile is the wedge from the
+ * Rotation of order k about c (closed form, docs/math.md): θ = 2π/k, the tile is the wedge from the
  * unit direction b1 counter-clockwise by θ. With arg ∈ [0, 2π) measured from b1 and
  * m = ⌊arg/θ⌋ (at most k − 1), rotate by −mθ about c; depth += m (the single steps "rotate by −θ"
  * it stands for). The centre itself is in the tile (arg taken as 0). Scale 1.

@@ -1,5 +1,5 @@
 /**
- * Spiral similarity about c (closed form, math.md): the composition of the reflections in the
+ * Spiral similarity about c (closed form, docs/math.md): the composition of the reflections in the
  * lines through c at angles 0 and φ (a rotation by 2φ) and the inversions in the circles r1 then
  * r2 about c (a scaling by λ = (r2/r1)²): g(p) = c + λ R_2φ (p − c). Tile: the annulus
  * r1 ≤ |p − c| < r1·λ = r2²/r1. With m = ⌊log(|p − c|/r1)/log λ⌋, apply g^(−m) at once:

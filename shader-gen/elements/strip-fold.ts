@@ -1,7 +1,7 @@
 /**
  * Shared arithmetic of the strip kinds (translation, parallel mirrors, glide reflection): the
  * signed height h = (p − q)·n across the strip and the strip index k = ⌊h/D⌋ (k = 0 is the
- * half-open tile 0 ≤ h < D, math.md "Closed-form elements").
+ * half-open tile 0 ≤ h < D, docs/math.md "Closed-form elements").
  */
 import type { StripData } from '../../nodes/core/scene.ts';
 

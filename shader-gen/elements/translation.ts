@@ -1,5 +1,5 @@
 /**
- * Translation strip (closed form, math.md): h = (p − q)·n, k = ⌊h/D⌋; tile 0 ≤ h < D; otherwise
+ * Translation strip (closed form, docs/math.md): h = (p − q)·n, k = ⌊h/D⌋; tile 0 ≤ h < D; otherwise
  * p ← p − k·t in one go with t = D·n (or the element's oblique `shift`, t·n = D), depth += |k|
  * (the number of single translations by ±t it stands for). Scale 1 (an isometry).
  */

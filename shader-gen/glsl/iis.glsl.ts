@@ -2,7 +2,7 @@
  * The scene-specific GLSL: the IIS loop, the boundary distance over all elements and one sample's
  * colour, emitted as straight-line code per element (each block under its own `#line` marker).
  *
- *   runIis — the loop of interpret.ts runIis (math.md, normative): at depth ≥ maxIter only ask
+ *   runIis — the loop of interpret.ts runIis (docs/math.md, normative): at depth ≥ maxIter only ask
  *   whether some element holds p (→ not escaped); else step the first element that holds p and
  *   restart from the first; no element holds p → escaped. Every pass either returns or adds ≥ 1
  *   to depth, so after at most maxIter passes depth ≥ maxIter.

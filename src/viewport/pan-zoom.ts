@@ -4,7 +4,7 @@
  * (the overlay claims handle drags that way) are left alone.
  *
  * A CSS pixel (x right, y down, relative to the element) maps to the world point
- *   center + ((x − W/2)/H, (H/2 − y)/H) · scale      (math.md "Plane, view", y up),
+ *   center + ((x − W/2)/H, (H/2 − y)/H) · scale      (docs/math.md "Plane, view", y up),
  * so keeping the world point under the cursor fixed while the scale changes from s to s' gives
  *   center' = p − ((x − W/2)/H, (H/2 − y)/H) · s'.
  */

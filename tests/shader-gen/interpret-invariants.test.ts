@@ -27,7 +27,7 @@ const inDisk = (R: DiskRegion, p: Vec2) => {
   return R.outside ? d2 > R.r * R.r : d2 < R.r * R.r;
 };
 
-/** The inside of an element, written from math.md independently of shader-gen (other kinds: their own test). */
+/** The inside of an element, written from docs/math.md independently of shader-gen (other kinds: their own test). */
 function inside(e: SceneElement, p: Vec2): boolean {
   switch (e.kind) {
     case 'inversion':

@@ -1,4 +1,4 @@
-/** The IIS loop of math.md through `interpret`, on small scenes whose answers are known by hand. */
+/** The IIS loop of docs/math.md through `interpret`, on small scenes whose answers are known by hand. */
 import { describe, expect, it } from 'vitest';
 import type { Vec2 } from '../../nodes/core/values.ts';
 import { interpret } from '../../shader-gen/interpret.ts';

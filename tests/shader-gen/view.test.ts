@@ -5,7 +5,7 @@ import { pixelToWorld, sampleOffset, worldToPixel } from '../../shader-gen/view.
 
 const view: View = { center: [1, -2], scale: 4 };
 
-describe('pixelToWorld (math.md "Plane, view")', () => {
+describe('pixelToWorld (docs/math.md "Plane, view")', () => {
   it('maps pixel centres by center + ((px + 0.5 − W/2)/H, (py + 0.5 − H/2)/H)·scale', () => {
     // 200 × 100: a pixel is 0.04 world units
     expect(pixelToWorld(view, 200, 100, 0, 0)).toEqual([1 + (0.5 - 100) * 0.04, -2 + (0.5 - 50) * 0.04]);

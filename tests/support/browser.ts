@@ -1,6 +1,6 @@
 /**
  * Launches Debian's Chromium through playwright-core with the flags that give WebGL2 through
- * SwiftShader on every machine (see ../shared/design/testing.md). Shared by parity, e2e and bench.
+ * SwiftShader on every machine (see docs/testing.md). Shared by parity, e2e and bench.
  */
 import { type Browser, chromium } from 'playwright-core';
 

@@ -15,7 +15,7 @@ describe('cos(π/k), sin(π/k)', () => {
     }
   });
 
-  it('put the (2,3,7) group’s circle mirror exactly on the x-axis (math.md check value)', () => {
+  it('put the (2,3,7) group’s circle mirror exactly on the x-axis (docs/math.md check value)', () => {
     const m = triangleMirrors(7, 2, 3);
     if (m.mirror3.kind !== 'circle') throw new Error('expected a circle');
     expect(m.mirror3.c[1]).toBe(0);

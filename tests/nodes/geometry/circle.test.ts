@@ -59,7 +59,7 @@ describe('invertPoint (σ_C(p) = c + r²(p−c)/|p−c|²)', () => {
   });
 });
 
-describe("invertCircle (C1 ↦ C1' of math.md)", () => {
+describe("invertCircle (C1 ↦ C1' of docs/math.md)", () => {
   it("matches the formula δ = |c1−c2|² − r1², k = r2²/δ, c1' = c2 + k(c1−c2), r1' = |k| r1", () => {
     const img = invertCircle({ c: [0, 0], r: 1 }, { c: [2, 0], r: 0.5 })!;
     // δ = 4 − 0.25 = 3.75, k = 1/3.75

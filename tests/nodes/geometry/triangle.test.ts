@@ -83,7 +83,7 @@ describe('triangleMirrors', () => {
     expect(m.mirror3.r).toBeCloseTo(Math.SQRT2, 12);
   });
 
-  it('lines 1 and 2 go through 0 as math.md states', () => {
+  it('lines 1 and 2 go through 0 as docs/math.md states', () => {
     const m = triangleMirrors(5, 2, 4);
     expect(m.line1).toEqual({ q: [0, 0], n: [0, 1] });
     expect(m.line2.n[0]).toBeCloseTo(Math.sin(Math.PI / 5), 15);

@@ -1,4 +1,4 @@
-/** Small builders for hand-written test documents (the JSON shape of architecture.md). */
+/** Small builders for hand-written test documents (the JSON shape of docs/architecture.md). */
 import type { GraphDoc, GraphEdge, GraphNode } from '../../../nodes/graph/document.ts';
 
 export function node(id: string, type: string, params: Record<string, unknown> = {}): GraphNode {

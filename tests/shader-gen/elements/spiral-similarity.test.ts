@@ -32,7 +32,7 @@ const polar = fc.record({
 });
 
 /**
- * One step as math.md defines it, from mirrors: g = σ_r2 ∘ σ_r1 ∘ ρ_φ ∘ ρ_0 (reflect in the line at
+ * One step as docs/math.md defines it, from mirrors: g = σ_r2 ∘ σ_r1 ∘ ρ_φ ∘ ρ_0 (reflect in the line at
  * angle 0 through c, then in the line at angle φ, then invert in r1, then in r2); g⁻¹ in reverse.
  */
 function mirrorsStep(e: SpiralSimilarityElement) {

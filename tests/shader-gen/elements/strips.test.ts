@@ -28,7 +28,7 @@ const toStrip = (s: { q: [number, number]; angle: number; period: number }): Str
 const height = (e: StripData, p: Vec2) => dot(sub(p, e.q), e.n);
 const inTile = (e: StripData, p: Vec2) => height(e, p) >= 0 && height(e, p) < e.period;
 
-/** The single steps of math.md, one period or one mirror at a time. */
+/** The single steps of docs/math.md, one period or one mirror at a time. */
 const singles = {
   translation: (e: StripData) => (p: Vec2) =>
     inTile(e, p) ? null : { p: add(p, scale(e.n, height(e, p) < 0 ? e.period : -e.period)), s: 1 },

@@ -1,5 +1,5 @@
 /**
- * Offline GLSL ES validation with glslangValidator (testing.md): many shaders in ONE call (about
+ * Offline GLSL ES validation with glslangValidator (docs/testing.md): many shaders in ONE call (about
  * 25 ms per file, most of it start-up when called per file), errors mapped back to each shader.
  */
 import { spawnSync } from 'node:child_process';

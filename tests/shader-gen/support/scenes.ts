@@ -70,7 +70,7 @@ export const inversion = (nodeId: string, c: Vec2, r: number): SceneElement => (
   r,
 });
 
-/** The two-circle generator σ_C2∘σ_C1 with its regions from nodes/geometry (math.md). */
+/** The two-circle generator σ_C2∘σ_C1 with its regions from nodes/geometry (docs/math.md). */
 export function mobius(nodeId: string, c1: Circle, c2: Circle): SceneElement {
   const regions = twoCircleRegions(c1, c2);
   if (!regions.ok) throw new Error(regions.reason);

@@ -15,13 +15,24 @@ import type { Viewport } from '../viewport/viewport.ts';
 import { useAnimationClock } from './animation.ts';
 import { Banner, type Message } from './Banner.tsx';
 import { EXAMPLES } from './examples.ts';
-import { HelpDialog } from './HelpDialog.tsx';
+import { HelpDialog } from './help/HelpDialog.tsx';
 import { useDocumentIo } from './io/use-document-io.tsx';
 import { type RenderInfo, RenderPane } from './RenderPane.tsx';
 import { SplitPane } from './SplitPane.tsx';
 import { StatusBar } from './StatusBar.tsx';
 import { TopBar } from './TopBar.tsx';
 import { useAutosave } from './use-autosave.ts';
+import { WalkthroughPanel } from './walkthrough/WalkthroughPanel.tsx';
+import { WelcomeCard } from './welcome/WelcomeCard.tsx';
+import { rememberWelcome, welcomeSeen } from './welcome/welcome-memory.ts';
+
+const storage = (): Storage | undefined => {
+  try {
+    return window.localStorage;
+  } catch {
+    return undefined;
+  }
+};
 
 interface Props {
   readonly initialMessages: readonly Message[];
@@ -40,6 +51,8 @@ export function App({ initialMessages }: Props) {
   const [renderInfo, setRenderInfo] = useState<RenderInfo | null>(null);
   const [messages, setMessages] = useState<readonly Message[]>(initialMessages);
   const [help, setHelp] = useState(false);
+  const [welcome, setWelcome] = useState(() => !welcomeSeen(storage()));
+  const [walkthrough, setWalkthrough] = useState(false);
   const [frameKey, setFrameKey] = useState(0);
   const viewport = useRef<Viewport | null>(null);
   const fileInput = useRef<HTMLInputElement>(null);
@@ -56,6 +69,25 @@ export function App({ initialMessages }: Props) {
     },
     [store],
   );
+
+  const dismissWelcome = useCallback(() => {
+    rememberWelcome(storage());
+    setWelcome(false);
+  }, []);
+  const openExample = useCallback(
+    (ex: (typeof EXAMPLES)[number]) => {
+      load(ex.doc, `open ${ex.title}`);
+      setHelp(false);
+      dismissWelcome();
+    },
+    [load, dismissWelcome],
+  );
+  const startWalkthrough = useCallback(() => {
+    if (store.getState().doc.nodes.length > 0) load(emptyDocument('My *333 kaleidoscope'), 'new document');
+    setHelp(false);
+    setWalkthrough(true);
+    dismissWelcome();
+  }, [store, load, dismissWelcome]);
 
   const getViewport = useCallback(() => viewport.current, []);
   const io = useDocumentIo({ store, scene: evaluation.scene, load, viewport: getViewport });
@@ -99,7 +131,7 @@ export function App({ initialMessages }: Props) {
         onTitle={(title) =>
           store.dispatch({ type: 'set-meta', meta: { ...doc.meta, title } }, 'rename document')
         }
-        onExample={(ex) => load(ex.doc, `open ${ex.title}`)}
+        onExample={openExample}
         onNew={() => load(emptyDocument(), 'new document')}
         onOpen={open}
         onSave={save}
@@ -152,7 +184,29 @@ export function App({ initialMessages }: Props) {
           if (file) void io.openFile(file);
         }}
       />
-      {help && <HelpDialog onClose={() => setHelp(false)} />}
+      {help && (
+        <HelpDialog
+          examples={EXAMPLES}
+          onExample={openExample}
+          onWalkthrough={startWalkthrough}
+          onClose={() => setHelp(false)}
+        />
+      )}
+      {welcome && (
+        <WelcomeCard
+          examples={EXAMPLES}
+          onExample={openExample}
+          onWalkthrough={startWalkthrough}
+          onEmpty={() => {
+            load(emptyDocument(), 'new document');
+            dismissWelcome();
+          }}
+          onDismiss={dismissWelcome}
+        />
+      )}
+      {walkthrough && (
+        <WalkthroughPanel doc={doc} evaluation={evaluation} onClose={() => setWalkthrough(false)} />
+      )}
       {io.ui}
     </div>
   );

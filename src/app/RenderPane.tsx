@@ -3,14 +3,16 @@
  * direct-manipulation overlay on top. The view lives in the document but pan/zoom is not an undo
  * step: it is stored with a debounced silent change.
  */
-import { useEffect, useRef, useState } from 'react';
+import { useEffect, useMemo, useRef, useState } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import type { View } from '../../nodes/core/scene.ts';
 import type { Evaluation } from '../../nodes/graph/evaluate.ts';
+import { registry } from '../../nodes/types/index.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
 import { type NodePatch, RenderOverlay } from '../viewport/overlay/RenderOverlay.tsx';
 import { attachPanZoom } from '../viewport/pan-zoom.ts';
 import { Viewport } from '../viewport/viewport.ts';
+import { renderHint } from './render-hint.ts';
 import { exposeForTests } from './test-hooks.ts';
 
 /** Pan/zoom settles into the document this long after the last wheel tick or drag. */
@@ -126,9 +128,10 @@ export function RenderPane({
     viewport.current?.setView(view);
   }, [view]);
 
+  const hint = useMemo(() => renderHint(doc, evaluation, registry), [doc, evaluation]);
   const patchChange = (patches: NodePatch[]) => ({ type: 'set-params' as const, patches });
   return (
-    <div className="kf-render" ref={pane} data-testid="render-pane">
+    <div className={hint ? 'kf-render kf-render--idle' : 'kf-render'} ref={pane} data-testid="render-pane">
       <canvas ref={canvas} className="kf-render__canvas" aria-label="Rendered picture" />
       {size.width > 0 && (
         <RenderOverlay
@@ -144,8 +147,14 @@ export function RenderPane({
         />
       )}
       {failure && <div className="kf-render__failure">{failure}</div>}
-      {evaluation.scene.renderNodeId === null && doc.nodes.length > 0 && (
-        <div className="kf-render__hint">Wire elements into a Render node to see a picture.</div>
+      {hint && (
+        <div
+          className={`kf-render__hint kf-render__hint--${hint.tone}`}
+          role="status"
+          data-testid="render-hint"
+        >
+          {hint.text}
+        </div>
       )}
     </div>
   );

@@ -1,12 +1,14 @@
 /**
- * The built app served for end-to-end suites: Vite builds once into a temp folder, `vite preview`
- * serves it on a free port, and Chromium (SwiftShader WebGL2) opens it. One set-up for every suite.
+ * The app served for end-to-end suites, as users run it: `serveApp` builds once into a temp folder
+ * and `vite preview` serves it (what `npm run build` ships); `serveDevApp` runs the dev server that
+ * `npm start` runs (React StrictMode's double effects included, which a build never shows). Both
+ * on a free port, opened by Chromium (SwiftShader WebGL2). One set-up for every suite.
  */
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import type { Browser, BrowserContext } from 'playwright-core';
-import { build, type PreviewServer, preview } from 'vite';
+import { build, createServer, type PreviewServer, preview } from 'vite';
 import { launchChromium } from '../support/browser.ts';
 
 export const repoRoot = join(import.meta.dirname, '..', '..');
@@ -14,8 +16,14 @@ export const repoRoot = join(import.meta.dirname, '..', '..');
 export interface ServedApp {
   readonly url: string;
   readonly browser: Browser;
-  /** A fresh context: downloads accepted, clipboard granted, render pane at 25% of the width. */
-  newContext(viewport?: { width: number; height: number }): Promise<BrowserContext>;
+  /**
+   * A fresh context: downloads accepted, clipboard granted, render pane at 25% of the width, and
+   * the first-visit welcome card already dismissed unless `firstVisit` asks for a brand-new browser.
+   */
+  newContext(
+    viewport?: { width: number; height: number },
+    options?: { firstVisit?: boolean },
+  ): Promise<BrowserContext>;
   close(): Promise<void>;
 }
 
@@ -28,24 +36,41 @@ export async function serveApp(): Promise<ServedApp> {
     build: { outDir },
     preview: { port: 0, host: '127.0.0.1' },
   });
-  const url = server.resolvedUrls!.local[0];
+  return openBrowserOn(server.resolvedUrls!.local[0], async () => {
+    await new Promise((r) => server.httpServer.close(r));
+    rmSync(outDir, { recursive: true, force: true });
+  });
+}
+
+/** The dev server exactly as `npm start` runs it (vite.config.ts, StrictMode), on a free port. */
+export async function serveDevApp(): Promise<ServedApp> {
+  const server = await createServer({
+    root: repoRoot,
+    logLevel: 'error',
+    server: { port: 0, host: '127.0.0.1', strictPort: false, open: false },
+  });
+  await server.listen();
+  return openBrowserOn(server.resolvedUrls!.local[0], () => server.close());
+}
+
+async function openBrowserOn(url: string, stopServer: () => Promise<void>): Promise<ServedApp> {
   const browser = await launchChromium();
   return {
     url,
     browser,
-    async newContext(viewport = { width: 1600, height: 960 }) {
+    async newContext(viewport = { width: 1600, height: 960 }, options = {}) {
       const context = await browser.newContext({ viewport, acceptDownloads: true });
       await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: new URL(url).origin });
       // A small render pane keeps SwiftShader fast: the graph gets 75% of the width.
-      await context.addInitScript(() => {
+      await context.addInitScript((firstVisit) => {
         if (!localStorage.getItem('kleinflow.split')) localStorage.setItem('kleinflow.split', '0.75');
-      });
+        if (!firstVisit) localStorage.setItem('kleinflow.welcome.dismissed', '1');
+      }, options.firstVisit === true);
       return context;
     },
     async close() {
       await browser.close();
-      await new Promise((r) => server.httpServer.close(r));
-      rmSync(outDir, { recursive: true, force: true });
+      await stopServer();
     },
   };
 }

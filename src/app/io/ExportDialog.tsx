@@ -3,9 +3,10 @@
  * samples per pixel, solid or transparent background; a progress bar with Cancel while the tiled
  * GPU render runs. The downloaded PNG carries the graph, so dropping it back reopens the graph.
  */
-import { useEffect, useRef, useState } from 'react';
+import { useRef, useState } from 'react';
 import { LIMITS, type View } from '../../../nodes/core/scene.ts';
 import type { PngExportOptions } from '../export.ts';
+import { useModalDialog } from '../use-modal-dialog.ts';
 
 export interface Size {
   readonly width: number;
@@ -37,7 +38,7 @@ const PRESETS: readonly { label: string; size?: Size }[] = [
 const clampInt = (v: number, lo: number, hi: number) => Math.min(hi, Math.max(lo, Math.round(v) || lo));
 
 export function ExportDialog({ viewSize, view, defaultSamples, edgeWidth, run, onClose }: Props) {
-  const ref = useRef<HTMLDialogElement>(null);
+  const dialog = useModalDialog(onClose);
   const [width, setWidth] = useState(Math.max(1, Math.round(viewSize.width)));
   const [height, setHeight] = useState(Math.max(1, Math.round(viewSize.height)));
   const [samples, setSamples] = useState(clampInt(defaultSamples, 1, LIMITS.maxSamples));
@@ -45,12 +46,6 @@ export function ExportDialog({ viewSize, view, defaultSamples, edgeWidth, run, o
   const [progress, setProgress] = useState<number | null>(null);
   const [error, setError] = useState<string | null>(null);
   const cancelled = useRef(false);
-
-  useEffect(() => {
-    const d = ref.current!;
-    if (!d.open) d.showModal();
-    return () => d.close();
-  }, []);
 
   const preset = PRESETS.findIndex((p) => {
     const s = p.size ?? viewSize;
@@ -85,7 +80,7 @@ export function ExportDialog({ viewSize, view, defaultSamples, edgeWidth, run, o
 
   return (
     <dialog
-      ref={ref}
+      ref={dialog.ref}
       className="kf-dialog kf-export"
       aria-label="Export PNG"
       onCancel={(e) => {

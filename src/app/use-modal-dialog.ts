@@ -1,0 +1,34 @@
+/**
+ * useModalDialog: a <dialog> shown modally while the component is mounted.
+ *
+ * Why not just `showModal()` in an effect and `close()` in its cleanup: React's StrictMode (what
+ * `npm start` runs) mounts, cleans up and mounts again. The cleanup's `close()` queues a `close`
+ * event that arrives after the second mount has reopened the dialog, and an `onClose` that trusts
+ * it unmounts the dialog the moment it opened (Help "did nothing" under the dev server). So a
+ * `close` event only counts while the dialog is really closed.
+ */
+import { type RefObject, useCallback, useEffect, useRef } from 'react';
+
+export interface ModalDialog {
+  readonly ref: RefObject<HTMLDialogElement | null>;
+  /** Pass to the dialog's onClose (Escape, form method=dialog, close()). */
+  readonly onClose: () => void;
+}
+
+export function useModalDialog(onClose: () => void): ModalDialog {
+  const ref = useRef<HTMLDialogElement>(null);
+  const latest = useRef(onClose);
+  latest.current = onClose;
+  useEffect(() => {
+    const d = ref.current!;
+    if (!d.open) d.showModal();
+    return () => {
+      if (d.open) d.close();
+    };
+  }, []);
+  const handleClose = useCallback(() => {
+    if (ref.current?.open) return; // a stale close from a StrictMode remount: the dialog is open
+    latest.current();
+  }, []);
+  return { ref, onClose: handleClose };
+}

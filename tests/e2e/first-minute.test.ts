@@ -1,0 +1,175 @@
+/**
+ * The first minute, as a newcomer meets it — against the dev server that `npm start` runs (React
+ * StrictMode's double effects included: Help once closed itself there while the built app, which
+ * the other suites use, worked) and against the built app. Help opens and stays open; the first
+ * visit gets a welcome card that is remembered once dismissed; an empty or unfinished graph shows
+ * a calm pane that says what is missing; the guided walkthrough ticks steps off as they are done.
+ */
+import type { Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { HINTS } from '../../src/app/render-hint.ts';
+import { type ServedApp, serveApp, serveDevApp } from './app-server.ts';
+import { addNode, connect, nodeCount, nodeEl, renderPixels, setField } from './editor-page.ts';
+
+/** Two animation frames: every task queued before them (a stale dialog `close` event) has run. */
+const settle = (page: Page) =>
+  page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+
+const SERVERS: [string, () => Promise<ServedApp>][] = [
+  ['dev server (npm start)', serveDevApp],
+  ['built app', serveApp],
+];
+
+describe.each(SERVERS)('Help and dialogs — %s', (_name, serve) => {
+  let app: ServedApp;
+  let page: Page;
+  beforeAll(async () => {
+    app = await serve();
+    page = await (await app.newContext({ width: 1280, height: 800 })).newPage();
+    await page.goto(app.url);
+    await page.getByRole('button', { name: 'Help' }).waitFor();
+  });
+  afterAll(() => app?.close());
+
+  const help = () => page.getByRole('dialog', { name: 'Help' });
+
+  it('opens Help from the ? button and it stays open, with the quick start, sockets, shortcuts and examples', async () => {
+    await page.getByRole('button', { name: 'Help' }).click();
+    await help().waitFor();
+    await settle(page);
+    expect(await help().isVisible()).toBe(true);
+    for (const heading of [
+      'Your first kaleidoscope in five steps',
+      'Examples to open',
+      'Socket colours',
+      'Keyboard shortcuts',
+    ])
+      expect(await help().getByRole('heading', { name: heading }).isVisible()).toBe(true);
+    expect(await help().locator('.kf-help__steps li').count()).toBe(5);
+    await page.keyboard.press('Escape');
+    await help().waitFor({ state: 'detached' });
+  });
+
+  it('opens Help with the ? key, and an example link opens that example', async () => {
+    await page.locator('.kf-graph').click({ position: { x: 20, y: 300 } });
+    await page.keyboard.press('?');
+    await help().waitFor();
+    await settle(page);
+    expect(await help().isVisible()).toBe(true);
+    await help()
+      .getByRole('button', { name: /Apollonian gasket/ })
+      .click();
+    await help().waitFor({ state: 'detached' });
+    await expect.poll(() => page.getByLabel('Document title').inputValue()).toMatch(/Apollonian/);
+  });
+
+  it('opens the PNG export dialog and it stays open', async () => {
+    await page.getByRole('button', { name: 'Export' }).click();
+    await page.getByRole('menuitem', { name: /PNG/ }).click();
+    const dialog = page.getByRole('dialog', { name: 'Export PNG' });
+    await dialog.waitFor();
+    await settle(page);
+    expect(await dialog.isVisible()).toBe(true);
+    await dialog.getByRole('button', { name: 'Close export' }).click();
+    await dialog.waitFor({ state: 'detached' });
+  });
+});
+
+describe('first visit, unfinished graphs and the walkthrough — dev server (npm start)', () => {
+  let app: ServedApp;
+  let page: Page;
+  beforeAll(async () => {
+    app = await serveDevApp();
+    page = await (await app.newContext({ width: 1920, height: 1080 }, { firstVisit: true })).newPage();
+    await page.goto(app.url);
+  });
+  afterAll(() => app?.close());
+
+  const welcome = () => page.getByRole('region', { name: 'Welcome to Kleinflow' });
+  const hint = () => page.getByTestId('render-hint');
+
+  it('greets a first visit with three ways in, and remembers the choice', async () => {
+    await welcome().waitFor();
+    for (const name of [
+      'Build a kaleidoscope step by step',
+      'Empty canvas',
+      '(2,3,7) hyperbolic tessellation',
+    ])
+      expect(await welcome().getByRole('button', { name }).isVisible()).toBe(true);
+    await welcome().getByRole('button', { name: 'Empty canvas' }).click();
+    await welcome().waitFor({ state: 'detached' });
+    await expect.poll(() => nodeCount(page)).toBe(0);
+    await page.reload();
+    await page.getByRole('button', { name: 'Help' }).waitFor();
+    await settle(page);
+    expect(await welcome().count()).toBe(0);
+  });
+
+  it('shows an empty graph as a calm pane that says what to do — never a flat error colour', async () => {
+    await page.getByRole('button', { name: 'New' }).click();
+    await expect.poll(() => hint().textContent()).toBe(HINTS.empty);
+    expect(await hint().getAttribute('class')).toContain('kf-render__hint--calm');
+    const px = await renderPixels(page);
+    expect(px.mean).toBeLessThan(40); // the dark theme background, not the palette's red
+    const p = await addNode(page, 'point', 400, 300);
+    expect(p).toBeTruthy();
+    await expect.poll(() => hint().textContent()).toBe(HINTS.noRender);
+    const render = await addNode(page, 'render', 700, 300);
+    expect(render).toBeTruthy();
+    await expect.poll(() => hint().textContent()).toBe(HINTS.noElements);
+    expect(await page.getByTestId('diagnostics-count').textContent()).toMatch(/No problems/);
+  });
+
+  it('walks a newcomer through the *333 kaleidoscope, ticking each step as it is done', async () => {
+    await page.getByRole('button', { name: 'Help' }).click();
+    await page.getByRole('button', { name: 'Build a kaleidoscope from points, step by step' }).click();
+    const panel = page.getByRole('region', { name: 'Walkthrough' });
+    await panel.waitFor();
+    await expect.poll(() => nodeCount(page)).toBe(0);
+    const done = () => panel.locator('[data-done="true"]').count();
+    expect(await done()).toBe(0);
+
+    // Corners of an equilateral triangle; the third line is drawn the wrong way round (A→C).
+    const corners = [
+      ['-1', '-0.5774'],
+      ['1', '-0.5774'],
+      ['0', '1.1547'],
+    ];
+    const rows = [30, 330, 630]; // graph-pane coordinates, right of the walkthrough panel
+    const points: string[] = [];
+    for (const [i, y] of rows.entries()) {
+      const id = await addNode(page, 'point', 340, y);
+      await setField(page, id, 'x', corners[i][0]);
+      await setField(page, id, 'y', corners[i][1]);
+      points.push(id);
+    }
+    await expect.poll(done).toBe(1);
+    const lines: string[] = [];
+    for (const y of rows) lines.push(await addNode(page, 'line', 600, y));
+    const ends: [number, number][] = [
+      [0, 1],
+      [1, 2],
+      [0, 2],
+    ];
+    for (const [i, [a, b]] of ends.entries()) {
+      await connect(page, points[a], 'point', lines[i], 'a');
+      await connect(page, points[b], 'point', lines[i], 'b');
+    }
+    await expect.poll(done).toBe(2);
+    const mirrors: string[] = [];
+    for (const y of rows) mirrors.push(await addNode(page, 'line reflection', 860, y));
+    for (let i = 0; i < 3; i++) await connect(page, lines[i], 'line', mirrors[i], 'line');
+    await expect.poll(done).toBe(3);
+    const render = await addNode(page, 'render', 1150, 330);
+    for (const m of mirrors) await connect(page, m, 'element', render, 'elements');
+    await expect.poll(done).toBe(4);
+    // The reversed line keeps the outside: the walkthrough names it and says how to fix it.
+    await expect
+      .poll(() => panel.locator('.kf-walkthrough__todo').textContent())
+      .toMatch(/keeps the outside/);
+    await nodeEl(page, mirrors[2]).locator('.kf-toggle', { hasText: 'flip' }).click();
+    await expect.poll(done).toBe(5);
+    expect(await panel.getByRole('status').textContent()).toMatch(/Done!/);
+    expect(await hint().count()).toBe(0);
+  }, 120_000);
+});

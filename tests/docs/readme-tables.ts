@@ -1,10 +1,11 @@
 /**
- * The README's generated tables — the node reference (from the registry) and the keyboard
- * shortcuts (from src/app/shortcuts.ts) — so the documentation cannot drift from the code.
+ * The README's generated tables — the node reference (from the registry), the keyboard
+ * shortcuts (from src/app/shortcuts.ts) and the Help's quick start (src/app/help/quick-start.ts) — so the documentation cannot drift from the code.
  * `UPDATE_README=1 npx vitest run tests/docs` rewrites them in place.
  */
 import type { NodeDef } from '../../nodes/core/define-node.ts';
 import { registry } from '../../nodes/types/index.ts';
+import { QUICK_START } from '../../src/app/help/quick-start.ts';
 import { SHORTCUTS } from '../../src/app/shortcuts.ts';
 
 const cell = (s: string) => s.replace(/\|/g, '\\|');
@@ -35,6 +36,11 @@ export function shortcutTable(): string {
       rows.push(`| ${s.keys.map((k) => `<kbd>${cell(k)}</kbd>`).join(' / ')} | ${cell(s.action)} |`);
   }
   return rows.join('\n');
+}
+
+/** The Help dialog's five-step quick start, as a numbered list. */
+export function quickStartList(): string {
+  return QUICK_START.map((s, i) => `${i + 1}. **${s.title}.** ${s.detail}`).join('\n');
 }
 
 /** Replaces the text between `<!-- NAME:begin -->` and `<!-- NAME:end -->`. */

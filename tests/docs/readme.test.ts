@@ -1,16 +1,16 @@
 import { readFileSync, writeFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { registry } from '../../nodes/types/index.ts';
-import { nodeReference, replaceSection, shortcutTable } from './readme-tables.ts';
+import { nodeReference, quickStartList, replaceSection, shortcutTable } from './readme-tables.ts';
 
 const README = new URL('../../README.md', import.meta.url);
 
 describe('README stays true to the code', () => {
   const text = readFileSync(README, 'utf8');
   const expected = replaceSection(
-    replaceSection(text, 'nodes', nodeReference()),
-    'shortcuts',
-    shortcutTable(),
+    replaceSection(replaceSection(text, 'nodes', nodeReference()), 'shortcuts', shortcutTable()),
+    'quickstart',
+    quickStartList(),
   );
   const updating = process.env.UPDATE_README === '1';
   if (updating && expected !== text) writeFileSync(README, expected);

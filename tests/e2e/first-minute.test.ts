@@ -5,11 +5,16 @@
  * visit gets a welcome card that is remembered once dismissed; an empty or unfinished graph shows
  * a calm pane that says what is missing; the guided walkthrough ticks steps off as they are done.
  */
+import { mkdirSync } from 'node:fs';
+import { join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { HINTS } from '../../src/app/render-hint.ts';
-import { type ServedApp, serveApp, serveDevApp } from './app-server.ts';
-import { addNode, connect, nodeCount, nodeEl, renderPixels, setField } from './editor-page.ts';
+import { repoRoot, type ServedApp, serveApp, serveDevApp } from './app-server.ts';
+import { addNode, connect, nodeCount, nodeEl, renderPixels, setField, waitRendered } from './editor-page.ts';
+
+mkdirSync(join(repoRoot, 'test-artifacts'), { recursive: true });
+const artifact = (name: string) => join(repoRoot, 'test-artifacts', name);
 
 /** Two animation frames: every task queued before them (a stale dialog `close` event) has run. */
 const settle = (page: Page) =>
@@ -96,6 +101,7 @@ describe('first visit, unfinished graphs and the walkthrough — dev server (npm
       '(2,3,7) hyperbolic tessellation',
     ])
       expect(await welcome().getByRole('button', { name }).isVisible()).toBe(true);
+    await page.screenshot({ path: artifact('welcome.png') });
     await welcome().getByRole('button', { name: 'Empty canvas' }).click();
     await welcome().waitFor({ state: 'detached' });
     await expect.poll(() => nodeCount(page)).toBe(0);
@@ -119,6 +125,28 @@ describe('first visit, unfinished graphs and the walkthrough — dev server (npm
     await expect.poll(() => hint().textContent()).toBe(HINTS.noElements);
     expect(await page.getByTestId('diagnostics-count').textContent()).toMatch(/No problems/);
   });
+
+  it('builds the (2,3,7) kaleidoscope from the empty canvas by following the Help quick start', async () => {
+    await page.getByRole('button', { name: 'New' }).click();
+    await expect.poll(() => nodeCount(page)).toBe(0);
+    // Step 1–2: the palette finds the nodes by the words the quick start uses.
+    const k = await addNode(page, 'triangle', 340, 60);
+    const render = await addNode(page, 'render', 700, 60);
+    // Step 3: mirrors → elements gives a picture.
+    await connect(page, k, 'elements', render, 'elements');
+    await expect.poll(() => hint().count()).toBe(0);
+    // Step 4: a tile colouring in parity.
+    const tile = await addNode(page, 'tile colouring', 340, 400);
+    await connect(page, tile, 'tile', render, 'tile');
+    await nodeEl(page, tile).locator('select[aria-label="colouring"]').selectOption('parity');
+    // Step 5: the disk frames it.
+    await connect(page, k, 'boundary', render, 'clip');
+    await waitRendered(page);
+    const px = await renderPixels(page);
+    expect(px.sd).toBeGreaterThan(30);
+    expect(await page.getByTestId('diagnostics-count').textContent()).toMatch(/No problems/);
+    expect(await nodeEl(page, k).locator('.kf-node__readout').textContent()).toMatch(/hyperbolic/);
+  }, 120_000);
 
   it('walks a newcomer through the *333 kaleidoscope, ticking each step as it is done', async () => {
     await page.getByRole('button', { name: 'Help' }).click();
@@ -166,8 +194,12 @@ describe('first visit, unfinished graphs and the walkthrough — dev server (npm
     // The reversed line keeps the outside: the walkthrough names it and says how to fix it.
     await expect
       .poll(() => panel.locator('.kf-walkthrough__todo').textContent())
-      .toMatch(/keeps the outside/);
-    await nodeEl(page, mirrors[2]).locator('.kf-toggle', { hasText: 'flip' }).click();
+      .toMatch(/^Line reflection 3 keeps the outside/);
+    await page.screenshot({ path: artifact('walkthrough.png') });
+    await panel.getByRole('button', { name: 'Flip it' }).click();
+    await expect
+      .poll(() => nodeEl(page, mirrors[2]).locator('input[aria-label="flip"]').isChecked())
+      .toBe(true);
     await expect.poll(done).toBe(5);
     expect(await panel.getByRole('status').textContent()).toMatch(/Done!/);
     expect(await hint().count()).toBe(0);

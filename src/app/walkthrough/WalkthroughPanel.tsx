@@ -4,6 +4,7 @@
  */
 import type { GraphDoc } from '../../../nodes/graph/document.ts';
 import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
+import { useStore } from '../../state/use-store.ts';
 import { WALKTHROUGH, walkthroughStatus } from './steps.ts';
 
 interface Props {
@@ -13,6 +14,7 @@ interface Props {
 }
 
 export function WalkthroughPanel({ doc, evaluation, onClose }: Props) {
+  const store = useStore();
   const status = walkthroughStatus(doc, evaluation);
   const current = status.findIndex((s) => !s.done);
   return (
@@ -41,6 +43,23 @@ export function WalkthroughPanel({ doc, evaluation, onClose }: Props) {
                 {s.done && <span className="kf-visually-hidden"> (done)</span>}
                 {i === current && <p className="kf-walkthrough__how">{step.how}</p>}
                 {i === current && s.todo && <p className="kf-walkthrough__todo">{s.todo}</p>}
+                {i === current && s.flip && s.flip.length > 0 && (
+                  <button
+                    type="button"
+                    className="kf-button"
+                    onClick={() =>
+                      store.dispatch(
+                        {
+                          type: 'set-params',
+                          patches: s.flip!.map((nodeId) => ({ nodeId, params: { flip: true } })),
+                        },
+                        'flip mirror',
+                      )
+                    }
+                  >
+                    Flip {s.flip.length === 1 ? 'it' : 'them'}
+                  </button>
+                )}
               </div>
             </li>
           );

@@ -18,6 +18,8 @@ export interface StepStatus {
   readonly done: boolean;
   /** What is still missing or wrong, in the user's words (absent when done). */
   readonly todo?: string;
+  /** Mirrors whose `flip` would fix the step (the panel offers a one-click fix). */
+  readonly flip?: readonly string[];
 }
 
 export const WALKTHROUGH: readonly WalkthroughStep[] = [
@@ -82,21 +84,22 @@ export function walkthroughStatus(doc: GraphDoc, evaluation: Evaluation): readon
     render >= 3 ? { done: true } : { done: false, todo: `${plural(render, 'mirror')} wired into Render` },
     render >= 3 && outside.length === 0 && evaluation.scene.elements.length >= 3
       ? { done: true }
-      : {
-          done: false,
-          todo:
-            outside.length > 0
-              ? `${outside.join(', ')} keep${outside.length === 1 ? 's' : ''} the outside: tick “flip”`
-              : 'wire three mirrors into Render first',
-        },
+      : outside.length > 0
+        ? {
+            done: false,
+            todo: `${outside.map((m) => m.name).join(', ')} keep${outside.length === 1 ? 's' : ''} the outside: tick “flip”`,
+            flip: outside.map((m) => m.id),
+          }
+        : { done: false, todo: 'wire three mirrors into Render first' },
   ];
 }
 
 /**
- * Labels of the rendered line mirrors whose kept side (p − q)·n ≥ 0 does not contain the centroid
- * of the document's points (the triangle's inside when the points are its corners).
+ * The rendered line mirrors whose kept side (p − q)·n ≥ 0 does not contain the centroid of the
+ * document's points (the triangle's inside when the points are its corners), named as the user
+ * sees them: the node's label, or "Line reflection N" counting those nodes in document order.
  */
-function mirrorsKeepingOutside(doc: GraphDoc, evaluation: Evaluation): string[] {
+function mirrorsKeepingOutside(doc: GraphDoc, evaluation: Evaluation): { id: string; name: string }[] {
   const corners = doc.nodes
     .filter((n) => n.type === 'point')
     .map((n) => evaluation.nodes.get(n.id)?.outputs?.point)
@@ -107,5 +110,9 @@ function mirrorsKeepingOutside(doc: GraphDoc, evaluation: Evaluation): string[] 
   return evaluation.scene.elements
     .filter((e): e is ReflectionElement => e.kind === 'reflection')
     .filter((e) => (cx - e.q[0]) * e.n[0] + (cy - e.q[1]) * e.n[1] < 0)
-    .map((e) => doc.nodes.find((n) => n.id === e.nodeId)?.label ?? `mirror ${e.nodeId}`);
+    .map((e) => {
+      const reflections = doc.nodes.filter((n) => n.type === 'reflection');
+      const i = reflections.findIndex((n) => n.id === e.nodeId);
+      return { id: e.nodeId, name: reflections[i]?.label ?? `Line reflection ${i + 1}` };
+    });
 }

@@ -48,7 +48,8 @@ describe('walkthroughStatus', () => {
   it('names a mirror that keeps the outside, and is satisfied once it is flipped', () => {
     const wrong = build(4, true);
     expect(wrong[4].done).toBe(false);
-    expect(wrong[4].todo).toMatch(/mirror m2 keeps the outside/);
+    expect(wrong[4].todo).toMatch(/^Line reflection 3 keeps the outside/);
+    expect(wrong[4].flip).toEqual(['m2']);
     expect(build(4, true, true)[4].done).toBe(true);
   });
 

@@ -16,7 +16,7 @@ import {
 } from '../core/scene.ts';
 import { type Analysis, analyzeGraph } from './analyze.ts';
 import type { GraphDoc } from './document.ts';
-import { migrateNodeParams } from './migrate.ts';
+import { nodeVersion, nodeVersionProblem } from './migrate.ts';
 import { checkNumber, resolveParams } from './params.ts';
 
 export interface NodeEvaluation {
@@ -74,13 +74,15 @@ export function evaluateGraph(
       results.set(id, { diagnostics: [] }); // placeholder: reported by analyze
       continue;
     }
-    const migrated = migrateNodeParams(def, node.params, node.version);
-    if (!migrated.ok) {
-      const problem = diag('nodeVersion', { nodeId: id, path: `nodes[${index}].version` }, migrated.message);
+    // Documents are migrated once, on load (migrate.ts): a node not at its type's version here is
+    // one that could not be migrated, and its params mean something else: it is not run.
+    const versionProblem = nodeVersionProblem(def, nodeVersion(node));
+    if (versionProblem) {
+      const problem = diag('nodeVersion', { nodeId: id, path: `nodes[${index}].version` }, versionProblem);
       results.set(id, { diagnostics: [problem] });
       continue;
     }
-    const result = evaluateNode(def, node.id, index, migrated.params, analysis, results, time);
+    const result = evaluateNode(def, node.id, index, node.params, analysis, results, time);
     results.set(id, result);
     if (!result.ctx) continue;
     if (result.render) renders.push({ id, settings: result.render });

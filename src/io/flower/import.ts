@@ -58,6 +58,12 @@ export function importFlower(json: unknown, registry: NodeRegistry = defaultRegi
   const edges = wireEdges(graph, mapped, ids, registry, notes);
   addTime(graph, mapped, ids, nodes, edges);
   addOutput(graph, mapped, ids, nodes, edges, notes);
+  // Flower nodes map to today's params: mark them current (absent means version 1), so that
+  // loading below does not migrate them as if they were old.
+  for (const n of nodes) {
+    const version = registry.get(n.type)?.version ?? 1;
+    if (version !== 1) n.version = version;
+  }
 
   const doc: GraphDoc = {
     format: FORMAT,
@@ -72,7 +78,7 @@ export function importFlower(json: unknown, registry: NodeRegistry = defaultRegi
   };
   const view = flowerView(evaluateGraph(doc, registry).scene.overlays);
   doc.view = { center: [view.center[0], view.center[1]], scale: view.scale };
-  const checked = loadDocument(doc);
+  const checked = loadDocument(doc, registry);
   if (!checked.ok) return checked;
   return { ok: true, doc: checked.doc, notes };
 }

@@ -4,6 +4,7 @@
  */
 import type { EvalContext, NodeDef, RenderSettings } from '../core/define-node.ts';
 import { type Diagnostic, diag, hasErrors } from '../core/diagnostics.ts';
+import { ownEntry, setOwn } from '../core/port-lookup.ts';
 import { PORT_TYPE_INFO } from '../core/ports.ts';
 import type { NodeRegistry } from '../core/registry.ts';
 import {
@@ -141,13 +142,13 @@ function evaluateNode(
     const edges = edgesByPort?.get(port);
     const many = PORT_TYPE_INFO[spec.type].many;
     if (!edges) {
-      if (many) inputs[port] = [];
+      if (many) setOwn(inputs, port, []);
       continue;
     }
     const values: unknown[] = [];
     for (const edge of orderBySource(edges, analysis)) {
       const source = results.get(edge.from.node);
-      const value = source?.outputs?.[edge.from.port];
+      const value = ownEntry(source?.outputs, edge.from.port);
       if (value === undefined && source?.outputs) {
         // The source worked but leaves this output empty in its current set-up (a kaleidoscope's
         // disk when it is not hyperbolic): an optional input is then simply unconnected.
@@ -163,9 +164,9 @@ function evaluateNode(
       }
       values.push(value);
     }
-    if (many) inputs[port] = (values as SceneElement[][]).flat();
+    if (many) setOwn(inputs, port, (values as SceneElement[][]).flat());
     else if (values.length > 0) {
-      inputs[port] = values[0];
+      setOwn(inputs, port, values[0]);
       if (spec.type === 'number') {
         const problem = checkNumber(spec, values[0] as number);
         if (problem) diagnostics.push(diag('badParam', { nodeId, port }, port, problem));

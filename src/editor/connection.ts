@@ -3,6 +3,8 @@
  * which wires may be drawn, and the edge a valid wire becomes. React Flow handle ids are
  * `in:<port>` for inputs and `out:<port>` for outputs.
  */
+
+import { portSpec } from '../../nodes/core/port-lookup.ts';
 import { canConnect, type PortType } from '../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
@@ -29,7 +31,7 @@ export function portType(
   const node = doc.nodes.find((n) => n.id === nodeId);
   const def = node && registry.get(node.type);
   if (!def) return null;
-  return (side === 'in' ? def.inputs[port]?.type : def.outputs[port]?.type) ?? null;
+  return portSpec(def, side === 'in' ? 'inputs' : 'outputs', port)?.type ?? null;
 }
 
 /** Whether `to` can be reached from `from` along edges (a new edge to → from would close a cycle). */

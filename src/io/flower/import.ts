@@ -5,6 +5,7 @@
  * the region Flower showed. Whatever does not carry over is reported as a KF502 note, never dropped silently.
  */
 import { type Diagnostic, diag } from '../../../nodes/core/diagnostics.ts';
+import { inputSpec, outputSpec, ownEntry } from '../../../nodes/core/port-lookup.ts';
 import { canConnect } from '../../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../../nodes/core/registry.ts';
 import {
@@ -96,7 +97,7 @@ function mapNodes(graph: FlowerGraph, registry: NodeRegistry, notes: Diagnostic[
   const mapped = new Map<string, MappedNode>();
   for (const node of graph.nodes) {
     const path = `nodes[${node.index}]`;
-    const map = Object.hasOwn(FLOWER_NODE_TYPES, node.name) ? FLOWER_NODE_TYPES[node.name] : undefined;
+    const map = ownEntry(FLOWER_NODE_TYPES, node.name);
     if (!map) {
       notes.push(note(path, `unknown Flower node type "${node.name}" ("${node.id}"); skipped`));
       continue;
@@ -172,8 +173,8 @@ function wireEdges(
       );
       continue;
     }
-    const out = registry.get(typeOfId.get(from.node)!)?.outputs[from.port]?.type;
-    const inp = registry.get(target.type)?.inputs[port]?.type;
+    const out = outputSpec(registry.get(typeOfId.get(from.node)!), from.port)?.type;
+    const inp = inputSpec(registry.get(target.type), port)?.type;
     if (!out || !inp || !canConnect(out, inp)) {
       notes.push(
         note(

@@ -21,7 +21,8 @@ import { loadDocument } from '../../../nodes/graph/load.ts';
 import { registry as defaultRegistry } from '../../../nodes/types/index.ts';
 import { addOutput, addTime, GRAPH_SPREAD, mirrorOrder } from './added-nodes.ts';
 import { type FlowerGraph, isFlowerDocument, note, readFlowerGraph } from './format.ts';
-import { FLOWER_NODE_TYPES, type MappedNode } from './node-types.ts';
+import type { MappedNode } from './mapping.ts';
+import { FLOWER_NODE_TYPES } from './node-types.ts';
 import { flowerView } from './view.ts';
 
 export { FLOWER_RENDER } from './added-nodes.ts';

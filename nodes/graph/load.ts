@@ -1,8 +1,9 @@
 /**
  * Loading a document: JSON text (or an already parsed value) → migrate the document → validate
  * with zod → migrate each node to its type's version. This is the one place documents are
- * migrated: what it returns is current, and evaluation reads params as they are. Problems that make the file unusable come back with their paths and no document; graph-level
- * problems (unknown types, bad edges, cycles) are found later by analyze/evaluate and never stop a load.
+ * migrated: what it returns is current, and evaluation reads params as they are. Problems that
+ * make the file unusable come back with their paths and no document; graph-level problems
+ * (unknown types, bad edges, cycles) are found later by analyze/evaluate and never stop a load.
  */
 import { type Diagnostic, diag } from '../core/diagnostics.ts';
 import type { NodeRegistry } from '../core/registry.ts';

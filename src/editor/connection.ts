@@ -3,7 +3,6 @@
  * which wires may be drawn, and the edge a valid wire becomes. React Flow handle ids are
  * `in:<port>` for inputs and `out:<port>` for outputs.
  */
-
 import { portSpec } from '../../nodes/core/port-lookup.ts';
 import { canConnect, type PortType } from '../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';

@@ -3,10 +3,11 @@
  * user's edits. Node migrations run once, on load (and on paste); evaluation reads params as they are.
  */
 import { describe, expect, it } from 'vitest';
+import { emptyDocument } from '../../../nodes/graph/document.ts';
 import { parseDocumentText } from '../../../nodes/graph/load.ts';
 import { restore } from '../../../src/state/autosave.ts';
 import { applyChange } from '../../../src/state/changes.ts';
-import { copyNodes, parseClipboard, serializeClipboard } from '../../../src/state/clipboard.ts';
+import { copyNodes, parseClipboard, preparePaste, serializeClipboard } from '../../../src/state/clipboard.ts';
 import { CURRENT_RING, ringRadius, ringRegistry, v1RingDoc } from '../../support/versioned-node.ts';
 
 const editRadius = { type: 'set-params', patches: [{ nodeId: 'ring', params: { radius: 5 } }] } as const;
@@ -41,6 +42,23 @@ describe('a pasted fragment is migrated', () => {
     expect(pasted?.nodes[0]).toMatchObject(CURRENT_RING);
     expect(pasted?.nodes[1]).toEqual(copied.nodes[1]); // the inversion was current already
     expect(pasted?.edges).toEqual(copied.edges);
+  });
+
+  it('a pasted old graph takes edits: the picture follows', () => {
+    const copied = copyNodes(v1RingDoc(), ['ring', 'inv', 'out']);
+    const data = copied && parseClipboard(serializeClipboard(copied), ringRegistry);
+    if (!data) throw new Error('nothing to paste');
+    const target = emptyDocument();
+    const { nodes, edges } = preparePaste(target, data);
+    const pasted = applyChange(target, { type: 'paste', nodes, edges }, ringRegistry);
+    const ring = pasted.nodes.find((n) => n.type === 'test-ring')!;
+    expect(ringRadius(pasted)).toBe(2);
+    const edited = applyChange(
+      pasted,
+      { type: 'set-params', patches: [{ nodeId: ring.id, params: { radius: 5 } }] },
+      ringRegistry,
+    );
+    expect(ringRadius(edited)).toBe(5);
   });
 
   it('unknown node types on the clipboard keep their data and version', () => {

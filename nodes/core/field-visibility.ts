@@ -5,16 +5,12 @@
  * inspector and the layout estimate all agree.
  */
 import type { FieldCondition, NodeDef, ParamSpec } from './define-node.ts';
+import { inputSpec, ownEntry, paramSpec } from './port-lookup.ts';
 
 const NONE: ReadonlySet<string> = new Set();
 
 /** A field's declaration, input or param. */
-const fieldSpec = (def: NodeDef, name: string) =>
-  Object.hasOwn(def.inputs, name)
-    ? def.inputs[name]
-    : Object.hasOwn(def.params, name)
-      ? def.params[name]
-      : undefined;
+const fieldSpec = (def: NodeDef, name: string) => inputSpec(def, name) ?? paramSpec(def, name);
 
 /** The value a controlling param has: the stored one when valid for its spec, else its default. */
 export function controlValue(spec: ParamSpec, stored: unknown): unknown {
@@ -37,9 +33,9 @@ function holds(
   depth: number,
 ): boolean {
   if (!cond) return true;
-  const control = Object.hasOwn(def.params, cond.param) ? def.params[cond.param] : undefined;
+  const control = paramSpec(def, cond.param);
   if (!control || depth > Object.keys(def.params).length) return true;
-  const value = controlValue(control, params[cond.param]);
+  const value = controlValue(control, ownEntry(params, cond.param));
   return cond.is.includes(value as string | boolean) && holds(def, control.when, params, depth + 1);
 }
 
@@ -53,7 +49,7 @@ export function isFieldShown(
   params: Readonly<Record<string, unknown>>,
   connected: ReadonlySet<string> = NONE,
 ): boolean {
-  if (connected.has(name) && Object.hasOwn(def.inputs, name)) return true;
+  if (connected.has(name) && inputSpec(def, name)) return true;
   const spec = fieldSpec(def, name);
   return spec ? holds(def, spec.when, params, 0) : false;
 }

@@ -5,6 +5,7 @@
  */
 import type { NodeDef } from '../core/define-node.ts';
 import { type Diagnostic, diag } from '../core/diagnostics.ts';
+import { inputSpec, outputSpec } from '../core/port-lookup.ts';
 import { canConnect, PORT_TYPE_INFO } from '../core/ports.ts';
 import type { NodeRegistry } from '../core/registry.ts';
 import type { GraphDoc, GraphEdge, GraphNode } from './document.ts';
@@ -59,7 +60,7 @@ export function analyzeGraph(doc: GraphDoc, registry: NodeRegistry): Analysis {
   for (const [nodeId, byPort] of incoming) {
     const { def } = nodes.get(nodeId)!;
     for (const [port, list] of byPort) {
-      if (list.length > 1 && !PORT_TYPE_INFO[def!.inputs[port].type].many) {
+      if (list.length > 1 && !PORT_TYPE_INFO[inputSpec(def, port)!.type].many) {
         diagnostics.push(
           diag('multipleEdges', { nodeId, port, path: `edges[${doc.edges.indexOf(list[1])}]` }, port),
         );
@@ -97,10 +98,8 @@ function checkEdge(
   if (!dst) return diag('danglingEdge', { path: `${path}.to.node` }, 'target', edge.to.node);
   if (edge.from.node === edge.to.node) return diag('selfEdge', { path, nodeId: edge.to.node }, edge.to.node);
   if (!dst.def) return undefined;
-  // Own keys only: a port named "constructor" or "toString" must not find Object.prototype's.
-  const out =
-    src.def && Object.hasOwn(src.def.outputs, edge.from.port) ? src.def.outputs[edge.from.port] : undefined;
-  const inp = Object.hasOwn(dst.def.inputs, edge.to.port) ? dst.def.inputs[edge.to.port] : undefined;
+  const out = outputSpec(src.def, edge.from.port);
+  const inp = inputSpec(dst.def, edge.to.port);
   if (src.def && !out)
     return diag(
       'unknownPort',

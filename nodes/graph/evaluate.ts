@@ -4,6 +4,7 @@
  */
 import type { EvalContext, NodeDef, RenderSettings } from '../core/define-node.ts';
 import { type Diagnostic, diag, hasErrors } from '../core/diagnostics.ts';
+import { ownEntry, setOwn } from '../core/port-lookup.ts';
 import { PORT_TYPE_INFO } from '../core/ports.ts';
 import type { NodeRegistry } from '../core/registry.ts';
 import {
@@ -16,7 +17,7 @@ import {
 } from '../core/scene.ts';
 import { type Analysis, analyzeGraph } from './analyze.ts';
 import type { GraphDoc } from './document.ts';
-import { migrateNodeParams } from './migrate.ts';
+import { nodeVersion, nodeVersionProblem } from './migrate.ts';
 import { checkNumber, resolveParams } from './params.ts';
 
 export interface NodeEvaluation {
@@ -74,13 +75,15 @@ export function evaluateGraph(
       results.set(id, { diagnostics: [] }); // placeholder: reported by analyze
       continue;
     }
-    const migrated = migrateNodeParams(def, node.params, node.version);
-    if (!migrated.ok) {
-      const problem = diag('nodeVersion', { nodeId: id, path: `nodes[${index}].version` }, migrated.message);
+    // Documents are migrated once, on load (migrate.ts): a node not at its type's version here is
+    // one that could not be migrated, and its params mean something else: it is not run.
+    const versionProblem = nodeVersionProblem(def, nodeVersion(node));
+    if (versionProblem) {
+      const problem = diag('nodeVersion', { nodeId: id, path: `nodes[${index}].version` }, versionProblem);
       results.set(id, { diagnostics: [problem] });
       continue;
     }
-    const result = evaluateNode(def, node.id, index, migrated.params, analysis, results, time);
+    const result = evaluateNode(def, node.id, index, node.params, analysis, results, time);
     results.set(id, result);
     if (!result.ctx) continue;
     if (result.render) renders.push({ id, settings: result.render });
@@ -139,13 +142,13 @@ function evaluateNode(
     const edges = edgesByPort?.get(port);
     const many = PORT_TYPE_INFO[spec.type].many;
     if (!edges) {
-      if (many) inputs[port] = [];
+      if (many) setOwn(inputs, port, []);
       continue;
     }
     const values: unknown[] = [];
     for (const edge of orderBySource(edges, analysis)) {
       const source = results.get(edge.from.node);
-      const value = source?.outputs?.[edge.from.port];
+      const value = ownEntry(source?.outputs, edge.from.port);
       if (value === undefined && source?.outputs) {
         // The source worked but leaves this output empty in its current set-up (a kaleidoscope's
         // disk when it is not hyperbolic): an optional input is then simply unconnected.
@@ -161,9 +164,9 @@ function evaluateNode(
       }
       values.push(value);
     }
-    if (many) inputs[port] = (values as SceneElement[][]).flat();
+    if (many) setOwn(inputs, port, (values as SceneElement[][]).flat());
     else if (values.length > 0) {
-      inputs[port] = values[0];
+      setOwn(inputs, port, values[0]);
       if (spec.type === 'number') {
         const problem = checkNumber(spec, values[0] as number);
         if (problem) diagnostics.push(diag('badParam', { nodeId, port }, port, problem));

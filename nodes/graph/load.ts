@@ -1,15 +1,18 @@
 /**
- * Loading a document: JSON text (or an already parsed value) → migrate → validate with zod.
- * Problems that make the file unusable come back with their paths and no document; graph-level
- * problems (unknown types, bad edges, cycles) are found later by analyze/evaluate and never stop a load.
+ * Loading a document: JSON text (or an already parsed value) → migrate the document → validate
+ * with zod → migrate each node to its type's version. This is the one place documents are
+ * migrated: what it returns is current, and evaluation reads params as they are. Problems that
+ * make the file unusable come back with their paths and no document; graph-level problems
+ * (unknown types, bad edges, cycles) are found later by analyze/evaluate and never stop a load.
  */
 import { type Diagnostic, diag } from '../core/diagnostics.ts';
+import type { NodeRegistry } from '../core/registry.ts';
 import { LIMITS } from '../core/scene.ts';
 import { describeValue } from './describe-value.ts';
 import { DOC_VERSION, docSchema, FORMAT, type GraphDoc } from './document.ts';
 import { pathBeyondDepth } from './json-depth.ts';
 import { formatPath } from './json-path.ts';
-import { DOC_MIGRATIONS, type DocMigration, migrateDocument } from './migrate.ts';
+import { DOC_MIGRATIONS, type DocMigration, migrateDocument, migrateNodes } from './migrate.ts';
 
 export type LoadResult =
   | { ok: true; doc: GraphDoc; migratedFrom: number; diagnostics: Diagnostic[] }
@@ -18,20 +21,28 @@ export type LoadResult =
 /** At most this many schema problems are listed (a broken file can have thousands). */
 const MAX_REPORTED = 50;
 
-export function parseDocumentText(text: string): LoadResult {
+export interface LoadOptions {
+  /** Document migrations (tests use their own table). */
+  readonly migrations?: Readonly<Record<number, DocMigration>>;
+  /** The document version to migrate to (DOC_VERSION unless a test says). */
+  readonly target?: number;
+}
+
+/** `registry` holds the node types whose nodes are migrated (unknown types are kept as they are). */
+export function parseDocumentText(text: string, registry: NodeRegistry): LoadResult {
   let value: unknown;
   try {
     value = JSON.parse(text);
   } catch (e) {
     return { ok: false, diagnostics: [diag('notJson', { path: '(document)' }, (e as Error).message)] };
   }
-  return loadDocument(value);
+  return loadDocument(value, registry);
 }
 
 export function loadDocument(
   value: unknown,
-  migrations: Readonly<Record<number, DocMigration>> = DOC_MIGRATIONS,
-  target?: number,
+  registry: NodeRegistry,
+  { migrations = DOC_MIGRATIONS, target }: LoadOptions = {},
 ): LoadResult {
   if (typeof value !== 'object' || value === null || Array.isArray(value)) {
     const got = Array.isArray(value) ? 'an array' : value === null ? 'null' : typeof value;
@@ -98,5 +109,6 @@ export function loadDocument(
     }
     return { ok: false, diagnostics };
   }
-  return { ok: true, doc: parsed.data, migratedFrom: migrated.from, diagnostics: [] };
+  const doc = { ...parsed.data, nodes: migrateNodes(parsed.data.nodes, registry) };
+  return { ok: true, doc, migratedFrom: migrated.from, diagnostics: [] };
 }

@@ -4,6 +4,7 @@
  */
 import type { InputSpec, NodeDef, ParamSpec } from '../core/define-node.ts';
 import { type Diagnostic, diag } from '../core/diagnostics.ts';
+import { inputSpec, ownEntry, paramSpec, setOwn } from '../core/port-lookup.ts';
 import { hexColor, PORT_VALUE_SCHEMA } from '../core/port-values.ts';
 import { describeValue } from './describe-value.ts';
 import { formatPath } from './json-path.ts';
@@ -104,20 +105,20 @@ export function resolveParams(
 
   for (const [name, spec] of Object.entries(def.inputs)) {
     if (connected.has(name) || !PORT_VALUE_SCHEMA[spec.type]) continue;
-    const raw = Object.hasOwn(node.params, name) ? node.params[name] : spec.default;
+    const raw = ownEntry(node.params, name, spec.default);
     if (raw === undefined) continue; // optional input with no value: the node decides
     const r = parseInput(spec, raw);
     if (r.problem) problem(name, r.problem);
-    else inline[name] = r.value;
+    else setOwn(inline, name, r.value);
   }
   for (const [name, spec] of Object.entries(def.params)) {
-    const raw = Object.hasOwn(node.params, name) ? node.params[name] : spec.default;
+    const raw = ownEntry(node.params, name, spec.default);
     const r = parseParam(spec, raw);
     if (r.problem) problem(name, r.problem);
-    else params[name] = r.value;
+    else setOwn(params, name, r.value);
   }
   for (const name of Object.keys(node.params)) {
-    if (!Object.hasOwn(def.inputs, name) && !Object.hasOwn(def.params, name)) {
+    if (!inputSpec(def, name) && !paramSpec(def, name)) {
       diagnostics.push({
         ...diag(
           'badParam',

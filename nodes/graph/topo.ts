@@ -53,6 +53,24 @@ export function topologicalOrder(
   return { order, cycles: findCycles(blocked, succ), blocked };
 }
 
+/**
+ * Whether adding `edge` to the graph (`ids`, `edges`) would close a cycle through it: the editor
+ * refuses such a wire. Decided by the same ordering that evaluation uses, so the two agree: the
+ * wire closes a cycle exactly when its source, orderable without it, is blocked with it (adding an
+ * edge out of a node changes nothing upstream of it unless the edge leads back there). A source
+ * that is already blocked (downstream of a cycle the graph has) cannot be told apart this way:
+ * the wire is allowed, and analysis reports any cycle it closes like the first one.
+ */
+export function closesCycle(
+  ids: readonly string[],
+  edges: readonly { from: string; to: string }[],
+  edge: { from: string; to: string },
+): boolean {
+  if (edge.from === edge.to) return true;
+  if (topologicalOrder(ids, edges).blocked.has(edge.from)) return false;
+  return topologicalOrder(ids, [...edges, edge]).blocked.has(edge.from);
+}
+
 /** One representative cycle per strongly connected knot among the blocked nodes (iterative DFS). */
 function findCycles(blocked: ReadonlySet<string>, succ: ReadonlyMap<string, string[]>): string[][] {
   const cycles: string[][] = [];

@@ -16,7 +16,7 @@ const modules = import.meta.glob('../../examples/*.kleinflow.json', { eager: tru
 /** Examples that load cleanly, sorted by title (a broken example file is skipped, never shown). */
 export const EXAMPLES: readonly Example[] = Object.entries(modules)
   .flatMap(([path, json]) => {
-    const loaded = loadDocument(json);
+    const loaded = loadDocument(json, registry);
     if (!loaded.ok) return [];
     const id = path.replace(/^.*\//, '').replace(/\.kleinflow\.json$/, '');
     const { title, description } = loaded.doc.meta;

@@ -19,6 +19,7 @@ import {
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { NodeDef } from '../../nodes/core/define-node.ts';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import { portSpec } from '../../nodes/core/port-lookup.ts';
 import type { Evaluation } from '../../nodes/graph/evaluate.ts';
 import { registry } from '../../nodes/types/index.ts';
 import type { Change } from '../state/changes.ts';
@@ -179,7 +180,7 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, frame
       const data = state.fromNode.data as KfNodeData;
       const port = portOfHandle(state.fromHandle.id);
       const side = state.fromHandle.type;
-      const type = side === 'source' ? data.def?.outputs[port]?.type : data.def?.inputs[port]?.type;
+      const type = portSpec(data.def, side === 'source' ? 'outputs' : 'inputs', port)?.type;
       if (!type) return;
       const point = 'changedTouches' in event ? event.changedTouches[0] : event;
       openPalette(

@@ -7,6 +7,7 @@
 import { Handle, type NodeProps, Position, useConnection } from '@xyflow/react';
 import { memo } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import { portSpec } from '../../nodes/core/port-lookup.ts';
 import { canConnect, PORT_TYPE_INFO, type PortType } from '../../nodes/core/ports.ts';
 import { inHandle, outHandle, portOfHandle } from './connection.ts';
 import { useEditorActions } from './editor-context.ts';
@@ -22,8 +23,7 @@ function useWireInProgress(): { side: 'source' | 'target'; type: PortType; nodeI
     if (!c.inProgress || !c.fromHandle) return null;
     const data = c.fromNode.data as KfNodeData;
     const port = portOfHandle(c.fromHandle.id);
-    const type =
-      c.fromHandle.type === 'source' ? data.def?.outputs[port]?.type : data.def?.inputs[port]?.type;
+    const type = portSpec(data.def, c.fromHandle.type === 'source' ? 'outputs' : 'inputs', port)?.type;
     return type ? `${c.fromHandle.type}|${type}|${c.fromNode.id}` : null;
   });
   if (!key) return null;

@@ -3,9 +3,11 @@
  * which wires may be drawn, and the edge a valid wire becomes. React Flow handle ids are
  * `in:<port>` for inputs and `out:<port>` for outputs.
  */
+import { portSpec } from '../../nodes/core/port-lookup.ts';
 import { canConnect, type PortType } from '../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
+import { closesCycle } from '../../nodes/graph/topo.ts';
 
 export const inHandle = (port: string) => `in:${port}`;
 export const outHandle = (port: string) => `out:${port}`;
@@ -29,21 +31,7 @@ export function portType(
   const node = doc.nodes.find((n) => n.id === nodeId);
   const def = node && registry.get(node.type);
   if (!def) return null;
-  return (side === 'in' ? def.inputs[port]?.type : def.outputs[port]?.type) ?? null;
-}
-
-/** Whether `to` can be reached from `from` along edges (a new edge to → from would close a cycle). */
-function reaches(doc: GraphDoc, from: string, to: string): boolean {
-  const seen = new Set<string>();
-  const stack = [from];
-  while (stack.length > 0) {
-    const id = stack.pop()!;
-    if (id === to) return true;
-    if (seen.has(id)) continue;
-    seen.add(id);
-    for (const e of doc.edges) if (e.from.node === id) stack.push(e.to.node);
-  }
-  return false;
+  return portSpec(def, side === 'in' ? 'inputs' : 'outputs', port)?.type ?? null;
 }
 
 export type ConnectionVerdict = { ok: true } | { ok: false; reason: string };
@@ -55,6 +43,9 @@ export function checkConnection(doc: GraphDoc, registry: NodeRegistry, wire: Wir
   const to = portType(doc, registry, wire.target, 'in', portOfHandle(wire.targetHandle));
   if (!from || !to) return { ok: false, reason: 'unknown port' };
   if (!canConnect(from, to)) return { ok: false, reason: `a ${from} output cannot feed a ${to} input` };
-  if (reaches(doc, wire.target, wire.source)) return { ok: false, reason: 'this wire would make a cycle' };
+  const ids = doc.nodes.map((n) => n.id);
+  const edges = doc.edges.map((e) => ({ from: e.from.node, to: e.to.node }));
+  if (closesCycle(ids, edges, { from: wire.source, to: wire.target }))
+    return { ok: false, reason: 'this wire would make a cycle' };
   return { ok: true };
 }

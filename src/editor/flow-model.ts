@@ -5,6 +5,7 @@
 import type { Edge, Node } from '@xyflow/react';
 import type { NodeDef } from '../../nodes/core/define-node.ts';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import { outputSpec } from '../../nodes/core/port-lookup.ts';
 import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc, GraphNode } from '../../nodes/graph/document.ts';
@@ -123,7 +124,7 @@ export function toFlowEdges(
 ): Edge[] {
   const types = new Map(doc.nodes.map((n) => [n.id, registry.get(n.type)]));
   return doc.edges.map((e) => {
-    const type = types.get(e.from.node)?.outputs[e.from.port]?.type;
+    const type = outputSpec(types.get(e.from.node), e.from.port)?.type;
     const color = type ? PORT_TYPE_INFO[type].color : '#888';
     return {
       id: e.id,

@@ -9,6 +9,7 @@
  */
 import { diag } from '../../nodes/core/diagnostics.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
+import { registry as appRegistry } from '../../nodes/types/index.ts';
 import { importFlower, isFlowerDocument } from './flower/import.ts';
 import { type OpenResult, openKleinflowValue, openProblem } from './open-result.ts';
 import { isPng } from './png.ts';
@@ -24,13 +25,13 @@ const looksLikeShareLink = (text: string) =>
 
 /**
  * Opens JSON text (or a pasted share link). `registry` decides which node types a Flower import
- * may use (default: every registered type).
+ * may use and which node types' migrations run (default: every registered type).
  */
-export function openDocumentText(text: string, registry?: NodeRegistry): OpenResult {
+export function openDocumentText(text: string, registry: NodeRegistry = appRegistry): OpenResult {
   const trimmed = text.replace(/^\uFEFF/, '').trim();
   if (trimmed === '') return openProblem('the file is empty', '(document)');
   if (looksLikeShareLink(trimmed)) {
-    const shared = decodeShareFragment(trimmed);
+    const shared = decodeShareFragment(trimmed, registry);
     return shared.ok
       ? { ok: true, doc: shared.doc, notes: [], source: 'share-link' }
       : openProblem(shared.message, '(link)');
@@ -45,12 +46,12 @@ export function openDocumentText(text: string, registry?: NodeRegistry): OpenRes
     const imported = importFlower(value, registry);
     return imported.ok ? { ...imported, source: 'flower' } : imported;
   }
-  return openKleinflowValue(value, 'kleinflow');
+  return openKleinflowValue(value, 'kleinflow', registry);
 }
 
 /** Opens a dropped or chosen file: a Kleinflow PNG (its embedded graph) or UTF-8 JSON text. */
-export function openBytes(bytes: Uint8Array, registry?: NodeRegistry): OpenResult {
-  if (isPng(bytes)) return extractGraph(bytes);
+export function openBytes(bytes: Uint8Array, registry: NodeRegistry = appRegistry): OpenResult {
+  if (isPng(bytes)) return extractGraph(bytes, registry);
   let text: string;
   try {
     text = new TextDecoder('utf-8', { fatal: true }).decode(bytes);

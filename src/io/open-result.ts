@@ -1,5 +1,6 @@
 /** The result shape shared by every "open a graph" path (file, PNG, share link, Flower import). */
 import { type Diagnostic, diag } from '../../nodes/core/diagnostics.ts';
+import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import { DOC_VERSION, type GraphDoc } from '../../nodes/graph/document.ts';
 import { type LoadResult, loadDocument } from '../../nodes/graph/load.ts';
 
@@ -18,9 +19,9 @@ export function fromLoad(loaded: LoadResult, source: OpenSource): OpenResult {
   return { ok: true, doc: loaded.doc, notes, source };
 }
 
-/** A parsed JSON value that should be a Kleinflow document. */
-export const openKleinflowValue = (value: unknown, source: OpenSource): OpenResult =>
-  fromLoad(loadDocument(value), source);
+/** A parsed JSON value that should be a Kleinflow document (migrated to `registry`'s node types). */
+export const openKleinflowValue = (value: unknown, source: OpenSource, registry: NodeRegistry): OpenResult =>
+  fromLoad(loadDocument(value, registry), source);
 
 /** A single-problem failure (KF501) with a path such as "(file)". */
 export const openProblem = (message: string, path = '(file)'): OpenResult => ({

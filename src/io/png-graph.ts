@@ -2,8 +2,10 @@
  * A graph inside a PNG: exported images carry their graph's JSON in an iTXt chunk keyed
  * "kleinflow", so dropping the picture back onto Kleinflow reopens the graph that made it.
  */
+import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
+import { registry as appRegistry } from '../../nodes/types/index.ts';
 import { serializeDocument } from './json-text.ts';
 import { fromLoad, type OpenResult, openProblem } from './open-result.ts';
 import { encodePng, isPng, type PngImage, readPngText, setPngText } from './png.ts';
@@ -24,7 +26,7 @@ export function embedGraph(image: Uint8Array | PngImage, doc: GraphDoc): Uint8Ar
  * The embedded graph, loaded and validated, or why there is none: not a PNG, a PNG without a
  * "kleinflow" entry (a screenshot rather than an exported image), or a damaged graph (with paths).
  */
-export function extractGraph(bytes: Uint8Array): OpenResult {
+export function extractGraph(bytes: Uint8Array, registry: NodeRegistry = appRegistry): OpenResult {
   if (!isPng(bytes)) return openProblem('this file is not a PNG image');
   const text = readPngText(bytes)?.[PNG_GRAPH_KEY];
   if (text === undefined) {
@@ -32,5 +34,5 @@ export function extractGraph(bytes: Uint8Array): OpenResult {
       'this PNG has no Kleinflow graph inside (only images exported by Kleinflow carry one)',
     );
   }
-  return fromLoad(parseDocumentText(text), 'png');
+  return fromLoad(parseDocumentText(text, registry), 'png');
 }

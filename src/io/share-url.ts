@@ -6,9 +6,11 @@
  * milliseconds, never memory).
  */
 import { deflateSync, Inflate, strToU8 } from 'fflate';
+import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import { LIMITS } from '../../nodes/core/scene.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { loadDocument } from '../../nodes/graph/load.ts';
+import { registry as appRegistry } from '../../nodes/types/index.ts';
 import { decodeBase64Url, encodeBase64Url } from './base64url.ts';
 import { compactDocumentJson } from './json-text.ts';
 
@@ -98,7 +100,10 @@ export function boundedInflate(data: Uint8Array, maxBytes: number): InflateResul
 }
 
 /** Reads a graph from `#g=…` (or a whole URL with that fragment). Every failure is a message. */
-export function decodeShareFragment(fragment: string): ShareDecodeResult {
+export function decodeShareFragment(
+  fragment: string,
+  registry: NodeRegistry = appRegistry,
+): ShareDecodeResult {
   const payload = sharePayload(fragment.trim());
   if (payload === null)
     return { ok: false, message: 'this is not a Kleinflow share link (it has no "#g=" part)' };
@@ -119,7 +124,7 @@ export function decodeShareFragment(fragment: string): ShareDecodeResult {
   } catch (e) {
     return { ok: false, message: `the share link does not hold a graph (${(e as Error).message})` };
   }
-  const loaded = loadDocument(value);
+  const loaded = loadDocument(value, registry);
   if (!loaded.ok) {
     const shown = loaded.diagnostics.slice(0, 3).map((d) => d.message);
     const more = loaded.diagnostics.length > 3 ? ` (and ${loaded.diagnostics.length - 3} more)` : '';

@@ -4,8 +4,10 @@
  * kept under a backup key and offered for download. A full storage is reported, not ignored.
  */
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
+import { registry as appRegistry } from '../../nodes/types/index.ts';
 
 export const AUTOSAVE_KEY = 'kleinflow.autosave';
 export const AUTOSAVE_BACKUP_KEY = 'kleinflow.autosave.unreadable';
@@ -19,7 +21,8 @@ export type Restored =
   /** `text` is what was stored; `problems` say why it could not be loaded. */
   | { kind: 'unreadable'; text: string; problems: readonly Diagnostic[] };
 
-export function restore(storage: StorageLike): Restored {
+/** The saved document, migrated to `registry`'s node types like any other document that is opened. */
+export function restore(storage: StorageLike, registry: NodeRegistry = appRegistry): Restored {
   let text: string | null;
   try {
     text = storage.getItem(AUTOSAVE_KEY);
@@ -27,7 +30,7 @@ export function restore(storage: StorageLike): Restored {
     return { kind: 'none' }; // storage disabled (private mode, policy): nothing to restore
   }
   if (text === null) return { kind: 'none' };
-  const loaded = parseDocumentText(text);
+  const loaded = parseDocumentText(text, registry);
   if (loaded.ok) return { kind: 'ok', doc: loaded.doc };
   try {
     // Keep the unreadable text out of the way of the next save, so it is not overwritten.

@@ -3,6 +3,8 @@
  * (doc, change) into the next doc. Undo/redo, autosave and the overlay's drags all go through it.
  * Changes never mutate: untouched nodes and edges keep their identity (cheap history snapshots).
  */
+
+import { inputSpec, portSpec } from '../../nodes/core/port-lookup.ts';
 import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc, GraphEdge, GraphNode, PortRef } from '../../nodes/graph/document.ts';
@@ -33,7 +35,7 @@ const samePort = (a: PortRef, b: PortRef) => a.node === b.node && a.port === b.p
 /** Whether the input `to` takes many edges (unknown types/ports count as single). */
 export function inputTakesMany(doc: GraphDoc, registry: NodeRegistry, to: PortRef): boolean {
   const node = doc.nodes.find((n) => n.id === to.node);
-  const spec = node ? registry.get(node.type)?.inputs[to.port] : undefined;
+  const spec = node ? inputSpec(registry.get(node.type), to.port) : undefined;
   return spec ? PORT_TYPE_INFO[spec.type].many : false;
 }
 
@@ -42,7 +44,7 @@ function hasPort(doc: GraphDoc, registry: NodeRegistry, ref: PortRef, side: 'inp
   const node = doc.nodes.find((n) => n.id === ref.node);
   if (!node) return false;
   const def = registry.get(node.type);
-  return !def || ref.port in def[side]; // an unknown type's ports are unknown: its wires are kept
+  return !def || portSpec(def, side, ref.port) !== undefined; // an unknown type's ports are unknown: its wires are kept
 }
 
 /** `doc` with `f` applied to each node, or `doc` itself when `f` changed none (a no-op is no undo step). */

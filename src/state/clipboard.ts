@@ -1,8 +1,11 @@
 /**
  * Copy/paste of nodes as JSON `{ "format": "kleinflow-clipboard", nodes, edges }`: only edges
  * between copied nodes travel; a paste gets fresh ids and lands offset from the originals.
+ * Pasted nodes are migrated like a loaded document's (they may come from an older Kleinflow in
+ * another tab), so the document stays current.
  */
 import { z } from 'zod';
+import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import {
   edgeSchema,
   type GraphDoc,
@@ -10,6 +13,8 @@ import {
   type GraphNode,
   nodeSchema,
 } from '../../nodes/graph/document.ts';
+import { migrateNodes } from '../../nodes/graph/migrate.ts';
+import { registry as appRegistry } from '../../nodes/types/index.ts';
 import { idAllocator } from './ids.ts';
 
 export const CLIPBOARD_FORMAT = 'kleinflow-clipboard';
@@ -33,14 +38,16 @@ export function copyNodes(doc: GraphDoc, nodeIds: Iterable<string>): ClipboardDa
 
 export const serializeClipboard = (data: ClipboardData): string => JSON.stringify(data);
 
-/** Reads clipboard text; null when it is not Kleinflow nodes. */
-export function parseClipboard(text: string): ClipboardData | null {
+/** Reads clipboard text, its nodes migrated to `registry`'s types; null when it is not Kleinflow nodes. */
+export function parseClipboard(text: string, registry: NodeRegistry = appRegistry): ClipboardData | null {
+  let value: unknown;
   try {
-    const parsed = clipboardSchema.safeParse(JSON.parse(text));
-    return parsed.success ? parsed.data : null;
+    value = JSON.parse(text);
   } catch {
     return null;
   }
+  const parsed = clipboardSchema.safeParse(value);
+  return parsed.success ? { ...parsed.data, nodes: migrateNodes(parsed.data.nodes, registry) } : null;
 }
 
 /**

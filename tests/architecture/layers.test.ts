@@ -4,8 +4,8 @@
  * folder rules inside src/. The checker is first shown to catch made-up offenders, then run on
  * every source file of the project.
  */
-import { readdirSync, readFileSync, statSync } from 'node:fs';
-import { join, resolve } from 'node:path';
+import { existsSync, readdirSync, readFileSync, statSync } from 'node:fs';
+import { dirname, join, relative, resolve } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import {
   checkFile,
@@ -143,5 +143,91 @@ describe('layers (src → shader-gen → nodes)', () => {
   it('src/ folders import only what their rule allows; cli/ and io/ run without a browser', () => {
     expect(Object.keys(SRC_RULES).length).toBeGreaterThan(5);
     expect(checkFiles(project('src'))).toEqual([]);
+  });
+});
+
+/** Each project source file's relative imports, as project-relative paths. */
+function projectImports(): Map<string, string[]> {
+  const deps = new Map<string, string[]>();
+  for (const file of ['nodes', 'shader-gen', 'src'].flatMap((d) => filesUnder(join(ROOT, d)))) {
+    const targets = importsOf(stripComments(readFileSync(file, 'utf8')))
+      .filter((spec) => spec.startsWith('.'))
+      .map((spec) => resolve(dirname(file), spec))
+      .filter((target) => existsSync(target))
+      .map((target) => relative(ROOT, target));
+    deps.set(relative(ROOT, file), targets);
+  }
+  return deps;
+}
+
+/** Comments only (import paths are strings and must stay). */
+const stripComments = (src: string) => src.replace(/\/\*[\s\S]*?\*\//g, '').replace(/\/\/.*$/gm, '');
+
+/**
+ * The import cycles: strongly connected groups of two or more files (Tarjan), each sorted, in
+ * sorted order. Files in one group all import each other, directly or through the others.
+ */
+function importCycles(deps: ReadonlyMap<string, readonly string[]>): string[][] {
+  let counter = 0;
+  const index = new Map<string, number>();
+  const low = new Map<string, number>();
+  const stack: string[] = [];
+  const onStack = new Set<string>();
+  const groups: string[][] = [];
+  const visit = (v: string) => {
+    index.set(v, counter);
+    low.set(v, counter++);
+    stack.push(v);
+    onStack.add(v);
+    for (const w of deps.get(v) ?? []) {
+      if (!index.has(w)) {
+        visit(w);
+        low.set(v, Math.min(low.get(v)!, low.get(w)!));
+      } else if (onStack.has(w)) low.set(v, Math.min(low.get(v)!, index.get(w)!));
+    }
+    if (low.get(v) !== index.get(v)) return;
+    const group: string[] = [];
+    let w: string;
+    do {
+      w = stack.pop()!;
+      onStack.delete(w);
+      group.push(w);
+    } while (w !== v);
+    if (group.length > 1) groups.push(group.sort());
+  };
+  for (const v of deps.keys()) if (!index.has(v)) visit(v);
+  return groups.sort((a, b) => a[0].localeCompare(b[0]));
+}
+
+/**
+ * Cycles that existed before this test, outside src/, to be untied by whoever works on those
+ * files next. They may shrink or go; no file may join them and no new cycle may appear.
+ */
+const KNOWN_CYCLES = [
+  ['nodes/core/scene.ts', 'nodes/core/values.ts'],
+  ['shader-gen/colour.ts', 'shader-gen/picture.ts', 'shader-gen/seeds.ts'],
+];
+
+describe('import cycles', () => {
+  it('the detector finds groups of files that import each other, and nothing else', () => {
+    const deps = new Map([
+      ['a', ['b']],
+      ['b', ['c']],
+      ['c', ['a', 'd']],
+      ['d', ['e']],
+      ['e', []],
+      ['f', ['f2']],
+      ['f2', ['f']],
+    ]);
+    expect(importCycles(deps)).toEqual([
+      ['a', 'b', 'c'],
+      ['f', 'f2'],
+    ]);
+  });
+
+  it('no module imports itself through others (none in src/; nothing new elsewhere)', () => {
+    const allowed = (group: readonly string[]) =>
+      KNOWN_CYCLES.some((known) => group.every((file) => known.includes(file)));
+    expect(importCycles(projectImports()).filter((group) => !allowed(group))).toEqual([]);
   });
 });

@@ -66,7 +66,7 @@ function counting(prepared: PreparedElements): { prepared: PreparedElements; cou
 }
 
 export function benchExample(name: string): CpuBenchRow {
-  const loaded = parseDocumentText(readFileSync(examplePath(name), 'utf8'));
+  const loaded = parseDocumentText(readFileSync(examplePath(name), 'utf8'), registry);
   if (!loaded.ok) throw new Error(`${name} does not load`);
   const { scene } = evaluateGraph(loaded.doc, registry);
   const prepared = prepare(scene.elements);

@@ -104,7 +104,7 @@ export interface ScaleRow {
 export function measure(nodes: number): ScaleRow {
   const doc = scaleGraph(nodes);
   const text = JSON.stringify(doc);
-  const loaded = parseDocumentText(text);
+  const loaded = parseDocumentText(text, registry);
   if (!loaded.ok) throw new Error(`generated graph does not load: ${loaded.diagnostics[0].message}`);
   const first = evaluateGraph(loaded.doc, registry);
   const errors = first.diagnostics.filter((d) => d.severity === 'error');
@@ -114,7 +114,7 @@ export function measure(nodes: number): ScaleRow {
     nodes: loaded.doc.nodes.length,
     edges: loaded.doc.edges.length,
     elements: scene.elements.length,
-    load: time(() => parseDocumentText(text)),
+    load: time(() => parseDocumentText(text, registry)),
     evaluate: time(() => evaluateGraph(loaded.doc, registry)),
     compile: time(() => compile(scene)),
   };

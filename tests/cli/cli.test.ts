@@ -125,7 +125,7 @@ describe('kleinflow sample', () => {
     expect(r.status).toBe(0);
     const out = JSON.parse(r.stdout) as { points: Record<string, unknown>[] };
     expect(Object.keys(out)).toEqual(['points']);
-    const loaded = parseDocumentText(readFileSync(EXAMPLE, 'utf8'));
+    const loaded = parseDocumentText(readFileSync(EXAMPLE, 'utf8'), registry);
     if (!loaded.ok) throw new Error('example does not load');
     const { scene } = evaluateGraph(loaded.doc, registry);
     expect(out.points).toHaveLength(pts.length);

@@ -7,6 +7,7 @@ import { join } from 'node:path';
 import type { BrowserContext, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
+import { registry } from '../../nodes/types/index.ts';
 import { exampleNames, examplePath } from '../../src/cli/examples.ts';
 import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
 import {
@@ -308,7 +309,7 @@ describe('editor', () => {
       page.getByRole('button', { name: 'Save' }).click(),
     ]);
     expect(download.suggestedFilename()).toMatch(/\.kleinflow\.json$/);
-    const saved = parseDocumentText(readFileSync((await download.path())!, 'utf8'));
+    const saved = parseDocumentText(readFileSync((await download.path())!, 'utf8'), registry);
     expect(saved.ok).toBe(true);
     if (saved.ok) {
       expect(saved.doc.nodes).toHaveLength(10);

@@ -343,7 +343,7 @@ describe('classroom and embed', () => {
 
   it('titles, descriptions and labels are shown as text and never reach the shader', async () => {
     const text = hostileDoc();
-    const loaded = parseDocumentText(text);
+    const loaded = parseDocumentText(text, registry);
     expect(loaded.ok).toBe(true);
     const source = compile(
       evaluateGraph(loaded.ok ? loaded.doc : (undefined as never), registry).scene,

@@ -19,7 +19,7 @@ describe('examples', () => {
   });
 
   describe.each(names)('%s', (name) => {
-    const loaded = parseDocumentText(readFileSync(examplePath(name), 'utf8'));
+    const loaded = parseDocumentText(readFileSync(examplePath(name), 'utf8'), registry);
 
     it('loads and evaluates with no error diagnostics', () => {
       expect(loaded.diagnostics).toEqual([]);

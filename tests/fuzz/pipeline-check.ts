@@ -62,7 +62,8 @@ export function checkPipeline(input: { text: string } | { value: unknown }): Pip
   const elapsed = () => performance.now() - t0;
   let stage: PipelineReport['stage'] = 'load';
   try {
-    const loaded = 'text' in input ? parseDocumentText(input.text) : loadDocument(input.value);
+    const loaded =
+      'text' in input ? parseDocumentText(input.text, registry) : loadDocument(input.value, registry);
     if (!loaded.ok) {
       if (loaded.diagnostics.length === 0) problems.push('load: refused without a diagnostic');
       checkDiagnostics('load', loaded.diagnostics, problems);

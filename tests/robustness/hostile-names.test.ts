@@ -80,7 +80,7 @@ describe('describeValue (what "got …" shows in a message)', () => {
 
 describe('messages that echo a value stay short and never throw', () => {
   it('a 10 MB "format" is refused with a short KF103', () => {
-    const r = parseDocumentText(JSON.stringify({ ...doc([]), format: 'k'.repeat(10_000_000) }));
+    const r = parseDocumentText(JSON.stringify({ ...doc([]), format: 'k'.repeat(10_000_000) }), registry);
     expect(r.ok).toBe(false);
     expect(r.diagnostics[0]).toMatchObject({ code: 'KF103', path: 'format' });
     expect(r.diagnostics[0].message.length).toBeLessThan(200);
@@ -94,7 +94,7 @@ describe('messages that echo a value stay short and never throw', () => {
         field === 'format' ? '"kleinflow"' : '"version":1',
         field === 'format' ? nested : `"version":${nested}`,
       );
-      const r = parseDocumentText(text);
+      const r = parseDocumentText(text, registry);
       expect(r.ok).toBe(false);
       expect(r.diagnostics[0].message.length).toBeLessThan(500); // the path to the 64th level is most of it;
     }
@@ -105,16 +105,16 @@ describe('messages that echo a value stay short and never throw', () => {
     const at = (value: string) =>
       JSON.stringify(doc([node('c', 'circle')])).replace('"params":{}', `"params":{"zz":${value}}`);
     // The document is level 0, nodes 1, the node 2, params 3, "zz" 4.
-    const fits = parseDocumentText(at(nest(LIMITS.maxJsonDepth - 4)));
+    const fits = parseDocumentText(at(nest(LIMITS.maxJsonDepth - 4)), registry);
     expect(fits.ok).toBe(true);
     if (fits.ok) expect(() => structuredClone(fits.doc)).not.toThrow();
-    const deep = parseDocumentText(at(nest(10_000)));
+    const deep = parseDocumentText(at(nest(10_000)), registry);
     expect(deep.ok).toBe(false);
     const d = deep.diagnostics[0];
     expect(d).toMatchObject({ code: 'KF102' });
     expect(d.path).toMatch(/^nodes\[0\]\.params\.zz(\[0\])+$/);
     expect(d.message).toContain(`nested deeper than ${LIMITS.maxJsonDepth} levels`);
-    expect(parseDocumentText(at(nest(LIMITS.maxJsonDepth - 3))).ok).toBe(false);
+    expect(parseDocumentText(at(nest(LIMITS.maxJsonDepth - 3)), registry).ok).toBe(false);
   });
 
   it('a graph without a render node says so at the document (KF210 has a path)', () => {

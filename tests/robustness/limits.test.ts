@@ -34,7 +34,7 @@ describe('document size', () => {
     // Every node is garbage: had the loader validated them, it would list schema problems.
     const value = { ...doc([]), nodes: Array.from({ length: LIMITS.maxNodes + 1 }, () => ({ bogus: true })) };
     const t0 = performance.now();
-    const r = loadDocument(value);
+    const r = loadDocument(value, registry);
     const ms = performance.now() - t0;
     expect(r.ok).toBe(false);
     expect(r.diagnostics).toEqual([
@@ -49,7 +49,7 @@ describe('document size', () => {
 
   it(`loads exactly ${LIMITS.maxNodes} nodes`, () => {
     const nodes = Array.from({ length: LIMITS.maxNodes }, (_, i) => node(`n${i}`, 'number', { value: i }));
-    const r = parseDocumentText(JSON.stringify(doc(nodes)));
+    const r = parseDocumentText(JSON.stringify(doc(nodes)), registry);
     expect(r.ok).toBe(true);
   });
 
@@ -64,7 +64,7 @@ describe('document size', () => {
 
   it('lists at most 50 schema problems and counts the rest', () => {
     const nodes = Array.from({ length: 200 }, (_, i) => ({ id: `n${i}`, type: 'point', params: {} }));
-    const r = loadDocument({ ...doc([]), nodes });
+    const r = loadDocument({ ...doc([]), nodes }, registry);
     expect(r.ok).toBe(false);
     expect(r.diagnostics).toHaveLength(51);
     expect(r.diagnostics[50].message).toBe('…and 150 more problems');
@@ -89,7 +89,7 @@ describe('document size', () => {
       'meta.description',
     ],
   ])('refuses an over-long %s with its path', (_what, mutate, path) => {
-    const r = loadDocument(mutate(doc([])));
+    const r = loadDocument(mutate(doc([])), registry);
     expect(r.ok).toBe(false);
     expect(r.diagnostics[0]).toMatchObject({ code: 'KF102', path });
     expect(r.diagnostics[0].message.length).toBeLessThan(200);

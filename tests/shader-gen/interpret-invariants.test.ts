@@ -229,7 +229,7 @@ describe('invariants on every example graph', () => {
   });
 
   it.each(files)('%s', (file) => {
-    const loaded = parseDocumentText(readFileSync(join(EXAMPLES_DIR, file), 'utf8'));
+    const loaded = parseDocumentText(readFileSync(join(EXAMPLES_DIR, file), 'utf8'), registry);
     if (!loaded.ok)
       throw new Error(
         `${file} does not load: ${loaded.diagnostics.map((d) => `${d.path}: ${d.message}`).join('; ')}`,

@@ -30,7 +30,7 @@ export function sceneOf(doc: GraphDoc, label = doc.meta?.title ?? 'document'): S
 }
 
 export function loadExample(name: string): LoadedExample {
-  const loaded = parseDocumentText(readFileSync(examplePath(name), 'utf8'));
+  const loaded = parseDocumentText(readFileSync(examplePath(name), 'utf8'), registry);
   if (!loaded.ok) throw new Error(`${name}: ${loaded.diagnostics.map((d) => d.message).join('; ')}`);
   return { name, doc: loaded.doc, scene: sceneOf(loaded.doc, name) };
 }

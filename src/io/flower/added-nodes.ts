@@ -8,7 +8,7 @@ import type { Diagnostic } from '../../../nodes/core/diagnostics.ts';
 import { toHex } from '../../../nodes/core/port-values.ts';
 import type { GraphEdge, GraphNode } from '../../../nodes/graph/document.ts';
 import { type FlowerGraph, type FlowerNode, note } from './format.ts';
-import type { MappedNode } from './node-types.ts';
+import type { MappedNode } from './mapping.ts';
 import { FLOWER_PALETTE_STEP, readFlowerPalette } from './palette.ts';
 
 /** Flower's picture: hue 0.01 + 0.05(n − 1) for n reflections, 50 iterations, 20 samples. */

@@ -5,6 +5,7 @@
  * the region Flower showed. Whatever does not carry over is reported as a KF502 note, never dropped silently.
  */
 import { type Diagnostic, diag } from '../../../nodes/core/diagnostics.ts';
+import { inputSpec, outputSpec, ownEntry } from '../../../nodes/core/port-lookup.ts';
 import { canConnect } from '../../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../../nodes/core/registry.ts';
 import {
@@ -20,7 +21,8 @@ import { loadDocument } from '../../../nodes/graph/load.ts';
 import { registry as defaultRegistry } from '../../../nodes/types/index.ts';
 import { addOutput, addTime, GRAPH_SPREAD, mirrorOrder } from './added-nodes.ts';
 import { type FlowerGraph, isFlowerDocument, note, readFlowerGraph } from './format.ts';
-import { FLOWER_NODE_TYPES, type MappedNode } from './node-types.ts';
+import type { MappedNode } from './mapping.ts';
+import { FLOWER_NODE_TYPES } from './node-types.ts';
 import { flowerView } from './view.ts';
 
 export { FLOWER_RENDER } from './added-nodes.ts';
@@ -58,6 +60,12 @@ export function importFlower(json: unknown, registry: NodeRegistry = defaultRegi
   const edges = wireEdges(graph, mapped, ids, registry, notes);
   addTime(graph, mapped, ids, nodes, edges);
   addOutput(graph, mapped, ids, nodes, edges, notes);
+  // Flower nodes map to today's params: mark them current (absent means version 1), so that
+  // loading below does not migrate them as if they were old.
+  for (const n of nodes) {
+    const version = registry.get(n.type)?.version ?? 1;
+    if (version !== 1) n.version = version;
+  }
 
   const doc: GraphDoc = {
     format: FORMAT,
@@ -72,7 +80,7 @@ export function importFlower(json: unknown, registry: NodeRegistry = defaultRegi
   };
   const view = flowerView(evaluateGraph(doc, registry).scene.overlays);
   doc.view = { center: [view.center[0], view.center[1]], scale: view.scale };
-  const checked = loadDocument(doc);
+  const checked = loadDocument(doc, registry);
   if (!checked.ok) return checked;
   return { ok: true, doc: checked.doc, notes };
 }
@@ -90,7 +98,7 @@ function mapNodes(graph: FlowerGraph, registry: NodeRegistry, notes: Diagnostic[
   const mapped = new Map<string, MappedNode>();
   for (const node of graph.nodes) {
     const path = `nodes[${node.index}]`;
-    const map = Object.hasOwn(FLOWER_NODE_TYPES, node.name) ? FLOWER_NODE_TYPES[node.name] : undefined;
+    const map = ownEntry(FLOWER_NODE_TYPES, node.name);
     if (!map) {
       notes.push(note(path, `unknown Flower node type "${node.name}" ("${node.id}"); skipped`));
       continue;
@@ -166,8 +174,8 @@ function wireEdges(
       );
       continue;
     }
-    const out = registry.get(typeOfId.get(from.node)!)?.outputs[from.port]?.type;
-    const inp = registry.get(target.type)?.inputs[port]?.type;
+    const out = outputSpec(registry.get(typeOfId.get(from.node)!), from.port)?.type;
+    const inp = inputSpec(registry.get(target.type), port)?.type;
     if (!out || !inp || !canConnect(out, inp)) {
       notes.push(
         note(

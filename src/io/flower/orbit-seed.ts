@@ -8,7 +8,7 @@
  */
 import type { FlowerNode } from './format.ts';
 import { named, pickEntry, pickPoint } from './format.ts';
-import type { MapContext, MappedNode } from './node-types.ts';
+import type { MapContext, MappedNode } from './mapping.ts';
 
 /** Flower's view is 100 units tall (view.ts): a seed with no saved size gets a tenth of it. */
 export const FLOWER_SEED_SIZE = 10;

@@ -4,6 +4,8 @@
  * that point instead (through its first handle, recursively), so the construction stays wired.
  * Other wired keys are dropped: their value comes from the wire.
  */
+
+import { inputSpec, ownEntry } from '../../../nodes/core/port-lookup.ts';
 import { portValueToJson } from '../../../nodes/core/port-values.ts';
 import type { Vec2 } from '../../../nodes/core/values.ts';
 import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
@@ -65,7 +67,7 @@ export function dragPatches(
         byNode.set(nodeId, own);
         continue;
       }
-      if (def.inputs[key]?.type !== 'point' || depth >= maxDepth || !isVec2(value)) continue;
+      if (inputSpec(def, key)?.type !== 'point' || depth >= maxDepth || !isVec2(value)) continue;
       const upstream = firstHandle(evaluation, edge.from.node);
       if (upstream !== undefined) visit(edge.from.node, upstream, value, depth + 1);
     }
@@ -87,8 +89,8 @@ export function originalParams(evaluation: Evaluation, patches: readonly NodePat
     for (const key of Object.keys(params)) {
       if (Object.hasOwn(stored, key)) original[key] = stored[key];
       else {
-        const spec = entry?.def?.inputs[key];
-        const value = spec ? ctx?.inputs[key] : ctx?.params[key];
+        const spec = inputSpec(entry?.def, key);
+        const value = ownEntry(spec ? ctx?.inputs : ctx?.params, key);
         original[key] = spec && value !== undefined ? portValueToJson(spec.type, value) : value;
       }
     }

@@ -28,11 +28,11 @@ function keysUsedInGraph(): Set<string> {
 }
 
 const loadFails = (value: unknown) => {
-  const r = loadDocument(value);
+  const r = loadDocument(value, registry);
   return r.ok ? [] : r.diagnostics;
 };
 const textFails = (text: string) => {
-  const r = parseDocumentText(text);
+  const r = parseDocumentText(text, registry);
   return r.ok ? [] : r.diagnostics;
 };
 const base = () => doc([node('p', 'point'), node('c', 'circle'), node('out', 'render')]);

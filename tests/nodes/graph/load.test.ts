@@ -4,6 +4,7 @@ import { LIMITS } from '../../../nodes/core/scene.ts';
 import { DOC_VERSION, emptyDocument } from '../../../nodes/graph/document.ts';
 import { loadDocument, parseDocumentText } from '../../../nodes/graph/load.ts';
 import { type DocMigration, migrateDocument, type RawDoc } from '../../../nodes/graph/migrate.ts';
+import { registry } from '../../../nodes/types/index.ts';
 import { doc, edge, node } from '../support/doc.ts';
 
 const valid = () =>
@@ -20,60 +21,60 @@ function failure(r: ReturnType<typeof loadDocument>): Diagnostic[] {
 describe('parseDocumentText / loadDocument', () => {
   it('loads a valid document unchanged (JSON round trip)', () => {
     const d = valid();
-    const r = parseDocumentText(JSON.stringify(d));
+    const r = parseDocumentText(JSON.stringify(d), registry);
     if (!r.ok) throw new Error(JSON.stringify(r.diagnostics));
     expect(r.doc).toEqual(d);
     expect(r.migratedFrom).toBe(DOC_VERSION);
     expect(r.diagnostics).toEqual([]);
-    const empty = loadDocument(emptyDocument('x'));
+    const empty = loadDocument(emptyDocument('x'), registry);
     expect(empty.ok).toBe(true);
   });
 
   it('keeps extra meta fields (meta is open) and labels', () => {
     const d = { ...valid(), meta: { title: 't', author: 'A. Möbius' } };
     d.nodes[0] = { ...d.nodes[0], label: 'A', version: 1 };
-    const r = loadDocument(JSON.parse(JSON.stringify(d)));
+    const r = loadDocument(JSON.parse(JSON.stringify(d)), registry);
     if (!r.ok) throw new Error(JSON.stringify(r.diagnostics));
     expect(r.doc.meta.author).toBe('A. Möbius');
     expect(r.doc.nodes[0].label).toBe('A');
   });
 
   it('KF101: text that is not JSON', () => {
-    const [d] = failure(parseDocumentText('{"format": "kleinflow", '));
+    const [d] = failure(parseDocumentText('{"format": "kleinflow", ', registry));
     expect(d).toMatchObject({ code: 'KF101', path: '(document)', severity: 'error' });
     expect(d.message).toMatch(/^not valid JSON: /);
-    expect(failure(parseDocumentText(''))[0].code).toBe('KF101');
+    expect(failure(parseDocumentText('', registry))[0].code).toBe('KF101');
   });
 
   it('KF102: JSON that is not an object', () => {
     for (const text of ['[1, 2]', 'null', '42', '"kleinflow"']) {
-      const [d] = failure(parseDocumentText(text));
+      const [d] = failure(parseDocumentText(text, registry));
       expect(d).toMatchObject({ code: 'KF102', path: '(document)' });
     }
-    expect(failure(parseDocumentText('[]'))[0].message).toContain('an array');
+    expect(failure(parseDocumentText('[]', registry))[0].message).toContain('an array');
   });
 
   it('KF103: another format, or none', () => {
-    const [d] = failure(loadDocument({ ...valid(), format: 'flower' }));
+    const [d] = failure(loadDocument({ ...valid(), format: 'flower' }, registry));
     expect(d).toMatchObject({ code: 'KF103', path: 'format' });
     expect(d.message).toContain('"flower"');
     const { format: _f, ...rest } = valid();
-    expect(failure(loadDocument(rest))[0]).toMatchObject({ code: 'KF103', path: 'format' });
+    expect(failure(loadDocument(rest, registry))[0]).toMatchObject({ code: 'KF103', path: 'format' });
   });
 
   it('rejects ∞ written as 1e999 and NaN, naming the path', () => {
     const text = JSON.stringify(valid()).replace('"scale":4', '"scale":1e999');
     expect(text).toContain('1e999');
-    const [d] = failure(parseDocumentText(text));
+    const [d] = failure(parseDocumentText(text, registry));
     expect(d).toMatchObject({ code: 'KF102', path: 'view.scale' });
     expect(d.message.startsWith('view.scale: ')).toBe(true);
 
     const pos = JSON.stringify(valid()).replace('"position":[0,0]', '"position":[-1e999,0]');
-    expect(failure(parseDocumentText(pos))[0].path).toBe('nodes[0].position[0]');
+    expect(failure(parseDocumentText(pos, registry))[0].path).toBe('nodes[0].position[0]');
 
     const nan = valid();
     nan.view = { center: [0, Number.NaN], scale: 4 };
-    expect(failure(loadDocument(nan))[0].path).toBe('view.center[1]');
+    expect(failure(loadDocument(nan, registry))[0].path).toBe('view.center[1]');
   });
 
   it('KF102: every schema problem comes back with its path', () => {
@@ -88,7 +89,7 @@ describe('parseDocumentText / loadDocument', () => {
     d.nodes[1].position = [0];
     d.edges[0].to = { node: 'c1' };
     d.view.scale = -1;
-    const ds = failure(loadDocument(d));
+    const ds = failure(loadDocument(d, registry));
     for (const x of ds) expect(x.code).toBe('KF102');
     const paths = ds.map((x) => x.path);
     expect(paths).toEqual(
@@ -107,7 +108,7 @@ describe('parseDocumentText / loadDocument', () => {
   it('KF102: unknown keys are rejected (strict objects) at their object path', () => {
     const d = valid() as unknown as { nodes: Record<string, unknown>[] };
     d.nodes[2].colour = 'red';
-    const [x] = failure(loadDocument(d));
+    const [x] = failure(loadDocument(d, registry));
     expect(x.path).toBe('nodes[2]');
     expect(x.message).toContain('colour');
   });
@@ -115,20 +116,20 @@ describe('parseDocumentText / loadDocument', () => {
   it('lists at most 50 schema problems and says how many more there are', () => {
     const d = valid() as unknown as { nodes: unknown[] };
     d.nodes = Array.from({ length: 80 }, () => ({ id: '', type: 'point', position: [0, 0], params: {} }));
-    const ds = failure(loadDocument(d));
+    const ds = failure(loadDocument(d, registry));
     expect(ds).toHaveLength(51);
     expect(ds[50].message).toBe('…and 30 more problems');
   });
 
   it('KF104: a document from a newer Kleinflow is rejected', () => {
-    const [d] = failure(loadDocument({ ...valid(), version: DOC_VERSION + 1 }));
+    const [d] = failure(loadDocument({ ...valid(), version: DOC_VERSION + 1 }, registry));
     expect(d).toMatchObject({ code: 'KF104', path: 'version' });
     expect(d.message).toContain(`${DOC_VERSION + 1}`);
   });
 
   it('KF102: a version that is not a positive integer', () => {
     for (const version of [0, -1, 1.5, '1', null]) {
-      const [d] = failure(loadDocument({ ...valid(), version }));
+      const [d] = failure(loadDocument({ ...valid(), version }, registry));
       expect(d).toMatchObject({ code: 'KF102', path: 'version' });
     }
   });
@@ -137,11 +138,11 @@ describe('parseDocumentText / loadDocument', () => {
     const d = valid() as unknown as { nodes: unknown[] };
     const n = LIMITS.maxNodes + 1;
     d.nodes = Array.from({ length: n }, (_, i) => node(`n${i}`, 'point'));
-    const [x] = failure(loadDocument(d));
+    const [x] = failure(loadDocument(d, registry));
     expect(x).toMatchObject({ code: 'KF105', path: 'nodes' });
     expect(x.message).toContain(String(n));
     d.nodes.pop();
-    expect(loadDocument(d).ok).toBe(true);
+    expect(loadDocument(d, registry).ok).toBe(true);
   });
 });
 
@@ -206,16 +207,21 @@ describe('document migrations', () => {
   });
 
   it('loadDocument migrates, then validates the migrated document', () => {
-    const r = loadDocument(v1(), table, 3);
+    const r = loadDocument(v1(), registry, { migrations: table, target: 3 });
     if (!r.ok) throw new Error(JSON.stringify(r.diagnostics));
     expect(r.migratedFrom).toBe(1);
     expect(r.doc.version).toBe(3);
     expect(r.doc.view.scale).toBe(3);
     // a step that produces an invalid document is caught by validation, with the path
-    const bad = loadDocument({ ...v1(), view: { center: [0, 0], zoom: -2 } }, table, 3);
+    const bad = loadDocument({ ...v1(), view: { center: [0, 0], zoom: -2 } }, registry, {
+      migrations: table,
+      target: 3,
+    });
     expect(failure(bad)[0]).toMatchObject({ code: 'KF102', path: 'view.scale' });
     // future documents against the fake target
-    expect(failure(loadDocument({ ...v1(), version: 4 }, table, 3))[0].code).toBe('KF104');
+    expect(
+      failure(loadDocument({ ...v1(), version: 4 }, registry, { migrations: table, target: 3 }))[0].code,
+    ).toBe('KF104');
   });
 
   it('a migration that throws becomes a diagnostic, not an exception', () => {
@@ -225,7 +231,7 @@ describe('document migrations', () => {
       },
       2: table[2],
     };
-    const [d] = failure(loadDocument(v1(), throwing, 3));
+    const [d] = failure(loadDocument(v1(), registry, { migrations: throwing, target: 3 }));
     expect(d).toMatchObject({ code: 'KF102', path: 'version' });
     expect(d.message).toContain('boom');
   });

@@ -2,7 +2,8 @@ import { describe, expect, it } from 'vitest';
 import { defineNode } from '../../../nodes/core/define-node.ts';
 import { createRegistry } from '../../../nodes/core/registry.ts';
 import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
-import { migrateNodeParams } from '../../../nodes/graph/migrate.ts';
+import { loadDocument } from '../../../nodes/graph/load.ts';
+import { migrateNodeParams, migrateNodes, nodeVersionProblem } from '../../../nodes/graph/migrate.ts';
 import { doc, node } from '../support/doc.ts';
 
 /**
@@ -67,11 +68,58 @@ describe('migrateNodeParams', () => {
   });
 });
 
-describe('evaluation migrates old nodes', () => {
-  it('an old node evaluates with its migrated params', () => {
-    const ev = evaluateGraph(doc([{ ...node('d', 'test-disk', { rad: 2.5 }), version: 1 }]), registry);
+describe('migrateNodes (run once, on load and paste)', () => {
+  it('brings old nodes to their type version and leaves current nodes and placeholders as they are', () => {
+    const current = { ...node('x', 'test-disk', { radius: 1 }), version: 3 };
+    const placeholder = { ...node('u', 'no-such-type', { rad: 1 }), version: 1 };
+    const [old, same, kept] = migrateNodes(
+      [{ ...node('d', 'test-disk', { rad: 2.5 }), version: 1 }, current, placeholder],
+      registry,
+    );
+    expect(old).toEqual({ ...node('d', 'test-disk', { radius: 2.5 }), version: 3 });
+    expect(same).toBe(current);
+    expect(kept).toBe(placeholder);
+  });
+
+  it('keeps a node whose migration fails exactly as it was, and evaluation says why', () => {
+    const badStep = { ...disk, migrations: { ...disk.migrations, 2: () => 'not params' as never } };
+    const withBadStep = createRegistry([badStep]);
+    const original = { ...node('d', 'test-disk', { rad: 1 }), version: 1 };
+    const [kept] = migrateNodes([original], withBadStep);
+    expect(kept).toBe(original);
+    const ev = evaluateGraph(doc([kept]), withBadStep);
+    expect(ev.diagnostics).toContainEqual(
+      expect.objectContaining({
+        code: 'KF309',
+        nodeId: 'd',
+        message: expect.stringContaining('failed when it was loaded'),
+      }),
+    );
+  });
+
+  it('loading migrates: the loaded document is current and evaluates without migrating', () => {
+    const loaded = loadDocument(doc([{ ...node('d', 'test-disk', { rad: 2.5 }), version: 1 }]), registry);
+    if (!loaded.ok) throw new Error('did not load');
+    expect(loaded.doc.nodes[0]).toMatchObject({ version: 3, params: { radius: 2.5 } });
+    const ev = evaluateGraph(loaded.doc, registry);
     expect(ev.nodes.get('d')?.outputs).toEqual({ radius: 2.5 });
     expect(ev.diagnostics.filter((d) => d.nodeId === 'd')).toEqual([]);
+  });
+});
+
+describe('evaluation never migrates', () => {
+  it('an old node that did not go through loading is reported (KF309), not silently migrated', () => {
+    const ev = evaluateGraph(doc([{ ...node('d', 'test-disk', { rad: 2.5 }), version: 1 }]), registry);
+    expect(ev.nodes.get('d')?.outputs).toBeUndefined();
+    expect(ev.diagnostics).toContainEqual(expect.objectContaining({ code: 'KF309', nodeId: 'd' }));
+  });
+
+  it('nodeVersionProblem names a newer version and a missing step', () => {
+    expect(nodeVersionProblem(disk, 3)).toBeNull();
+    expect(nodeVersionProblem(disk, 4)).toContain('newer');
+    expect(nodeVersionProblem({ ...disk, migrations: { 2: disk.migrations![2] } }, 1)).toContain(
+      'no migration from version 1 to 2',
+    );
   });
 
   it('KF309: a node from a newer Kleinflow is reported at its version path', () => {

@@ -1,6 +1,6 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { topologicalOrder } from '../../../nodes/graph/topo.ts';
+import { closesCycle, topologicalOrder } from '../../../nodes/graph/topo.ts';
 import { shuffled } from '../support/doc.ts';
 
 describe('topologicalOrder', () => {
@@ -91,5 +91,77 @@ describe('topologicalOrder', () => {
   it('ignores edges that name unknown nodes', () => {
     const r = topologicalOrder(['a'], [{ from: 'ghost', to: 'a' }]);
     expect(r.order).toEqual(['a']);
+  });
+});
+
+/** Reference: whether `to` is reachable from `from` (a plain graph search, for the property). */
+function reaches(edges: readonly { from: string; to: string }[], from: string, to: string): boolean {
+  const seen = new Set<string>();
+  const stack = [from];
+  while (stack.length > 0) {
+    const id = stack.pop()!;
+    if (id === to) return true;
+    if (seen.has(id)) continue;
+    seen.add(id);
+    for (const e of edges) if (e.from === id) stack.push(e.to);
+  }
+  return false;
+}
+
+describe('closesCycle (the editor refuses such a wire)', () => {
+  const chain = [
+    { from: 'a', to: 'b' },
+    { from: 'b', to: 'c' },
+  ];
+  it('a wire back up a chain, or into itself, closes a cycle; one down or across does not', () => {
+    const ids = ['a', 'b', 'c', 'd'];
+    expect(closesCycle(ids, chain, { from: 'c', to: 'a' })).toBe(true);
+    expect(closesCycle(ids, chain, { from: 'b', to: 'a' })).toBe(true);
+    expect(closesCycle(ids, chain, { from: 'd', to: 'd' })).toBe(true);
+    expect(closesCycle(ids, chain, { from: 'a', to: 'c' })).toBe(false);
+    expect(closesCycle(ids, chain, { from: 'd', to: 'a' })).toBe(false);
+    expect(closesCycle(ids, chain, { from: 'c', to: 'd' })).toBe(false);
+  });
+
+  it('a cycle elsewhere in the graph does not block unrelated wires, nor hide a new cycle', () => {
+    const ids = ['a', 'b', 'c', 'x', 'y'];
+    const edges = [...chain, { from: 'x', to: 'y' }, { from: 'y', to: 'x' }];
+    expect(closesCycle(ids, edges, { from: 'a', to: 'c' })).toBe(false);
+    expect(closesCycle(ids, edges, { from: 'c', to: 'a' })).toBe(true);
+    expect(closesCycle(ids, edges, { from: 'c', to: 'x' })).toBe(false); // into the old cycle, not a new one
+  });
+
+  it('from a node downstream of an existing cycle, the wire is allowed (analysis reports cycles)', () => {
+    const ids = ['x', 'y', 'a', 'b'];
+    const edges = [
+      { from: 'x', to: 'y' },
+      { from: 'y', to: 'x' },
+      { from: 'y', to: 'a' },
+      { from: 'a', to: 'b' },
+    ];
+    expect(closesCycle(ids, edges, { from: 'b', to: 'a' })).toBe(false);
+    // …and evaluation's ordering then reports the new cycle as well as the old one.
+    expect(topologicalOrder(ids, [...edges, { from: 'b', to: 'a' }]).cycles).toHaveLength(2);
+  });
+
+  it('on random acyclic graphs, agrees with a graph search: u → v closes a cycle iff v reaches u', () => {
+    const graph = fc
+      .integer({ min: 2, max: 14 })
+      .chain((n) =>
+        fc.tuple(
+          fc.constant(Array.from({ length: n }, (_, i) => `n${i}`)),
+          fc.array(fc.tuple(fc.nat(n - 1), fc.nat(n - 1)), { maxLength: 30 }),
+          fc.nat(n - 1),
+          fc.nat(n - 1),
+        ),
+      );
+    fc.assert(
+      fc.property(graph, ([ids, pairs, u, v]) => {
+        const edges = pairs.filter(([i, j]) => i < j).map(([i, j]) => ({ from: ids[i], to: ids[j] }));
+        const edge = { from: ids[u], to: ids[v] };
+        expect(closesCycle(ids, edges, edge)).toBe(reaches(edges, edge.to, edge.from));
+      }),
+      { seed: 7, numRuns: 300 },
+    );
   });
 });

@@ -47,4 +47,37 @@ describe('connection rules', () => {
       reason: 'this wire would make a cycle',
     });
   });
+
+  it('a cycle the document already has elsewhere blocks no unrelated wire, and a longer cycle is refused', () => {
+    const looped: GraphDoc = {
+      ...doc,
+      nodes: [...doc.nodes, { id: 'n2', type: 'number', position: [0, 0], params: {} }],
+      edges: [
+        ...doc.edges,
+        { id: 'x1', from: { node: 'n', port: 'value' }, to: { node: 'n2', port: 'value' } },
+        { id: 'x2', from: { node: 'n2', port: 'value' }, to: { node: 'n', port: 'value' } },
+      ],
+    };
+    expect(checkConnection(looped, registry, wire('p', 'point', 'l', 'a')).ok).toBe(true);
+    // p → mid → l → rp: a wire from rp back into mid closes mid → l → rp → mid
+    const chained: GraphDoc = {
+      ...doc,
+      nodes: [
+        ...doc.nodes,
+        { id: 'mid', type: 'midpoint', position: [0, 0], params: {} },
+        { id: 'rp', type: 'reflect-point', position: [0, 0], params: {} },
+      ],
+      edges: [
+        { id: 'e1', from: { node: 'p', port: 'point' }, to: { node: 'mid', port: 'a' } },
+        { id: 'e2', from: { node: 'mid', port: 'point' }, to: { node: 'l', port: 'a' } },
+        { id: 'e3', from: { node: 'l', port: 'line' }, to: { node: 'rp', port: 'line' } },
+      ],
+    };
+    expect(checkConnection(chained, registry, wire('rp', 'point', 'mid', 'b'))).toEqual({
+      ok: false,
+      reason: 'this wire would make a cycle',
+    });
+    expect(checkConnection(chained, registry, wire('rp', 'point', 'l', 'b')).ok).toBe(false);
+    expect(checkConnection(chained, registry, wire('mid', 'point', 'rp', 'point')).ok).toBe(true);
+  });
 });

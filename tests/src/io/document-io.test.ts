@@ -8,7 +8,7 @@ import { encodeShareFragment } from '../../../src/io/share-url.ts';
 import { exampleFiles } from './support/examples.ts';
 
 const load = (text: string): GraphDoc => {
-  const r = parseDocumentText(text);
+  const r = parseDocumentText(text, registry);
   if (!r.ok) throw new Error(r.diagnostics.map((d) => d.message).join('\n'));
   return r.doc;
 };

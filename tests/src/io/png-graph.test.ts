@@ -1,13 +1,14 @@
 import { describe, expect, it } from 'vitest';
 import type { GraphDoc } from '../../../nodes/graph/document.ts';
 import { parseDocumentText } from '../../../nodes/graph/load.ts';
+import { registry } from '../../../nodes/types/index.ts';
 import { openBytes } from '../../../src/io/document-io.ts';
 import { decodePng, encodePng, readPngText } from '../../../src/io/png.ts';
 import { embedGraph, extractGraph, PNG_GRAPH_KEY } from '../../../src/io/png-graph.ts';
 import { exampleFiles } from './support/examples.ts';
 
 const load = (text: string): GraphDoc => {
-  const r = parseDocumentText(text);
+  const r = parseDocumentText(text, registry);
   if (!r.ok) throw new Error(r.diagnostics.map((d) => d.message).join('\n'));
   return r.doc;
 };

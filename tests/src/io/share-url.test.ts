@@ -4,12 +4,13 @@ import { describe, expect, it } from 'vitest';
 import { LIMITS } from '../../../nodes/core/scene.ts';
 import { emptyDocument, type GraphDoc } from '../../../nodes/graph/document.ts';
 import { parseDocumentText } from '../../../nodes/graph/load.ts';
+import { registry } from '../../../nodes/types/index.ts';
 import { decodeBase64Url, encodeBase64Url } from '../../../src/io/base64url.ts';
 import { boundedInflate, decodeShareFragment, encodeShareFragment } from '../../../src/io/share-url.ts';
 import { exampleFiles } from './support/examples.ts';
 
 const load = (text: string): GraphDoc => {
-  const r = parseDocumentText(text);
+  const r = parseDocumentText(text, registry);
   if (!r.ok) throw new Error(r.diagnostics.map((d) => d.message).join('\n'));
   return r.doc;
 };

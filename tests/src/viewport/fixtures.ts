@@ -13,7 +13,7 @@ import { registry } from '../../../nodes/types/index.ts';
 
 export function exampleScene(name: string): Scene {
   const path = fileURLToPath(new URL(`../../../examples/${name}.kleinflow.json`, import.meta.url));
-  const loaded = parseDocumentText(readFileSync(path, 'utf8'));
+  const loaded = parseDocumentText(readFileSync(path, 'utf8'), registry);
   if (!loaded.ok) throw new Error(`example ${name}: ${loaded.diagnostics.map((d) => d.message).join('; ')}`);
   return evaluateGraph(loaded.doc, registry).scene;
 }

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { parseDocumentText } from '../../../../nodes/graph/load.ts';
+import { registry } from '../../../../nodes/types/index.ts';
 import { main } from '../../../../src/cli/main.ts';
 import { serializeDocument } from '../../../../src/io/document-io.ts';
 import { encodePng } from '../../../../src/io/png.ts';
@@ -18,7 +19,7 @@ describe('kleinflow convert', () => {
   it('writes a Flower graph as a Kleinflow document and lists the notes on stderr', async () => {
     const { io, out, text } = memoryIo({ 'in.json': flower });
     expect(await main(['convert', 'in.json', '-o', 'out.kleinflow.json'], io)).toBe(0);
-    const loaded = parseDocumentText(text('out.kleinflow.json'));
+    const loaded = parseDocumentText(text('out.kleinflow.json'), registry);
     expect(loaded.ok).toBe(true);
     if (!loaded.ok) return;
     expect(loaded.doc.nodes.map((n) => n.type).sort()).toEqual([
@@ -42,7 +43,7 @@ describe('kleinflow convert', () => {
   it('writes to stdout without -o, and converts a Kleinflow PNG back to its document', async () => {
     const first = memoryIo({ 'in.json': flower });
     await main(['convert', 'in.json'], first.io);
-    const doc = parseDocumentText(first.out.stdout);
+    const doc = parseDocumentText(first.out.stdout, registry);
     if (!doc.ok) throw new Error('stdout is not a document');
     const png = embedGraph({ width: 1, height: 1, data: new Uint8Array(4) }, doc.doc);
     const second = memoryIo({ 'pic.png': png });

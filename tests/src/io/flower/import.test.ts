@@ -1,5 +1,8 @@
 import { describe, expect, it } from 'vitest';
+import { createRegistry } from '../../../../nodes/core/registry.ts';
 import type { TileSpec } from '../../../../nodes/core/scene.ts';
+import { registry } from '../../../../nodes/types/index.ts';
+import { pointNode } from '../../../../nodes/types/point.ts';
 import { type DepthColoring, depthColour, hsvToRgb, toLinear } from '../../../../shader-gen/colour.ts';
 import { sampleColour, sampleContext } from '../../../../shader-gen/raster.ts';
 import { FLOWER_RENDER, importFlower, isFlowerDocument } from '../../../../src/io/flower/import.ts';
@@ -138,5 +141,21 @@ describe('Flower import: colours, notes and view', () => {
       center: [0, 0],
       scale: 176,
     });
+  });
+});
+
+describe('Flower import: node versions', () => {
+  it('imported nodes are current: a type at a later version does not migrate them as if they were old', () => {
+    // A point type at version 2 whose (made-up) migration would drop v1 params: the import writes
+    // today's params, so it must mark its nodes current and loading must leave them alone.
+    const point2 = { ...pointNode, version: 2, migrations: { 1: () => ({}) } };
+    const reg = createRegistry(registry.all.map((d) => (d.type === 'point' ? point2 : d)));
+    const r = importFlower(graph(lineMirror('m', [0.25, 0], [1, 0.5], false)), reg);
+    if (!r.ok) throw new Error(r.diagnostics.map((d) => d.message).join('; '));
+    const points = r.doc.nodes.filter((n) => n.type === 'point');
+    expect(points.map((n) => [n.version, n.params.x, n.params.y])).toEqual([
+      [2, 0.25, 0],
+      [2, 1, 0.5],
+    ]);
   });
 });

@@ -18,7 +18,7 @@ import type { EditorStore } from '../../../../src/state/store.ts';
 /** Every example document, then the empty one: start documents are picked from this list. */
 export const START_DOCS: readonly GraphDoc[] = [
   ...exampleNames().map((f) => {
-    const loaded = parseDocumentText(readFileSync(examplePath(f), 'utf8'));
+    const loaded = parseDocumentText(readFileSync(examplePath(f), 'utf8'), registry);
     if (!loaded.ok) throw new Error(`${f} does not load`);
     return loaded.doc;
   }),

@@ -15,8 +15,9 @@ import type { Viewport } from '../viewport/viewport.ts';
 import { useAnimationClock } from './animation.ts';
 import { Banner, type Message } from './Banner.tsx';
 import { EXAMPLES } from './examples.ts';
+import { ExamplesGallery } from './gallery/ExamplesGallery.tsx';
 import { HelpDialog } from './help/HelpDialog.tsx';
-import { useDocumentIo } from './io/use-document-io.tsx';
+import { loadedMessage, useDocumentIo } from './io/use-document-io.tsx';
 import { type RenderInfo, RenderPane } from './RenderPane.tsx';
 import { SplitPane } from './SplitPane.tsx';
 import { StatusBar } from './StatusBar.tsx';
@@ -53,6 +54,7 @@ export function App({ initialMessages }: Props) {
   const [help, setHelp] = useState(false);
   const [welcome, setWelcome] = useState(() => !welcomeSeen(storage()));
   const [walkthrough, setWalkthrough] = useState(false);
+  const [gallery, setGallery] = useState(false);
   const [frameKey, setFrameKey] = useState(0);
   const viewport = useRef<Viewport | null>(null);
   const fileInput = useRef<HTMLInputElement>(null);
@@ -70,17 +72,24 @@ export function App({ initialMessages }: Props) {
     [store],
   );
 
+  const getViewport = useCallback(() => viewport.current, []);
+  const io = useDocumentIo({ store, scene: evaluation.scene, load, viewport: getViewport });
+  const { save, exportItems } = io;
+  const { notify } = io;
   const dismissWelcome = useCallback(() => {
     rememberWelcome(storage());
     setWelcome(false);
   }, []);
   const openExample = useCallback(
     (ex: (typeof EXAMPLES)[number]) => {
+      const replacing = store.getState().doc.nodes.length > 0;
       load(ex.doc, `open ${ex.title}`);
+      if (replacing) notify(loadedMessage(`“${ex.title}”`));
       setHelp(false);
+      setGallery(false);
       dismissWelcome();
     },
-    [load, dismissWelcome],
+    [store, load, notify, dismissWelcome],
   );
   const startWalkthrough = useCallback(() => {
     if (store.getState().doc.nodes.length > 0) load(emptyDocument('My *333 kaleidoscope'), 'new document');
@@ -89,9 +98,6 @@ export function App({ initialMessages }: Props) {
     dismissWelcome();
   }, [store, load, dismissWelcome]);
 
-  const getViewport = useCallback(() => viewport.current, []);
-  const io = useDocumentIo({ store, scene: evaluation.scene, load, viewport: getViewport });
-  const { save, exportItems } = io;
   const open = useCallback(() => fileInput.current?.click(), []);
 
   useEffect(() => {
@@ -123,7 +129,6 @@ export function App({ initialMessages }: Props) {
     <div className="kf-app">
       <TopBar
         title={doc.meta.title ?? ''}
-        examples={EXAMPLES}
         undoLabel={history.past.at(-1)?.label ?? null}
         redoLabel={history.future[0]?.label ?? null}
         playing={playing}
@@ -131,7 +136,7 @@ export function App({ initialMessages }: Props) {
         onTitle={(title) =>
           store.dispatch({ type: 'set-meta', meta: { ...doc.meta, title } }, 'rename document')
         }
-        onExample={openExample}
+        onExamples={() => setGallery(true)}
         onNew={() => load(emptyDocument(), 'new document')}
         onOpen={open}
         onSave={save}
@@ -191,6 +196,9 @@ export function App({ initialMessages }: Props) {
           onWalkthrough={startWalkthrough}
           onClose={() => setHelp(false)}
         />
+      )}
+      {gallery && (
+        <ExamplesGallery examples={EXAMPLES} onOpen={openExample} onClose={() => setGallery(false)} />
       )}
       {welcome && (
         <WelcomeCard

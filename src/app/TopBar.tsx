@@ -1,17 +1,15 @@
 /** The top bar: document title, examples, file actions, export, undo/redo, play and help. */
 import { useEffect, useState } from 'react';
-import type { Example } from './examples.ts';
 import { Menu, type MenuItem } from './Menu.tsx';
 
 interface Props {
   readonly title: string;
-  readonly examples: readonly Example[];
   readonly undoLabel: string | null;
   readonly redoLabel: string | null;
   readonly playing: boolean;
   readonly exportItems: readonly MenuItem[];
   onTitle(title: string): void;
-  onExample(example: Example): void;
+  onExamples(): void;
   onNew(): void;
   onOpen(): void;
   onSave(): void;
@@ -44,11 +42,15 @@ export function TopBar(p: Props) {
         onKeyDown={(e) => e.key === 'Enter' && (e.target as HTMLInputElement).blur()}
       />
       <nav className="kf-toolbar" aria-label="Document">
-        <Menu
-          label="Examples"
-          title="Open an example graph"
-          items={p.examples.map((ex) => ({ label: ex.title, onSelect: () => p.onExample(ex) }))}
-        />
+        <button
+          type="button"
+          className="kf-button"
+          onClick={p.onExamples}
+          aria-haspopup="dialog"
+          title="Open an example graph (a gallery you can search)"
+        >
+          Examples
+        </button>
         <button type="button" className="kf-button" onClick={p.onNew} title="Start an empty graph">
           New
         </button>

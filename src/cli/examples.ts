@@ -1,5 +1,6 @@
 /** Where the example graphs live and how they are named: examples/NAME.kleinflow.json. */
-import { readdirSync } from 'node:fs';
+import { createHash } from 'node:crypto';
+import { readdirSync, readFileSync } from 'node:fs';
 import { basename, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
@@ -7,6 +8,10 @@ const ROOT = resolve(fileURLToPath(new URL('../..', import.meta.url)));
 export const EXAMPLES_DIR = join(ROOT, 'examples');
 /** The rendered pictures (npm run render-examples), also shown by the README. */
 export const EXAMPLES_PNG_DIR = join(EXAMPLES_DIR, 'png');
+/** The Examples gallery's thumbnails (npm run render-examples -- --thumbnails). */
+export const EXAMPLES_THUMB_DIR = join(EXAMPLES_DIR, 'thumbs');
+/** Which version of each example file its thumbnail was rendered from (name → SHA-256 of the file). */
+export const THUMB_SOURCES = join(EXAMPLES_THUMB_DIR, 'sources.json');
 const SUFFIX = '.kleinflow.json';
 
 /** Example names (file names without the suffix), sorted. */
@@ -18,3 +23,10 @@ export function exampleNames(dir = EXAMPLES_DIR): string[] {
 }
 
 export const examplePath = (name: string, dir = EXAMPLES_DIR): string => join(dir, `${name}${SUFFIX}`);
+
+/** SHA-256 (hex) of an example file's bytes: what a thumbnail records as its source. */
+export function exampleDigest(name: string, dir = EXAMPLES_DIR): string {
+  return createHash('sha256')
+    .update(readFileSync(examplePath(name, dir)))
+    .digest('hex');
+}

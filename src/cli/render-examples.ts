@@ -1,10 +1,12 @@
 /**
- * `npm run render-examples [-- NAME...] [--size WxH]`: renders every examples/*.kleinflow.json
- * (or the named ones) to examples/png/NAME.png with the CPU interpreter at the graph's own view
- * and sample count, the graph embedded, two at a time on worker threads. Prints name and time;
- * exits 1 if any example fails (after rendering the rest).
+ * `npm run render-examples [-- NAME...] [--size WxH] [--thumbnails]`: renders every
+ * examples/*.kleinflow.json (or the named ones) to examples/png/NAME.png with the CPU interpreter
+ * at the graph's own view and sample count, the graph embedded, two at a time on worker threads.
+ * `--thumbnails` writes the Examples gallery's small pictures instead (examples/thumbs/, no graph
+ * inside) and records which version of each example they show (thumbs/sources.json), so a test
+ * can tell a stale thumbnail. Prints name and time; exits 1 if any example fails.
  */
-import { mkdir } from 'node:fs/promises';
+import { mkdir, readFile, writeFile } from 'node:fs/promises';
 import { availableParallelism } from 'node:os';
 import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -12,10 +14,19 @@ import { Worker } from 'node:worker_threads';
 import { LIMITS } from '../../nodes/core/scene.ts';
 import { parseArgs, parseSizeOption, stringOption } from './args.ts';
 import { CliError } from './command.ts';
-import { EXAMPLES_PNG_DIR, exampleNames, examplePath } from './examples.ts';
+import {
+  EXAMPLES_PNG_DIR,
+  EXAMPLES_THUMB_DIR,
+  exampleDigest,
+  exampleNames,
+  examplePath,
+  THUMB_SOURCES,
+} from './examples.ts';
 import type { RenderJob, RenderJobResult } from './render-job.ts';
 
 const DEFAULT_SIZE = { width: 800, height: 800 };
+/** Gallery thumbnails: small, square, enough samples to look smooth at that size. */
+export const THUMB = { width: 192, height: 192, samples: 4 } as const;
 
 /** Workers start without tsx: register it there first, then load the TypeScript job module. */
 const WORKER_BOOTSTRAP = `import(${JSON.stringify(import.meta.resolve('tsx/esm/api'))})
@@ -46,34 +57,67 @@ function runPool(
 }
 
 async function main(argv: readonly string[]): Promise<number> {
-  const parsed = parseArgs(argv, [{ long: 'size', value: 'WxH', doc: 'image size (default 800x800)' }]);
+  const parsed = parseArgs(argv, [
+    { long: 'size', value: 'WxH', doc: 'image size (default 800x800)' },
+    { long: 'thumbnails', doc: 'write the gallery thumbnails (examples/thumbs) instead' },
+  ]);
+  const thumbs = parsed.options.thumbnails === true;
   const sizeText = stringOption(parsed, 'size');
-  const { width, height } = sizeText ? parseSizeOption('size', sizeText, LIMITS.maxImageSide) : DEFAULT_SIZE;
+  const { width, height } = thumbs
+    ? THUMB
+    : sizeText
+      ? parseSizeOption('size', sizeText, LIMITS.maxImageSide)
+      : DEFAULT_SIZE;
+  const outDir = thumbs ? EXAMPLES_THUMB_DIR : EXAMPLES_PNG_DIR;
   const all = exampleNames();
   const names = parsed.positionals.length ? [...parsed.positionals] : all;
   const unknown = names.filter((n) => !all.includes(n));
   if (unknown.length) throw new CliError(`no such example: ${unknown.join(', ')} (have: ${all.join(', ')})`);
-  await mkdir(EXAMPLES_PNG_DIR, { recursive: true });
-  const jobs = names.map((name) => ({
+  await mkdir(outDir, { recursive: true });
+  const jobs: RenderJob[] = names.map((name) => ({
     name,
     input: examplePath(name),
-    output: join(EXAMPLES_PNG_DIR, `${name}.png`),
+    output: join(outDir, `${name}.png`),
     width,
     height,
+    samples: thumbs ? THUMB.samples : undefined,
+    embedGraph: !thumbs,
   }));
+  const rendered: string[] = [];
   const started = performance.now();
   let failed = 0;
   await runPool(jobs, Math.min(2, availableParallelism()), (r) => {
     if (r.error !== undefined) {
       failed++;
       process.stderr.write(`${r.name.padEnd(28)} FAILED: ${r.error}\n`);
-    } else process.stdout.write(`${r.name.padEnd(28)} ${String(Math.round(r.ms)).padStart(6)} ms\n`);
+    } else {
+      rendered.push(r.name);
+      process.stdout.write(`${r.name.padEnd(28)} ${String(Math.round(r.ms)).padStart(6)} ms\n`);
+    }
   });
+  if (thumbs) await recordThumbSources(rendered, all);
   const total = ((performance.now() - started) / 1000).toFixed(1);
   process.stdout.write(
-    `${jobs.length - failed} of ${jobs.length} examples → ${EXAMPLES_PNG_DIR} (${width}×${height}, ${total} s)\n`,
+    `${jobs.length - failed} of ${jobs.length} examples → ${outDir} (${width}×${height}, ${total} s)\n`,
   );
   return failed ? 1 : 0;
+}
+
+/** Updates thumbs/sources.json for the rendered names, dropping examples that no longer exist. */
+async function recordThumbSources(rendered: readonly string[], all: readonly string[]): Promise<void> {
+  let sources: Record<string, string> = {};
+  try {
+    sources = JSON.parse(await readFile(THUMB_SOURCES, 'utf8')) as Record<string, string>;
+  } catch {
+    // first run: no record yet
+  }
+  for (const name of rendered) sources[name] = exampleDigest(name);
+  const kept = Object.fromEntries(
+    Object.entries(sources)
+      .filter(([name]) => all.includes(name))
+      .sort(([a], [b]) => a.localeCompare(b)),
+  );
+  await writeFile(THUMB_SOURCES, `${JSON.stringify(kept, null, 2)}\n`);
 }
 
 if (process.argv[1] && resolve(process.argv[1]) === fileURLToPath(import.meta.url)) {

@@ -14,6 +14,10 @@ export interface RenderJob {
   readonly output: string;
   readonly width: number;
   readonly height: number;
+  /** Samples per pixel (the render node's own when absent). */
+  readonly samples?: number;
+  /** Whether the graph travels inside the PNG (false for gallery thumbnails). */
+  readonly embedGraph: boolean;
 }
 
 export interface RenderJobResult {
@@ -27,7 +31,11 @@ export async function runRenderJob(job: RenderJob): Promise<RenderJobResult> {
   const io = nodeIo();
   try {
     const { scene, text } = await loadScene(io, job.input);
-    const png = renderScenePng(scene, text, { width: job.width, height: job.height });
+    const png = renderScenePng(scene, job.embedGraph ? text : null, {
+      width: job.width,
+      height: job.height,
+      samples: job.samples,
+    });
     await io.writeFile(job.output, png);
     return { name: job.name, ms: performance.now() - started };
   } catch (e) {

@@ -17,7 +17,8 @@ export interface PngRequest {
   readonly onProgress?: (done: number) => void;
 }
 
-export function renderScenePng(scene: Scene, graphText: string, request: PngRequest): Uint8Array {
+/** `graphText` null: no graph inside (gallery thumbnails, which only ever show). */
+export function renderScenePng(scene: Scene, graphText: string | null, request: PngRequest): Uint8Array {
   const onProgress = request.onProgress;
   const image = rasterize(scene, {
     pictures: scenePictures(scene),
@@ -31,5 +32,5 @@ export function renderScenePng(scene: Scene, graphText: string, request: PngRequ
         }
       : undefined,
   });
-  return encodePng(image, { [PNG_GRAPH_KEY]: graphText });
+  return encodePng(image, graphText === null ? {} : { [PNG_GRAPH_KEY]: graphText });
 }

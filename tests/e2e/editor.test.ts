@@ -58,21 +58,47 @@ describe('editor', () => {
     expect(px.colours).toBeGreaterThan(3);
   });
 
-  it('lists every example by title in the menu and loads them', async () => {
-    await page.getByRole('button', { name: 'Examples' }).click();
-    const listed = await page.getByRole('menuitem').allTextContents();
-    expect(listed.sort()).toEqual([...exampleTitles].sort());
-    await page.keyboard.press('Escape');
-    // Loading each one costs a shader compile in SwiftShader: two are enough to show the menu works.
-    for (const title of exampleTitles.filter((t) => !t.includes('(2,3,7)')).slice(0, 2)) {
+  it('shows every example in the gallery, grouped, with a thumbnail, searchable, and loads them', async () => {
+    const gallery = page.getByRole('dialog', { name: 'Examples' });
+    const openGallery = async () => {
       await page.getByRole('button', { name: 'Examples' }).click();
-      await page.getByRole('menuitem', { name: title, exact: true }).click();
+      await gallery.waitFor();
+    };
+    await openGallery();
+    const cards = gallery.locator('.kf-gallery__card');
+    const listed = await cards.locator('strong').allTextContents();
+    expect(listed.sort()).toEqual([...exampleTitles].sort());
+    expect(await gallery.getByRole('heading', { name: 'Kaleidoscopes' }).isVisible()).toBe(true);
+    // Every card has a thumbnail that actually loaded.
+    const thumbs = gallery.locator('.kf-gallery__card img');
+    expect(await thumbs.count()).toBe(exampleTitles.length);
+    await expect
+      .poll(() => thumbs.evaluateAll((imgs) => imgs.every((i) => (i as HTMLImageElement).naturalWidth > 0)))
+      .toBe(true);
+    // The search box has the focus, so typing searches at once; Enter opens the first match.
+    const search = gallery.getByRole('searchbox', { name: 'Search examples' });
+    await expect.poll(() => search.evaluate((el) => el === document.activeElement)).toBe(true);
+    await search.fill('schottky matrices');
+    await expect.poll(() => cards.count()).toBe(1);
+    const before = await page.getByLabel('Document title').inputValue();
+    await page.keyboard.press('Enter');
+    await gallery.waitFor({ state: 'detached' });
+    await expect.poll(() => page.getByLabel('Document title').inputValue()).toMatch(/matrices/);
+    // Loading replaced the graph: a toast says so and Ctrl+Z brings the graph back.
+    expect(await page.getByTestId('toast').textContent()).toMatch(/Loaded .* Ctrl\+Z brings your graph back/);
+    await page.locator('.kf-graph').click({ position: { x: 10, y: 200 } });
+    await page.keyboard.press('Control+z');
+    await expect.poll(() => page.getByLabel('Document title').inputValue()).toBe(before);
+    // Loading each one costs a shader compile in SwiftShader: two are enough to show the cards work.
+    for (const title of exampleTitles.filter((t) => !t.includes('(2,3,7)')).slice(0, 2)) {
+      await openGallery();
+      await cards.filter({ hasText: title }).first().click();
       await expect.poll(() => page.getByLabel('Document title').inputValue()).toBe(title);
       await waitRendered(page);
       expect((await renderPixels(page)).sd).toBeGreaterThan(5);
     }
-    await page.getByRole('button', { name: 'Examples' }).click();
-    await page.getByRole('menuitem', { name: '(2,3,7) hyperbolic tessellation' }).click();
+    await openGallery();
+    await cards.filter({ hasText: '(2,3,7) hyperbolic tessellation' }).click();
     await waitRendered(page);
     expect((await renderPixels(page)).sd).toBeGreaterThan(20);
   }, 120_000);

@@ -36,9 +36,14 @@ export interface DocumentIo {
   openFile(file: File): Promise<void>;
   save(): void;
   readonly exportItems: readonly MenuItem[];
+  /** Shows a short confirmation in the toast. */
+  notify(text: string): void;
   /** The drop overlay, open report, toast and export dialog, to mount once in the app. */
   readonly ui: ReactNode;
 }
+
+/** What a load that replaced the user's graph says (so nobody thinks their work is gone). */
+export const loadedMessage = (what: string) => `Loaded ${what} — Ctrl+Z brings your graph back.`;
 
 /** The live render's size in css pixels (the export dialog's "view size"). */
 function renderSize(): Size {
@@ -98,8 +103,10 @@ export function useDocumentIo({ store, scene, load, viewport }: Options): Docume
       const link = readStartupLink(window.location.hash);
       if (link.kind === 'none') return;
       clearFragment();
-      if (link.kind === 'ok') load(link.doc, 'open shared link');
-      else
+      if (link.kind === 'ok') {
+        load(link.doc, 'open shared link');
+        say('ok', loadedMessage('the shared graph'));
+      } else
         setReport({
           kind: 'error',
           title: 'The shared link could not be opened; your graph is unchanged.',
@@ -109,7 +116,7 @@ export function useDocumentIo({ store, scene, load, viewport }: Options): Docume
     apply();
     window.addEventListener('hashchange', apply);
     return () => window.removeEventListener('hashchange', apply);
-  }, [load]);
+  }, [load, say]);
 
   // Drop a file anywhere; paste a whole document or share link (copied nodes stay the editor's).
   useEffect(() => {
@@ -206,5 +213,6 @@ export function useDocumentIo({ store, scene, load, viewport }: Options): Docume
       )}
     </>
   );
-  return { openFile, save, exportItems, ui };
+  const notify = useCallback((text: string) => say('ok', text), [say]);
+  return { openFile, save, exportItems, notify, ui };
 }

@@ -7,8 +7,7 @@ import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { LIMITS, type Scene, type SceneElement } from '../../nodes/core/scene.ts';
 import { compile, FRAME_UNIFORMS, shadertoySource } from '../../shader-gen/compile.ts';
-import { ELEMENT_KINDS } from '../../shader-gen/elements/index.ts';
-import { GLSL_TWINS, glslTwin } from '../../shader-gen/glsl/element-twins.ts';
+import { elementRecord } from '../../shader-gen/elements/index.ts';
 import { FLOAT32_MAX, floatLiteral } from '../../shader-gen/glsl/literal.ts';
 import { uniformRows } from '../../shader-gen/glsl/values.ts';
 import {
@@ -97,7 +96,7 @@ describe('uniforms', () => {
         expect(p.source).toMatch(new RegExp(`uniform \\w+ ${u.name}(\\[\\d+\\])?;`));
       }
       const el = p.uniforms.find((u) => u.name === 'u_el');
-      const packed = scene.elements.flatMap((e) => glslTwin(e).pack(e));
+      const packed = scene.elements.flatMap((e) => elementRecord(e).glsl.pack(e));
       expect(el?.value ?? []).toEqual(packed);
       expect(p.uniforms.find((u) => u.name === 'u_maxIterations')?.value).toEqual([scene.maxIterations]);
     });
@@ -113,13 +112,6 @@ describe('uniforms', () => {
       expect(p.source).toContain(`for (; depth < ${scene.maxIterations}; ++depth)`);
     });
   }
-
-  it('every kind has a GLSL twin whose packing fills its vec4s exactly', () => {
-    expect(Object.keys(GLSL_TWINS).sort()).toEqual(Object.keys(ELEMENT_KINDS).sort());
-    const kinds = new Set(EVERY_KIND.map((e) => e.kind));
-    expect([...kinds].sort()).toEqual(Object.keys(ELEMENT_KINDS).sort());
-    for (const e of EVERY_KIND) expect(glslTwin(e).pack(e)).toHaveLength(4 * glslTwin(e).vec4s);
-  });
 });
 
 describe('structureKey: code, never values', () => {
@@ -191,8 +183,8 @@ describe('determinism and #line markers', () => {
       const blocks = lines.flatMap((l, k) => (l === `#line 1 ${i + 1}` ? [lines[k + 1]] : []));
       expect(blocks).toHaveLength(3);
       expect(blocks[0]).toBe(`    { // ${e.kind}`);
-      expect(blocks[1]).toContain(`if (${glslTwin(e).inside.name}(p,`);
-      expect(blocks[2]).toContain(`${glslTwin(e).boundaryDistance.name}(p,`);
+      expect(blocks[1]).toContain(`if (${elementRecord(e).glsl.inside.name}(p,`);
+      expect(blocks[2]).toContain(`${elementRecord(e).glsl.boundaryDistance.name}(p,`);
     });
     expect(Object.keys(p.lineMap)).toHaveLength(scene.elements.length);
   });

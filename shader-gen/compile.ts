@@ -15,7 +15,6 @@ import {
 } from './glsl/template.ts';
 import { type UniformEntry, uniformRows } from './glsl/values.ts';
 import { firstOutOfGpuRange } from './gpu-range.ts';
-import { structureKey } from './structure-key.ts';
 
 export { FRAME_UNIFORMS } from './glsl/template.ts';
 export type { UniformEntry } from './glsl/values.ts';
@@ -28,12 +27,15 @@ export interface CompileOptions {
 }
 
 export interface CompiledProgram {
-  /** Full fragment shader, starting with "#version 300 es". */
+  /**
+   * Full fragment shader, starting with "#version 300 es". It is also the program's identity: the
+   * runtime caches linked programs by this text, so a value edit (the same text, new uniforms)
+   * never recompiles and any change of the code always does — no second list of "what changes
+   * the code" to keep in step with the generator.
+   */
   source: string;
   /** The full-screen triangle vertex shader (attribute-less, gl_VertexID). */
   vertexSource: string;
-  /** What changes the code (see structure-key.ts): same key → same program, new uniforms. */
-  structureKey: string;
   /** Scene values to upload (empty when baked); sorted by name; all finite. */
   uniforms: UniformEntry[];
   /** `#line` source-string number → id of the node that produced that element. */
@@ -79,7 +81,6 @@ export function compile(input: Scene, options: CompileOptions = {}): CompiledPro
   return {
     source: emitted.source,
     vertexSource: VERTEX_SOURCE,
-    structureKey: structureKey(scene, { variant, baked }),
     uniforms: emitted.uniforms,
     lineMap: emitted.lineMap,
     pictures: emitted.pictures,

@@ -8,8 +8,8 @@
  */
 import type { Scene, SceneElement } from '../nodes/core/scene.ts';
 import type { Vec2 } from '../nodes/core/values.ts';
-import type { ElementKind, IisState } from './elements/element-kind.ts';
-import { ELEMENT_KINDS } from './elements/index.ts';
+import type { CpuElement, IisState } from './elements/element-kind.ts';
+import { ELEMENTS } from './elements/index.ts';
 
 export interface IisResult {
   readonly depth: number;
@@ -23,13 +23,13 @@ export interface IisResult {
 /** The elements with their kinds looked up once (hot loops call this per image, not per point). */
 export interface PreparedElements {
   readonly elements: readonly SceneElement[];
-  readonly kinds: readonly ElementKind<SceneElement>[];
+  readonly kinds: readonly CpuElement<SceneElement>[];
 }
 
 export function prepare(elements: readonly SceneElement[]): PreparedElements {
   return {
     elements,
-    kinds: elements.map((e) => ELEMENT_KINDS[e.kind] as unknown as ElementKind<SceneElement>),
+    kinds: elements.map((e) => ELEMENTS[e.kind].cpu as unknown as CpuElement<SceneElement>),
   };
 }
 

@@ -1,6 +1,11 @@
-/** Every element kind, by kind: the one table the interpreter and the compiler dispatch on. */
+/**
+ * Every element kind, by kind: the one registry the interpreter and the compiler dispatch on. Each
+ * kind is one module (shader-gen/elements/<kind>.ts) exporting one record with its CPU step and its
+ * GLSL twin. The mapped type makes a kind of the Scene union without a record here — or a record
+ * without either half — fail to type-check.
+ */
 import type { SceneElement } from '../../nodes/core/scene.ts';
-import type { ElementKind } from './element-kind.ts';
+import type { ElementRecord } from './element-kind.ts';
 import { glideReflection } from './glide-reflection.ts';
 import { inversion } from './inversion.ts';
 import { loxodromic } from './loxodromic.ts';
@@ -12,9 +17,15 @@ import { rotation } from './rotation.ts';
 import { spiralSimilarity } from './spiral-similarity.ts';
 import { translation } from './translation.ts';
 
-type KindTable = { readonly [K in SceneElement['kind']]: ElementKind<Extract<SceneElement, { kind: K }>> };
+/** The name of an element kind: the `kind` tag of the Scene's element union. */
+export type ElementKindName = SceneElement['kind'];
 
-export const ELEMENT_KINDS: KindTable = {
+/** One record per kind, typed by its own element. */
+export type ElementRegistry = {
+  readonly [K in ElementKindName]: ElementRecord<Extract<SceneElement, { kind: K }>>;
+};
+
+export const ELEMENTS: ElementRegistry = {
   inversion,
   reflection,
   mobius,
@@ -27,6 +38,7 @@ export const ELEMENT_KINDS: KindTable = {
   'spiral-similarity': spiralSimilarity,
 };
 
-export function elementKind<E extends SceneElement>(e: E): ElementKind<E> {
-  return ELEMENT_KINDS[e.kind] as unknown as ElementKind<E>;
+/** The record of `e`'s kind (one lookup; the cast is safe by the registry's mapped type). */
+export function elementRecord<E extends SceneElement>(e: E): ElementRecord<E> {
+  return ELEMENTS[e.kind as ElementKindName] as unknown as ElementRecord<E>;
 }

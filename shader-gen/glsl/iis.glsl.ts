@@ -8,10 +8,10 @@
  *   to depth, so after at most maxIter passes depth ≥ maxIter.
  */
 import type { Scene, SceneElement } from '../../nodes/core/scene.ts';
+import type { ElementRecord } from '../elements/element-kind.ts';
+import { elementRecord } from '../elements/index.ts';
 import { farDisk, limitReach } from '../far-disk.ts';
 import { shadeGlsl } from './colour.glsl.ts';
-import type { GlslElementTwin } from './element-twin.ts';
-import { glslTwin } from './element-twins.ts';
 import type { SeedArg, SeedsGlsl } from './seeds.glsl.ts';
 import { type GlslFunction, glslFunction } from './snippet.ts';
 import type { SourceBuilder } from './source.ts';
@@ -22,7 +22,7 @@ export const GLSL_FAR = '3.0e38';
 
 interface PlacedElement {
   readonly element: SceneElement;
-  readonly twin: GlslElementTwin;
+  readonly record: ElementRecord;
   /** GLSL expressions of its data vec4s (`u_el[i]` or literals). */
   readonly data: readonly string[];
   /** The same, joined as trailing call arguments. */
@@ -32,20 +32,21 @@ interface PlacedElement {
 /** The elements with their data placed in `u_el` (or baked), in graph order. */
 export function placeElements(elements: readonly SceneElement[], v: SceneValues): PlacedElement[] {
   return elements.map((element) => {
-    const twin = glslTwin(element) as GlslElementTwin;
-    const data = twin.pack(element);
-    if (data.length !== twin.vec4s * 4) throw new Error(`${twin.kind} packed ${data.length} numbers`);
+    const record = elementRecord(element) as ElementRecord;
+    const data = record.glsl.pack(element);
+    if (data.length !== record.glsl.vec4s * 4)
+      throw new Error(`${record.kind} packed ${data.length} numbers`);
     const rows = v.elementRows(data);
-    return { element, twin, data: rows, args: rows.join(', ') };
+    return { element, record, data: rows, args: rows.join(', ') };
   });
 }
 
 /** Each kind's functions the loop calls (deduplicated by the assembler). */
 export function elementFunctions(placed: readonly PlacedElement[], edges: boolean): GlslFunction[] {
-  return placed.flatMap(({ twin }) => [
-    ...twin.step.deps,
-    twin.inside,
-    ...(edges ? [twin.boundaryDistance] : []),
+  return placed.flatMap(({ record: { glsl } }) => [
+    ...glsl.step.deps,
+    glsl.inside,
+    ...(edges ? [glsl.boundaryDistance] : []),
   ]);
 }
 
@@ -103,19 +104,19 @@ export function emitRunIis(
     `  for (; depth < ${literalLimit ? maxIter : 'maxIter'}; ++depth) {`,
     ...(withSeeds ? seedTest('    ') : []),
   );
-  placed.forEach(({ twin, data }, i) => {
+  placed.forEach(({ record, data }, i) => {
     out.block(i + 1, [
-      `    { // ${twin.kind}`,
+      `    { // ${record.kind}`,
       ...data.map((expr, k) => `      vec4 d${k} = ${local(expr)};`),
-      ...twin.step.code.split('\n').map((line) => `      ${line}`),
+      ...record.glsl.step.code.split('\n').map((line) => `      ${line}`),
       '    }',
     ]);
   });
   out.push('    return true;', '  }');
   if (withSeeds) out.push(...seedTest('  '));
   out.push('  // depth ≥ maxIter: escaped only if no element holds p.');
-  placed.forEach(({ twin, data }, i) => {
-    out.block(i + 1, [`  if (${twin.inside.name}(p, ${data.map(local).join(', ')})) return false;`]);
+  placed.forEach(({ record, data }, i) => {
+    out.block(i + 1, [`  if (${record.glsl.inside.name}(p, ${data.map(local).join(', ')})) return false;`]);
   });
   out.push('  return true;', '}');
 }
@@ -123,8 +124,8 @@ export function emitRunIis(
 /** `float sceneBoundaryDistance(vec2 p)`: min over elements of boundaryDistance (raster.ts). */
 export function emitBoundaryDistance(out: SourceBuilder, placed: readonly PlacedElement[]): void {
   out.push('float sceneBoundaryDistance(vec2 p) {', `  float d = ${GLSL_FAR};`);
-  placed.forEach(({ twin, args }, i) => {
-    out.block(i + 1, [`  d = min(d, ${twin.boundaryDistance.name}(p, ${args}));`]);
+  placed.forEach(({ record, args }, i) => {
+    out.block(i + 1, [`  d = min(d, ${record.glsl.boundaryDistance.name}(p, ${args}));`]);
   });
   out.push('  return d;', '}');
 }

@@ -1,7 +1,10 @@
 /**
- * Linked programs by key. Uniform programs are keyed by variant + structureKey (values never change
- * the code, so a value edit is a cache hit); baked programs by their source (the values are in it).
- * Least recently used programs beyond the limit are deleted, so a long session does not leak.
+ * Linked programs keyed by their fragment source (the one identity of a program, compile.ts): a
+ * uniform program's text does not hold the values, so a value edit is a cache hit; a baked one's
+ * does, so it is a hit only for the exact same values. Generating the text is cheap (`npm run
+ * bench`, "Shader source per frame"), and the Map hashes it natively; keying on the whole text
+ * rather than a digest means two programs can never collide. Least recently used programs beyond
+ * the limit are deleted, so a long session does not leak.
  */
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import { err, ok, type Result } from '../../nodes/core/result.ts';
@@ -9,10 +12,8 @@ import type { CompiledProgram, CompileOptions } from '../../shader-gen/compile.t
 import { beginProgram, finishProgram, isProgramReady, type PendingProgram } from './gl-program.ts';
 import { type GpuProgram, locateUniforms } from './uniforms.ts';
 
-export function programKey(compiled: CompiledProgram, options: CompileOptions): string {
-  const variant = options.variant ?? 'color';
-  return options.baked ? `${variant}|baked|${compiled.source}` : `${variant}|${compiled.structureKey}`;
-}
+/** The cache key of a program: its fragment source (the vertex shader is the same for all). */
+export const programKey = (compiled: CompiledProgram): string => compiled.source;
 
 /** A compile started with `begin`, to be polled with `poll` (KHR_parallel_shader_compile). */
 export interface PendingBuild {
@@ -44,7 +45,7 @@ export class ProgramCache {
 
   /** The program for `compiled`, compiling and linking it now on a miss. */
   obtain(compiled: CompiledProgram, options: CompileOptions): Result<GpuProgram, Diagnostic[]> {
-    const key = programKey(compiled, options);
+    const key = programKey(compiled);
     const hit = this.peek(key);
     if (hit) return ok(hit);
     return this.complete(this.begin(compiled, options));
@@ -52,7 +53,7 @@ export class ProgramCache {
 
   /** Starts compiling (returns at once with KHR_parallel_shader_compile; the link may still run). */
   begin(compiled: CompiledProgram, options: CompileOptions): PendingBuild {
-    const key = programKey(compiled, options);
+    const key = programKey(compiled);
     if (options.baked) this.bakedCompiles++;
     else this.compiles++;
     return {

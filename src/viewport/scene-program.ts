@@ -1,6 +1,6 @@
 /**
- * Which program draws the current scene: the uniform program of its structure (shared by every
- * value edit), or, after a quiet spell, the baked program of its exact values. Reports the
+ * Which program draws the current scene: its uniform program (the same source, so the same
+ * program, for every value edit), or, after a quiet spell, the baked program of its exact values. Reports the
  * compiler's and the driver's diagnostics whenever they change, and keeps the compile counts
  * across context losses.
  */
@@ -20,8 +20,8 @@ export interface SceneProgram {
   readonly pictures: readonly string[];
 }
 
-/** What a new scene changed: nothing that shows, only values (same program), or the structure. */
-export type SceneChange = 'same' | 'values' | 'structure';
+/** What a new scene changed: nothing that shows, only values (same source), or the code. */
+export type SceneChange = 'same' | 'values' | 'code';
 
 const UNIFORM: CompileOptions = { variant: 'color' };
 const BAKED: CompileOptions = { variant: 'color', baked: true };
@@ -67,17 +67,17 @@ export class SceneProgramBuilder {
 
   constructor(private readonly onDiagnostics: (d: Diagnostic[]) => void) {}
 
-  /** Takes `scene`: compiles only when its structure is new to the cache. */
+  /** Takes `scene`: compiles only when its generated source is new to the cache. */
   apply(renderer: Renderer, scene: Scene, now: number): SceneChange {
     const compiled = generate(scene, UNIFORM);
     if (Array.isArray(compiled)) {
       this.fail(compiled);
-      return 'structure';
+      return 'code';
     }
     const prev = this.compiled;
-    const sameStructure = prev !== null && prev.structureKey === compiled.structureKey;
+    const sameSource = prev !== null && prev.source === compiled.source;
     if (
-      sameStructure &&
+      sameSource &&
       this.program &&
       sameUniforms(prev.uniforms, compiled.uniforms) &&
       samePictures(prev.pictures, compiled.pictures)
@@ -100,7 +100,7 @@ export class SceneProgramBuilder {
       this.program = null;
       this.report([...compiled.diagnostics, ...built.error]);
     }
-    return sameStructure ? 'values' : 'structure';
+    return sameSource ? 'values' : 'code';
   }
 
   /** The uniform program of the last applied scene; null when it did not compile. */
@@ -120,7 +120,7 @@ export class SceneProgramBuilder {
         this.bake = { version: this.version, compiled: this.compiled!, build: null, done: true };
         return null;
       }
-      const hit = renderer.programs.peek(programKey(compiled, BAKED));
+      const hit = renderer.programs.peek(programKey(compiled));
       this.bake = { version: this.version, compiled, build: null, done: hit !== undefined };
       if (hit) return { gp: hit, uniforms: compiled.uniforms, baked: true, pictures: compiled.pictures };
       this.bake.build = renderer.programs.begin(compiled, BAKED);

@@ -101,8 +101,8 @@ export class Viewport {
   }
 
   /**
-   * Recompiles only when the structure changes (else uploads uniforms) and restarts accumulation;
-   * a scene with the same structure and values as the current one changes nothing.
+   * Recompiles only when the generated source changes (else uploads uniforms) and restarts
+   * accumulation; a scene with the same source and values as the current one changes nothing.
    */
   setScene(scene: Scene): void {
     if (!this.sceneDirty) this.sceneSetAt = performance.now();

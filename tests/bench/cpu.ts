@@ -10,7 +10,7 @@ import type { Scene } from '../../nodes/core/scene.ts';
 import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
 import { registry } from '../../nodes/types/index.ts';
-import type { ElementKind, IisState } from '../../shader-gen/elements/element-kind.ts';
+import type { CpuElement, IisState } from '../../shader-gen/elements/element-kind.ts';
 import { type PreparedElements, prepare, runIis } from '../../shader-gen/interpret.ts';
 import { pixelToWorld } from '../../shader-gen/view.ts';
 import { exampleNames, examplePath } from '../../src/cli/examples.ts';
@@ -50,7 +50,7 @@ function sweep(scene: Scene, prepared: PreparedElements, size: number): number {
 function counting(prepared: PreparedElements): { prepared: PreparedElements; count: () => number } {
   let n = 0;
   const kinds = prepared.kinds.map(
-    (k): ElementKind => ({
+    (k): CpuElement => ({
       ...k,
       step: (e, st) => {
         n++;

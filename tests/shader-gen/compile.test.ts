@@ -1,14 +1,13 @@
 /**
  * compile(): the contract the WebGL runtime relies on — the shape of the program, where values
- * go (uniforms sorted by name, or literals), what structureKey keeps and ignores, `#line` mapping,
- * the limits reported as diagnostics, determinism.
+ * go (uniforms sorted by name, or literals), the source as the program's identity (values never
+ * change it, code always does), `#line` mapping, the limits reported as diagnostics, determinism.
  */
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { LIMITS, type Scene, type SceneElement } from '../../nodes/core/scene.ts';
 import { compile, FRAME_UNIFORMS, shadertoySource } from '../../shader-gen/compile.ts';
-import { ELEMENT_KINDS } from '../../shader-gen/elements/index.ts';
-import { GLSL_TWINS, glslTwin } from '../../shader-gen/glsl/element-twins.ts';
+import { elementRecord } from '../../shader-gen/elements/index.ts';
 import { FLOAT32_MAX, floatLiteral } from '../../shader-gen/glsl/literal.ts';
 import { uniformRows } from '../../shader-gen/glsl/values.ts';
 import {
@@ -97,7 +96,7 @@ describe('uniforms', () => {
         expect(p.source).toMatch(new RegExp(`uniform \\w+ ${u.name}(\\[\\d+\\])?;`));
       }
       const el = p.uniforms.find((u) => u.name === 'u_el');
-      const packed = scene.elements.flatMap((e) => glslTwin(e).pack(e));
+      const packed = scene.elements.flatMap((e) => elementRecord(e).glsl.pack(e));
       expect(el?.value ?? []).toEqual(packed);
       expect(p.uniforms.find((u) => u.name === 'u_maxIterations')?.value).toEqual([scene.maxIterations]);
     });
@@ -113,17 +112,15 @@ describe('uniforms', () => {
       expect(p.source).toContain(`for (; depth < ${scene.maxIterations}; ++depth)`);
     });
   }
-
-  it('every kind has a GLSL twin whose packing fills its vec4s exactly', () => {
-    expect(Object.keys(GLSL_TWINS).sort()).toEqual(Object.keys(ELEMENT_KINDS).sort());
-    const kinds = new Set(EVERY_KIND.map((e) => e.kind));
-    expect([...kinds].sort()).toEqual(Object.keys(ELEMENT_KINDS).sort());
-    for (const e of EVERY_KIND) expect(glslTwin(e).pack(e)).toHaveLength(4 * glslTwin(e).vec4s);
-  });
 });
 
-describe('structureKey: code, never values', () => {
-  it('the same for any change of values, and then the source is the same too', () => {
+/**
+ * The source text is the program's identity (src/viewport/program-cache.ts keys on it): a value edit
+ * must give the same text byte for byte (no recompile while dragging), and every change of the code
+ * a different text (or the new code would never be compiled).
+ */
+describe('program identity: the source changes with the code, never with values', () => {
+  it('a uniform program: any change of values gives the same source and new uniforms', () => {
     fc.assert(
       fc.property(
         fc.constantFrom(...scenes),
@@ -131,8 +128,8 @@ describe('structureKey: code, never values', () => {
         ([, scene], d) => {
           const a = compile(scene);
           const b = compile(nudged(scene, d));
-          expect(b.structureKey).toBe(a.structureKey);
           expect(b.source).toBe(a.source);
+          if (Math.abs(d) > 1e-6 && scene.elements.length > 0) expect(b.uniforms).not.toEqual(a.uniforms);
         },
       ),
       { seed: 42, numRuns: 60 },
@@ -141,7 +138,7 @@ describe('structureKey: code, never values', () => {
 
   it('changes with the element kinds, their order or number, colouring, edges, clip, variant, baking', () => {
     const base = HAND_MADE_SCENES['triangle-333-parity-clip'];
-    const key = (s: Scene, o = {}) => compile(s, o).structureKey;
+    const source = (s: Scene, o = {}) => compile(s, o).source;
     const variants: Scene[] = [
       withElements(base, [...TRIANGLE_333, reflection('m4', [0, 0], [1, 0])]),
       withElements(base, [TRIANGLE_333[0], TRIANGLE_333[1]]),
@@ -152,22 +149,22 @@ describe('structureKey: code, never values', () => {
       { ...base, tile: { ...base.tile, edgeWidth: 1 } },
       { ...base, clip: null },
     ];
-    const keys = [
-      key(base),
-      ...variants.map((s) => key(s)),
-      key(base, { variant: 'probe' }),
-      key(base, { baked: true }),
+    const sources = [
+      source(base),
+      ...variants.map((s) => source(s)),
+      source(base, { variant: 'probe' }),
+      source(base, { baked: true }),
     ];
-    expect(new Set(keys).size).toBe(keys.length);
+    expect(new Set(sources).size).toBe(sources.length);
   });
 
-  it('baked: values are code, so the key names maxIterations and changes with any value', () => {
+  it('baked: values are code, so maxIterations and any value change the source', () => {
     const base = HAND_MADE_SCENES['strips-hsv-edges'];
-    const a = compile(base, { baked: true }).structureKey;
-    expect(a).toContain(`maxIterations:${base.maxIterations}`);
-    expect(compile({ ...base, maxIterations: 101 }, { baked: true }).structureKey).not.toBe(a);
-    expect(compile(nudged(base, 0.01), { baked: true }).structureKey).not.toBe(a);
-    expect(compile({ ...base, maxIterations: 101 }).structureKey).toBe(compile(base).structureKey);
+    const a = compile(base, { baked: true }).source;
+    expect(a).toContain(`depth < ${base.maxIterations};`);
+    expect(compile({ ...base, maxIterations: 101 }, { baked: true }).source).not.toBe(a);
+    expect(compile(nudged(base, 0.01), { baked: true }).source).not.toBe(a);
+    expect(compile({ ...base, maxIterations: 101 }).source).toBe(compile(base).source);
   });
 });
 
@@ -191,8 +188,8 @@ describe('determinism and #line markers', () => {
       const blocks = lines.flatMap((l, k) => (l === `#line 1 ${i + 1}` ? [lines[k + 1]] : []));
       expect(blocks).toHaveLength(3);
       expect(blocks[0]).toBe(`    { // ${e.kind}`);
-      expect(blocks[1]).toContain(`if (${glslTwin(e).inside.name}(p,`);
-      expect(blocks[2]).toContain(`${glslTwin(e).boundaryDistance.name}(p,`);
+      expect(blocks[1]).toContain(`if (${elementRecord(e).glsl.inside.name}(p,`);
+      expect(blocks[2]).toContain(`${elementRecord(e).glsl.boundaryDistance.name}(p,`);
     });
     expect(Object.keys(p.lineMap)).toHaveLength(scene.elements.length);
   });
@@ -219,7 +216,8 @@ describe('limits are diagnostics, never driver errors', () => {
     const over = compile(makeScene(many(fits + 1)));
     expect(over.diagnostics.map((d) => d.code)).toEqual(['KF404']);
     expect(over.uniforms).toEqual([]);
-    expect(over.structureKey).toContain('baked');
+    expect(over.source).not.toMatch(/^uniform vec4 u_el\[/m);
+    expect(over.source).toBe(compile(makeScene(many(fits + 1)), { baked: true }).source);
   });
 });
 

@@ -7,7 +7,7 @@ import { invertPoint, reflectPoint } from '../../nodes/geometry/circle.ts';
 import { twoCircleRegions } from '../../nodes/geometry/mobius.ts';
 import { dist } from '../../nodes/geometry/vec.ts';
 import type { IisState } from '../../shader-gen/elements/element-kind.ts';
-import { ELEMENT_KINDS } from '../../shader-gen/elements/index.ts';
+import { ELEMENTS } from '../../shader-gen/elements/index.ts';
 import { invertState } from '../../shader-gen/elements/inversion.ts';
 import { reflectState } from '../../shader-gen/elements/reflection.ts';
 
@@ -26,7 +26,7 @@ const close = (a: Vec2, b: Vec2, tol = 1e-9) =>
   expect(dist(a, b)).toBeLessThan(tol * Math.max(1, Math.hypot(...b)));
 
 describe('inversion element', () => {
-  const kind = ELEMENT_KINDS.inversion;
+  const kind = ELEMENTS.inversion.cpu;
 
   it('steps exactly the points inside, like invertPoint, with scale r²/|p−c|²', () => {
     fc.assert(
@@ -72,7 +72,7 @@ describe('inversion element', () => {
 });
 
 describe('reflection element', () => {
-  const kind = ELEMENT_KINDS.reflection;
+  const kind = ELEMENTS.reflection.cpu;
 
   it('steps exactly the points on the inside (right) side, like reflectPoint, scale 1', () => {
     fc.assert(
@@ -111,7 +111,7 @@ describe('reflection element', () => {
 });
 
 describe('two-circle Möbius element', () => {
-  const kind = ELEMENT_KINDS.mobius;
+  const kind = ELEMENTS.mobius.cpu;
 
   it('applies g = σ_C2∘σ_C1 in A and g⁻¹ = σ_C1∘σ_C2 in B, A tested first', () => {
     fc.assert(

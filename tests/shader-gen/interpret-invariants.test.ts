@@ -16,7 +16,7 @@ import { invertPoint, reflectPoint } from '../../nodes/geometry/circle.ts';
 import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
 import { registry } from '../../nodes/types/index.ts';
-import { ELEMENT_KINDS } from '../../shader-gen/elements/index.ts';
+import { ELEMENTS } from '../../shader-gen/elements/index.ts';
 import { interpret } from '../../shader-gen/interpret.ts';
 import { rectangle, scene } from './interpret-scenes.ts';
 
@@ -38,7 +38,7 @@ function inside(e: SceneElement, p: Vec2): boolean {
     case 'loxodromic':
       return inDisk(e.a, p) || inDisk(e.b, p);
     default:
-      return (ELEMENT_KINDS[e.kind].inside as (e: SceneElement, x: number, y: number) => boolean)(
+      return (ELEMENTS[e.kind].cpu.inside as (e: SceneElement, x: number, y: number) => boolean)(
         e,
         p[0],
         p[1],

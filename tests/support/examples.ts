@@ -34,3 +34,15 @@ export function loadExample(name: string): LoadedExample {
   if (!loaded.ok) throw new Error(`${name}: ${loaded.diagnostics.map((d) => d.message).join('; ')}`);
   return { name, doc: loaded.doc, scene: sceneOf(loaded.doc, name) };
 }
+
+/** The document with one point node moved by (dx, dy): what a drag of that point does. */
+export function movePoint(doc: GraphDoc, id: string, dx: number, dy: number): GraphDoc {
+  return {
+    ...doc,
+    nodes: doc.nodes.map((n) =>
+      n.id === id
+        ? { ...n, params: { ...n.params, x: Number(n.params.x) + dx, y: Number(n.params.y) + dy } }
+        : n,
+    ),
+  };
+}

@@ -6,7 +6,7 @@
 import type { SceneElement } from '../../../nodes/core/scene.ts';
 import type { Vec2 } from '../../../nodes/core/values.ts';
 import type { IisState } from '../../../shader-gen/elements/element-kind.ts';
-import { elementKind } from '../../../shader-gen/elements/index.ts';
+import { elementRecord } from '../../../shader-gen/elements/index.ts';
 
 export interface Folded {
   readonly p: Vec2;
@@ -16,7 +16,7 @@ export interface Folded {
 
 /** Repeats the kind's step while it applies (at most `limit` calls). */
 export function foldWithKind(e: SceneElement, p: Vec2, limit = 1000): Folded & { calls: number } {
-  const kind = elementKind(e);
+  const kind = elementRecord(e).cpu;
   const st: IisState = { x: p[0], y: p[1], s: 1, depth: 0 };
   let calls = 0;
   while (calls < limit && kind.step(e, st)) calls++;

@@ -12,7 +12,7 @@ import {
 } from '../../../nodes/geometry/mobius-matrix.ts';
 import { dist } from '../../../nodes/geometry/vec.ts';
 import type { IisState } from '../../../shader-gen/elements/element-kind.ts';
-import { elementKind } from '../../../shader-gen/elements/index.ts';
+import { elementRecord } from '../../../shader-gen/elements/index.ts';
 
 const SEED = { seed: 42, numRuns: 300 } as const;
 const part = fc.double({ min: -2, max: 2, noNaN: true });
@@ -48,7 +48,7 @@ describe('mobius-matrix element', () => {
           const m = normalizeMatrix(raw);
           fc.pre(m !== null && cabs(m.c) > 0.05 && cabs(m.c) < 20);
           const e = element(m!);
-          const kind = elementKind(e);
+          const kind = elementRecord(e).cpu;
           for (const [disk, map] of [
             [e.forward, m!],
             [e.backward, inverseMatrix(m!)],
@@ -73,9 +73,9 @@ describe('mobius-matrix element', () => {
     const m = normalizeMatrix({ a: [1.25, 0], b: [0.75, 0], c: [0.75, 0], d: [1.25, 0] })!;
     const e = element(m);
     const st: IisState = { x: 0, y: 0, s: 1, depth: 0 };
-    expect(elementKind(e).inside(e, 0, 0)).toBe(false);
-    expect(elementKind(e).step(e, st)).toBe(false);
+    expect(elementRecord(e).cpu.inside(e, 0, 0)).toBe(false);
+    expect(elementRecord(e).cpu.step(e, st)).toBe(false);
     expect(st).toEqual({ x: 0, y: 0, s: 1, depth: 0 });
-    expect(elementKind(e).boundaryDistance(e, 0, 0)).toBeCloseTo(5 / 3 - 4 / 3, 12);
+    expect(elementRecord(e).cpu.boundaryDistance(e, 0, 0)).toBeCloseTo(5 / 3 - 4 / 3, 12);
   });
 });

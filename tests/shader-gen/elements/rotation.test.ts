@@ -3,7 +3,7 @@ import { describe, expect, it } from 'vitest';
 import type { RotationElement } from '../../../nodes/core/scene.ts';
 import type { Vec2 } from '../../../nodes/core/values.ts';
 import { add, rotate, sub } from '../../../nodes/geometry/vec.ts';
-import { elementKind } from '../../../shader-gen/elements/index.ts';
+import { elementRecord } from '../../../shader-gen/elements/index.ts';
 import { foldStepwise, foldWithKind, nearInteger } from './fold-support.ts';
 
 const SEED = { seed: 42, numRuns: 400 } as const;
@@ -55,7 +55,7 @@ describe('rotation (closed form)', () => {
 
   it('keeps the wedge from b1 counter-clockwise by 2π/k; the centre is in the tile', () => {
     const e: RotationElement = { kind: 'rotation', nodeId: 'n', c: [1, 1], b1: [0, 1], order: 4 };
-    const k = elementKind(e);
+    const k = elementRecord(e).cpu;
     expect(k.inside(e, 0.5, 1.5)).toBe(false); // arg 45° from b1 (up): inside the 90° wedge
     expect(k.inside(e, 1.5, 1.5)).toBe(true); // clockwise of b1: the last wedge
     expect(k.inside(e, 1, 1)).toBe(false);

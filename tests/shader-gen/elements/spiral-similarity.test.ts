@@ -4,7 +4,7 @@ import type { SpiralSimilarityElement } from '../../../nodes/core/scene.ts';
 import type { Circle, Vec2 } from '../../../nodes/core/values.ts';
 import { invertPoint, reflectPoint } from '../../../nodes/geometry/circle.ts';
 import { dist } from '../../../nodes/geometry/vec.ts';
-import { elementKind } from '../../../shader-gen/elements/index.ts';
+import { elementRecord } from '../../../shader-gen/elements/index.ts';
 import { interpret } from '../../../shader-gen/interpret.ts';
 import { foldStepwise, foldWithKind, nearInteger } from './fold-support.ts';
 
@@ -81,7 +81,7 @@ describe('spiral similarity (closed form)', () => {
       r2: 2,
       angle: 0,
     };
-    const k = elementKind(e);
+    const k = elementRecord(e).cpu;
     expect(k.inside(e, 1, 0)).toBe(false);
     expect(k.inside(e, 3.99, 0)).toBe(false);
     expect(k.inside(e, 4, 0)).toBe(true);

@@ -9,7 +9,7 @@ import type {
 import type { Vec2 } from '../../../nodes/core/values.ts';
 import { reflectPoint } from '../../../nodes/geometry/circle.ts';
 import { add, dot, perp, scale, sub } from '../../../nodes/geometry/vec.ts';
-import { elementKind } from '../../../shader-gen/elements/index.ts';
+import { elementRecord } from '../../../shader-gen/elements/index.ts';
 import { foldStepwise, foldWithKind, nearInteger } from './fold-support.ts';
 
 const SEED = { seed: 42, numRuns: 400 } as const;
@@ -74,7 +74,7 @@ for (const kind of ['translation', 'parallel-mirrors', 'glide-reflection'] as co
 
     it('inside is exactly "step would apply", and the tile is half-open 0 ≤ h < D', () => {
       const e = element({ q: [0, 0], n: [1, 0], period: 1 });
-      const k = elementKind(e);
+      const k = elementRecord(e).cpu;
       expect(k.inside(e, 0, 5)).toBe(false); // on the first edge: in the tile
       expect(k.inside(e, 1, 5)).toBe(true); // on the second edge: the next tile
       expect(k.inside(e, -1e-9, 0)).toBe(true);

@@ -1,4 +1,7 @@
-/** structureKey and the tile options: what changes the code changes the key, values never do. */
+/**
+ * The tile options and the program's identity (its source text, which the runtime caches programs
+ * by): what changes the code changes the source, values never do.
+ */
 import { describe, expect, it } from 'vitest';
 import type { Scene, SeedSpec, TileSpec } from '../../nodes/core/scene.ts';
 import { BUILTIN_PICTURE } from '../../nodes/core/values.ts';
@@ -10,11 +13,11 @@ const withTile = (tile: Partial<TileSpec>, scene: Scene = base): Scene => ({
   ...scene,
   tile: { ...scene.tile, ...tile },
 });
-const key = (s: Scene) => compile(s).structureKey;
+const source = (s: Scene) => compile(s).source;
 const other = (seed: SeedSpec, src: string): SeedSpec =>
   seed.kind === 'image' ? { ...seed, image: { ...seed.image, src } } : seed;
 
-describe('structureKey: tile options', () => {
+describe('program identity: tile options', () => {
   it('changes with fill, seed kinds/count, seeds only, inner area, limit glow, picture sharing', () => {
     const variants: Scene[] = [
       base,
@@ -30,8 +33,8 @@ describe('structureKey: tile options', () => {
       withTile({ seeds: [SEED_PICTURE, SEED_PICTURE] }),
       withTile({ seeds: [SEED_PICTURE, other(SEED_PICTURE, 'data:image/png;base64,AA')] }),
     ];
-    const keys = variants.map(key);
-    expect(new Set(keys).size).toBe(keys.length);
+    const sources = variants.map(source);
+    expect(new Set(sources).size).toBe(sources.length);
   });
 
   it('stays when only values move: seed place and colour, fill colour, inner circle, glow width, the picture itself', () => {
@@ -44,19 +47,21 @@ describe('structureKey: tile options', () => {
       ],
       inner: { c: [1, 0], r: 0.4 },
     });
-    expect(key(b)).toBe(key(a));
-    expect(compile(b).source).toBe(compile(a).source);
+    expect(source(b)).toBe(source(a));
     expect(compile(b).pictures).toEqual(['data:image/png;base64,BB']);
     const glow = (g: number) => withTile({ coloring: { mode: 'limit-set', glow: g } });
-    expect(key(glow(1))).toBe(key(glow(7)));
+    expect(source(glow(1))).toBe(source(glow(7)));
   });
 
-  it('the baked program hashes a picture by its size, not its (long) data', () => {
+  it('a baked program holds a picture by its sampler, not its (long) data', () => {
     const pic = (src: string) =>
       withTile({
         coloring: { mode: 'image', image: { ...BUILTIN_PICTURE, src }, center: [0, 0], size: 1, rotation: 0 },
       });
-    const baked = (s: Scene) => compile(s, { baked: true }).structureKey;
-    expect(baked(pic('data:image/png;base64,AA'))).toBe(baked(pic('data:image/png;base64,BB')));
+    const baked = (s: Scene) => compile(s, { baked: true });
+    const [a, b] = [baked(pic('data:image/png;base64,AA')), baked(pic('data:image/png;base64,BB'))];
+    expect(b.source).toBe(a.source);
+    expect(b.source).not.toContain('base64');
+    expect([a.pictures, b.pictures]).toEqual([['data:image/png;base64,AA'], ['data:image/png;base64,BB']]);
   });
 });

@@ -1,6 +1,6 @@
 /**
  * GLSL helper for the closed-form turning kinds (rotation, spiral similarity): the n-th power of a
- * complex multiplier by square-and-multiply. The CPU twins call cos/sin/pow of the folded angle in
+ * complex multiplier by square-and-multiply. The CPU halves call cos/sin/pow of the folded angle in
  * float64; on GPUs those built-ins are approximate (errors near 1e-4 measured in SwiftShader), so
  * the GPU turns by m steps with only + − × on the packed one-step multiplier (cos, sin computed on
  * the CPU): an error of a few float32 ulps per multiplication, O(log m) of them.

@@ -2,7 +2,7 @@
  * The resolve pass: turns an accumulation buffer into straight-alpha sRGB for the canvas or an
  * 8-bit readback. The buffer holds A = (Σ rgb·a, Σ a) over n samples (`sum` mode) or the running
  * mean of (rgb, a) (`mean` mode, where we pass n = 1); either way colour = A.rgb / A.a and
- * alpha = A.a / n. sRGB encoding (shader-gen/colour.ts linearToSrgb):
+ * alpha = A.a / n. sRGB encoding (shader-gen/srgb.ts linearToSrgb):
  * c ≤ 0.0031308 ? 12.92c : 1.055c^(1/2.4) − 0.055.
  */
 import { toSrgbGlsl } from '../../shader-gen/glsl/colour.glsl.ts';

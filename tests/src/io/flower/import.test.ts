@@ -1,7 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import type { TileSpec } from '../../../../nodes/core/scene.ts';
-import { type DepthColoring, depthColour, hsvToRgb, toLinear } from '../../../../shader-gen/colour.ts';
+import { type DepthColoring, depthColour, hsvToRgb } from '../../../../shader-gen/colour.ts';
 import { sampleColour, sampleContext } from '../../../../shader-gen/raster.ts';
+import { toLinear } from '../../../../shader-gen/srgb.ts';
 import { FLOWER_RENDER, importFlower, isFlowerDocument } from '../../../../src/io/flower/import.ts';
 import { fedge, fnode, fpoint, graph, lineMirror } from './support/flower-fixture.ts';
 import { imported, messages } from './support/imported.ts';

@@ -7,7 +7,14 @@ import { existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 
 /** Bench modules, relative to this file. Add a line to add a bench. */
-const BENCHES = ['./cpu.ts', './gpu.ts', './shader-ratio.ts', './scale.ts', './editor.ts'] as const;
+const BENCHES = [
+  './cpu.ts',
+  './gpu.ts',
+  './shader-ratio.ts',
+  './colour-ratio.ts',
+  './scale.ts',
+  './editor.ts',
+] as const;
 
 async function main(): Promise<void> {
   for (const rel of BENCHES) {

@@ -11,7 +11,7 @@ import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { compile, shadertoySource } from '../../shader-gen/compile.ts';
 import { rasterize } from '../../shader-gen/raster.ts';
 import { pixelToWorld } from '../../shader-gen/view.ts';
-import { HAND_WRITTEN } from '../bench/hand-written/index.ts';
+import { HAND_WRITTEN, withDefines } from '../bench/hand-written/index.ts';
 import { shadertoyWrapper } from '../shader-gen/support/glslang.ts';
 import { HAND_MADE_SCENES } from '../shader-gen/support/scenes.ts';
 import { exampleNames, loadExample, sceneOf } from '../support/examples.ts';
@@ -201,6 +201,22 @@ describe('hand-written bench shaders draw the same picture as the generated ones
         expect(vsCpu.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
       });
     }
+  }
+});
+
+describe('hand-written colour shaders draw the generated picture (the colour bench compares their speed)', () => {
+  for (const shader of HAND_WRITTEN.filter((h) => h.colour)) {
+    it(`${shader.example}: the baked colour program's pixels, to the float`, async () => {
+      const { scene } = loadExample(shader.example);
+      const baked = compile(scene, { baked: true });
+      const generated = await gpu.render(await gpu.program(baked.vertexSource, baked.source), [], scene.view);
+      const index = await gpu.program(baked.vertexSource, withDefines(shader.source, 'COLOUR'));
+      const hand = await gpu.render(index, [], scene.view);
+      let worst = 0;
+      for (let i = 0; i < hand.data.length; i++)
+        worst = Math.max(worst, Math.abs(hand.data[i] - generated.data[i]));
+      expect(worst).toBeLessThan(1e-6);
+    });
   }
 });
 

@@ -15,6 +15,17 @@ export interface HandWrittenShader {
   readonly source: string;
   /** The same shader reading the scene's values from compile()'s uniforms (`u_el`, `u_maxIterations`). */
   readonly uniformSource: string;
+  /**
+   * Whether `source` also draws the example's picture (`#ifdef COLOUR`, see withDefines): then
+   * the bench compares the generated colour programs with it.
+   */
+  readonly colour?: boolean;
+}
+
+/** `source` with `#define NAME` lines after its `#version` line (COLOUR, SRGB_OUTPUT). */
+export function withDefines(source: string, ...names: string[]): string {
+  const [version, ...rest] = source.split('\n');
+  return [version, ...names.map((n) => `#define ${n}`), ...rest].join('\n');
 }
 
 const read = (file: string) => readFileSync(new URL(`./${file}`, import.meta.url), 'utf8');
@@ -24,6 +35,7 @@ export const HAND_WRITTEN: readonly HandWrittenShader[] = [
     example: 'hyperbolic-237',
     source: read('hyperbolic-237.frag'),
     uniformSource: read('hyperbolic-237.uniform.frag'),
+    colour: true,
   },
   {
     example: 'apollonian-gasket',

@@ -1,6 +1,7 @@
 /**
  * The layering of architecture.md: src → shader-gen → nodes, and nodes/ + shader-gen/ free of React,
- * the DOM and WebGL (they also run in the CLI and in workers). Scans the source files' imports.
+ * the DOM and WebGL (they also run in the CLI and in workers); shader-gen/'s modules free of import
+ * circles. Scans the source files' imports.
  */
 import { readdirSync, readFileSync, statSync } from 'node:fs';
 import { dirname, join, relative, resolve } from 'node:path';
@@ -141,5 +142,58 @@ describe('layers (src → shader-gen → nodes)', () => {
           expect(['src', 'nodes', 'shader-gen', 'examples']).toContain(layerOf(file, spec));
       }
     }
+  });
+});
+
+/** The first circle in a graph of imports (file → files it imports), closing where it began; or null. */
+function firstCircle(deps: ReadonlyMap<string, readonly string[]>): string[] | null {
+  const done = new Set<string>();
+  const path: string[] = [];
+  const visit = (f: string): string[] | null => {
+    const at = path.indexOf(f);
+    if (at >= 0) return [...path.slice(at), f];
+    if (done.has(f)) return null;
+    path.push(f);
+    for (const d of deps.get(f) ?? []) {
+      const circle = visit(d);
+      if (circle) return circle;
+    }
+    path.pop();
+    done.add(f);
+    return null;
+  };
+  for (const f of deps.keys()) {
+    const circle = visit(f);
+    if (circle) return circle;
+  }
+  return null;
+}
+
+/** The imports among the files under `dir` (type imports included), paths from ROOT. */
+function importGraph(dir: string): Map<string, string[]> {
+  const files = new Set(filesUnder(join(ROOT, dir)));
+  return new Map(
+    [...files].map((f) => [
+      relative(ROOT, f),
+      importsOf(readFileSync(f, 'utf8'))
+        .filter((spec) => spec.startsWith('.'))
+        .map((spec) => resolve(dirname(f), spec))
+        .filter((target) => files.has(target))
+        .map((target) => relative(ROOT, target)),
+    ]),
+  );
+}
+
+describe('import circles', () => {
+  it('the search finds a circle, and only where there is one', () => {
+    const graph = (edges: Record<string, string[]>) => new Map(Object.entries(edges));
+    expect(firstCircle(graph({ a: ['b'], b: ['c'], c: ['a'] }))).toEqual(['a', 'b', 'c', 'a']);
+    expect(firstCircle(graph({ a: ['b', 'c'], b: ['c'], c: [] }))).toBeNull();
+  });
+
+  it('shader-gen/ has none (the sRGB helpers live in srgb.ts, used by colour, picture and seeds)', () => {
+    const graph = importGraph('shader-gen');
+    expect(graph.get('shader-gen/colour.ts')).toContain('shader-gen/srgb.ts');
+    expect(firstCircle(graph)).toBeNull();
   });
 });

@@ -3,8 +3,10 @@
  * would write for that one scene — once with its values as constants (no generality: the physical
  * limit, compared with the baked program) and once with them as uniforms in compile()'s `u_el`
  * layout (what a shader must do if a drag is not to recompile it: compared like for like with the
- * uniform program). The bench compares the generated programs' speed with these; tests/parity
- * checks that they compute the same picture.
+ * uniform program). A constants shader may also draw the example's picture (`colour`): the
+ * colour bench (colour-ratio.ts) measures the generated colour pipeline against it. The bench
+ * compares the generated programs' speed with these; tests/parity checks that they compute the
+ * same picture.
  */
 import { readFileSync } from 'node:fs';
 

@@ -5,6 +5,7 @@
  */
 import type { Diagnostic } from '../../../../nodes/core/diagnostics.ts';
 import type { Scene, View } from '../../../../nodes/core/scene.ts';
+import { Renderer } from '../../../../src/viewport/renderer.ts';
 import { attachPanZoom, type RenderToPixelsOptions, Viewport } from '../../../../src/viewport/viewport.ts';
 
 function toBase64(a: Uint8ClampedArray | null): string | null {
@@ -119,6 +120,23 @@ const harness = {
     return new Promise((resolve) => {
       capture = resolve;
     });
+  },
+  /**
+   * Linear values `linear` (one opaque pixel each, as one accumulated sample) resolved by the
+   * renderer into its 8-bit sRGB readback target: the bytes of each pixel's red channel.
+   */
+  resolveLinear(linear: number[]): number[] {
+    const gl = document.createElement('canvas').getContext('webgl2') as WebGL2RenderingContext;
+    const r = new Renderer(gl);
+    const { accum, readback } = r.createTargets(linear.length, 1);
+    if (accum.mode !== 'sum') throw new Error('this check needs a float accumulation target');
+    const data = new Float32Array(linear.flatMap((v) => [v, v, v, 1]));
+    gl.bindTexture(gl.TEXTURE_2D, accum.texture);
+    gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, linear.length, 1, gl.RGBA, gl.FLOAT, data);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    const px = r.readResolved(accum, 1, readback, linear.length, 1);
+    r.dispose();
+    return linear.map((_, i) => px[i * 4]);
   },
   /** Whether the canvas's drawing buffer is SRGB8_ALPHA8 (src/viewport/srgb-canvas.ts). */
   canvasIsSrgb(): boolean {

@@ -7,16 +7,7 @@ import type { Color } from '../nodes/core/values.ts';
 import { type PictureMap, resolvePicture, samplePicture } from './picture.ts';
 import { placeUv, rotationPair } from './placement.ts';
 import { seedColour } from './seeds.ts';
-
-export type Rgb = [number, number, number];
-
-/** sRGB transfer function, decoding: c ≤ 0.04045 ? c/12.92 : ((c+0.055)/1.055)^2.4. */
-export const srgbToLinear = (c: number): number => (c <= 0.04045 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4);
-/** sRGB transfer function, encoding: c ≤ 0.0031308 ? 12.92c : 1.055 c^(1/2.4) − 0.055. */
-export const linearToSrgb = (c: number): number =>
-  c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055;
-
-export const toLinear = (c: Color): Rgb => [srgbToLinear(c[0]), srgbToLinear(c[1]), srgbToLinear(c[2])];
+import { type Rgb, toLinear } from './srgb.ts';
 
 const clamp01 = (v: number) => Math.min(1, Math.max(0, v));
 const fract = (v: number) => v - Math.floor(v);

@@ -4,7 +4,7 @@
  * the GPU (texels decoded to linear, then filtered). The GLSL side is `textureLod(u_imageN, uv, 0)`.
  */
 import { BUILTIN_PICTURE } from '../nodes/core/values.ts';
-import { type Rgb, srgbToLinear } from './colour.ts';
+import { type Rgb, srgbToLinear } from './srgb.ts';
 
 /** Decoded pixels: RGBA, 8-bit sRGB, row 0 at the top (PNG order; also the texture's v = 0). */
 export interface DecodedPicture {

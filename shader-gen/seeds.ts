@@ -4,9 +4,9 @@
  * one block per seed, with the same tests.
  */
 import type { SeedSpec } from '../nodes/core/scene.ts';
-import { type Rgb, toLinear } from './colour.ts';
 import { type PictureMap, resolvePicture, samplePicture } from './picture.ts';
 import { placeUv, rotationPair } from './placement.ts';
+import { type Rgb, toLinear } from './srgb.ts';
 
 /** Disk seed: |p − c|² < r² (strict, like every inside test). */
 export const seedDiskInside = (c: readonly [number, number], r: number, x: number, y: number): boolean =>

@@ -2,14 +2,49 @@
  * GLSL twin of shader-gen/colour.ts, function by function (same names, same formulas). The fixed
  * functions are constants; depthColour and shade read the tile's values (uniforms or literals)
  * and are specialised to its colouring mode and to edges on/off.
+ *
+ * Speed: the tile's colours are constants of the scene, so they are decoded to linear light here,
+ * in TypeScript (srgb.ts), and reach the shader already linear — as literals when baked, as
+ * uniforms holding the linear value otherwise. Only colours computed per pixel (HSV and cosine
+ * palettes) are decoded on the GPU. Where nothing is blended (one sample, no edges, glow, fade or
+ * picture: see `shadesWithoutBlending`) shade can work in sRGB throughout and the output needs no
+ * encoding at all (`ColourSpace`).
  */
 import type { Coloring, TileSpec } from '../../nodes/core/scene.ts';
+import type { Color } from '../../nodes/core/values.ts';
 import type { DepthColoring } from '../colour.ts';
 import { rotationPair } from '../placement.ts';
+import { toLinear } from '../srgb.ts';
 import { floatLiteral } from './literal.ts';
 import { placeUvGlsl } from './placement.glsl.ts';
 import { type GlslFunction, glslFunction } from './snippet.ts';
 import type { SceneValues } from './values.ts';
+
+/**
+ * The space shade's colours are in: `linear` (what accumulation and blending need) or `srgb` (the
+ * output as is, when a single sample is shaded without blending).
+ */
+export type ColourSpace = 'linear' | 'srgb';
+
+/**
+ * A tile colour (sRGB, as documents store it) as a shader value in `space`: decoded to linear
+ * light at generation time (srgb.ts toLinear), never per pixel.
+ */
+export function colourValue(v: SceneValues, name: string, c: Color, space: ColourSpace): string {
+  return v.vec(name, space === 'linear' ? toLinear(c) : c);
+}
+
+/**
+ * Whether every colour shade returns is one of the tile's colours or a depth colour as it is, with
+ * nothing mixed, faded or sampled: then sRGB in is sRGB out and one sample needs no conversion.
+ */
+export function shadesWithoutBlending(tile: TileSpec): boolean {
+  const mode = tile.coloring.mode;
+  const seeds = tile.seeds ?? [];
+  if (seeds.length > 0 && (tile.seedFade || seeds.some((s) => s.kind !== 'disk'))) return false;
+  if (tile.seedsOnly) return true;
+  return tile.edgeWidth <= 0 && mode !== 'limit-set' && mode !== 'image';
+}
 
 export const srgbToLinearGlsl = glslFunction(
   'srgbToLinear',
@@ -65,8 +100,14 @@ vec3 cosinePalette(vec3 a, vec3 b, vec3 c, vec3 d, float t) {
 }`,
 );
 
-/** `vec3 depthColour(int depth)`: the sRGB colour of an escaped point, for the tile's mode. */
-export function depthColourGlsl(coloring: DepthColoring, v: SceneValues): GlslFunction {
+/**
+ * `vec3 depthColour(int depth)`: the sRGB colour of an escaped point, for the palette modes (a
+ * parity tile's two colours are constants, see finalColourGlsl).
+ */
+export function depthColourGlsl(
+  coloring: Exclude<DepthColoring, { mode: 'parity' }>,
+  v: SceneValues,
+): GlslFunction {
   const head = 'vec3 depthColour(int depth) {';
   switch (coloring.mode) {
     case 'depth-hsv': {
@@ -88,30 +129,35 @@ export function depthColourGlsl(coloring: DepthColoring, v: SceneValues): GlslFu
         [cosinePaletteGlsl],
       );
     }
-    case 'parity': {
-      const even = v.vec('u_even', coloring.even);
-      const odd = v.vec('u_odd', coloring.odd);
-      return glslFunction('depthColour', `${head}\n  return depth % 2 == 0 ? ${even} : ${odd};\n}`);
-    }
   }
 }
 
 /**
- * `vec3 finalColour(int depth, vec2 p)`: linear colour of an escaped point (colour.ts
- * finalColour): the picture's texel at p in image mode (u_picture = (c.x, c.y, w, h),
- * u_pictureRot = (cos θ, sin θ)), else the depth colour.
+ * `vec3 finalColour(int depth, vec2 p)`: colour of an escaped point in `space` (colour.ts
+ * finalColour): the picture's texel at p in image mode (linear only; u_picture = (c.x, c.y, w, h),
+ * u_pictureRot = (cos θ, sin θ)), the parity colours (constants), else the palette's depth colour.
  */
 export function finalColourGlsl(
   coloring: Exclude<Coloring, { mode: 'limit-set' }>,
   v: SceneValues,
+  space: ColourSpace,
 ): GlslFunction {
   const head = 'vec3 finalColour(int depth, vec2 p) {';
+  if (coloring.mode === 'parity') {
+    const even = colourValue(v, 'u_even', coloring.even, space);
+    const odd = colourValue(v, 'u_odd', coloring.odd, space);
+    return glslFunction('finalColour', `${head}\n  return depth % 2 == 0 ? ${even} : ${odd};\n}`);
+  }
   if (coloring.mode !== 'image') {
+    const depth = depthColourGlsl(coloring, v);
+    if (space === 'srgb')
+      return glslFunction('finalColour', `${head}\n  return depthColour(depth);\n}`, [depth]);
     return glslFunction('finalColour', `${head}\n  return toLinear(depthColour(depth));\n}`, [
       toLinearGlsl,
-      depthColourGlsl(coloring, v),
+      depth,
     ]);
   }
+  if (space === 'srgb') throw new Error('a picture is sampled in linear light (shadesWithoutBlending)');
   const { image, center, size, rotation } = coloring;
   const rect = v.vec('u_picture', [center[0], center[1], (size * image.width) / image.height, size]);
   const rot = v.vec('u_pictureRot', rotationPair(rotation));
@@ -125,18 +171,25 @@ export function finalColourGlsl(
 
 /**
  * `vec3 shade(bool clipped, bool escaped, int depth, float edgePixels, vec2 p, float limitPixels,
- * int seed)`: linear colour of one sample, in colour.ts shade's order (clip,
- * seed, seeds only, limit-set mode, limit, inner circle, fill, mode colour, edges); each option
- * is emitted only when the tile uses it. Edges have a 1-pixel antialiased falloff,
- * t = clamp(edgePixels − width/2 + 0.5, 0, 1).
+ * int seed)`: colour of one sample in `space` (linear unless shadesWithoutBlending), in colour.ts
+ * shade's order (clip, seed, seeds only, limit-set mode, limit, inner circle, fill, mode colour,
+ * edges); each option is emitted only when the tile uses it. Edges have a 1-pixel antialiased
+ * falloff, t = clamp(edgePixels − width/2 + 0.5, 0, 1).
  */
-export function shadeGlsl(tile: TileSpec, v: SceneValues, seedColour: GlslFunction | null): GlslFunction {
-  const background = v.vec('u_background', tile.background);
-  const limit = v.vec('u_limitColor', tile.limitColor);
-  const deps: GlslFunction[] = [toLinearGlsl];
+export function shadeGlsl(
+  tile: TileSpec,
+  v: SceneValues,
+  seedColour: GlslFunction | null,
+  space: ColourSpace = 'linear',
+): GlslFunction {
+  if (space === 'srgb' && !shadesWithoutBlending(tile))
+    throw new Error('this tile blends: shade it in linear light');
+  const background = colourValue(v, 'u_background', tile.background, space);
+  const limit = colourValue(v, 'u_limitColor', tile.limitColor, space);
+  const deps: GlslFunction[] = [];
   const lines = [
     'vec3 shade(bool clipped, bool escaped, int depth, float edgePixels, vec2 p, float limitPixels, int seed) {',
-    `  if (clipped) return toLinear(${background});`,
+    `  if (clipped) return ${background};`,
   ];
   if (seedColour) {
     if (tile.seedFade) {
@@ -145,42 +198,35 @@ export function shadeGlsl(tile: TileSpec, v: SceneValues, seedColour: GlslFuncti
     } else lines.push('  if (seed >= 0) return seedColour(seed, p);');
     deps.push(seedColour);
   }
-  if (tile.seedsOnly) lines.push(`  return toLinear(${background});`, '}');
+  if (tile.seedsOnly) lines.push(`  return ${background};`, '}');
   else if (tile.coloring.mode === 'limit-set') {
-    lines.push(
-      `  if (!escaped) return toLinear(${limit});`,
-      '  float line = clamp(1.0 - limitPixels, 0.0, 1.0);',
-    );
+    lines.push(`  if (!escaped) return ${limit};`, '  float line = clamp(1.0 - limitPixels, 0.0, 1.0);');
     if (tile.coloring.glow > 0) {
       const glow = v.float('u_glow', tile.coloring.glow);
       lines.push(`  float glow = exp(-limitPixels / ${glow});`);
     } else lines.push('  float glow = 0.0;');
-    lines.push(
-      `  vec3 bg = toLinear(${background});`,
-      `  return bg + (toLinear(${limit}) - bg) * max(line, glow);`,
-      '}',
-    );
+    lines.push(`  vec3 bg = ${background};`, `  return bg + (${limit} - bg) * max(line, glow);`, '}');
   } else {
-    lines.push(`  if (!escaped) return toLinear(${limit});`);
+    lines.push(`  if (!escaped) return ${limit};`);
     if (tile.inner) {
       const inner = v.vec('u_inner', [tile.inner.c[0], tile.inner.c[1], tile.inner.r]);
       lines.push(
         `  vec3 inner = ${inner};`,
         '  if ((p.x - inner.x) * (p.x - inner.x) + (p.y - inner.y) * (p.y - inner.y) >= inner.z * inner.z)',
-        `    return toLinear(${background});`,
+        `    return ${background};`,
       );
     }
-    deps.push(finalColourGlsl(tile.coloring, v));
+    deps.push(finalColourGlsl(tile.coloring, v, space));
     if (tile.fill) {
-      const fill = v.vec('u_fill', tile.fill);
-      lines.push(`  vec3 base = depth == 0 ? toLinear(${fill}) : finalColour(depth, p);`);
+      const fill = colourValue(v, 'u_fill', tile.fill, space);
+      lines.push(`  vec3 base = depth == 0 ? ${fill} : finalColour(depth, p);`);
     } else lines.push('  vec3 base = finalColour(depth, p);');
     if (tile.edgeWidth > 0) {
       const width = v.float('u_edgeWidth', tile.edgeWidth);
-      const colour = v.vec('u_edgeColor', tile.edgeColor);
+      const colour = colourValue(v, 'u_edgeColor', tile.edgeColor, space);
       lines.push(
         `  float t = clamp(edgePixels - ${width} / 2.0 + 0.5, 0.0, 1.0);`,
-        `  vec3 edge = toLinear(${colour});`,
+        `  vec3 edge = ${colour};`,
         '  return edge + (base - edge) * t;',
       );
     } else lines.push('  return base;');

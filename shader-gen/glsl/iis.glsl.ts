@@ -11,7 +11,7 @@ import type { Scene, SceneElement } from '../../nodes/core/scene.ts';
 import type { ElementRecord } from '../elements/element-kind.ts';
 import { elementRecord } from '../elements/index.ts';
 import { farDisk, limitReach } from '../far-disk.ts';
-import { shadeGlsl } from './colour.glsl.ts';
+import { type ColourSpace, shadeGlsl } from './colour.glsl.ts';
 import type { SeedArg, SeedsGlsl } from './seeds.glsl.ts';
 import { type GlslFunction, glslFunction } from './snippet.ts';
 import type { SourceBuilder } from './source.ts';
@@ -152,10 +152,15 @@ float farDistance(vec2 p, vec3 far) {
 /**
  * `vec4 shadeSample(vec2 w, float pixelWorld, float bgAlpha)`: raster.ts's per-sample body —
  * clip test, IIS run (stopping at seeds), edge distance in pixels (max(d, far distance) / s /
- * pixelWorld), shade; alpha is bgAlpha on the background outside the clip disk, else 1. Returns
- * shade's dependencies for the assembler.
+ * pixelWorld), shade (its colour in `space`); alpha is bgAlpha on the background outside the clip
+ * disk, else 1. Returns shade's dependencies for the assembler.
  */
-export function shadeSampleGlsl(scene: Scene, v: SceneValues, seeds: SeedsGlsl | null): GlslFunction {
+export function shadeSampleGlsl(
+  scene: Scene,
+  v: SceneValues,
+  seeds: SeedsGlsl | null,
+  space: ColourSpace = 'linear',
+): GlslFunction {
   const limitSet = scene.tile.coloring.mode === 'limit-set';
   const edges = needsEdgeDistance(scene);
   const lines = ['vec4 shadeSample(vec2 w, float pixelWorld, float bgAlpha) {'];
@@ -198,6 +203,6 @@ export function shadeSampleGlsl(scene: Scene, v: SceneValues, seeds: SeedsGlsl |
   return glslFunction('shadeSample', lines.join('\n'), [
     ...deps,
     ...(seeds ? [seeds.seedAt] : []),
-    shadeGlsl(scene.tile, v, seeds?.seedColour ?? null),
+    shadeGlsl(scene.tile, v, seeds?.seedColour ?? null, space),
   ]);
 }

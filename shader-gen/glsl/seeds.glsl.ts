@@ -6,7 +6,7 @@
  */
 import type { SeedSpec } from '../../nodes/core/scene.ts';
 import { rotationPair } from '../placement.ts';
-import { toLinearGlsl } from './colour.glsl.ts';
+import { type ColourSpace, colourValue } from './colour.glsl.ts';
 import { placeUvGlsl } from './placement.glsl.ts';
 import { type GlslFunction, glslFunction } from './snippet.ts';
 import type { SceneValues } from './values.ts';
@@ -38,7 +38,12 @@ export interface SeedsGlsl {
   readonly seedColour: GlslFunction;
 }
 
-export function seedsGlsl(seeds: readonly SeedSpec[], v: SceneValues): SeedsGlsl {
+/** `space`: the space seedColour returns (shade's, see colour.glsl.ts ColourSpace). */
+export function seedsGlsl(
+  seeds: readonly SeedSpec[],
+  v: SceneValues,
+  space: ColourSpace = 'linear',
+): SeedsGlsl {
   const args: SeedArg[] = [];
   /** Adds a seedAt parameter for `expr`; returns the parameter's name. */
   const param = (type: SeedArg['type'], expr: string) => {
@@ -50,9 +55,9 @@ export function seedsGlsl(seeds: readonly SeedSpec[], v: SceneValues): SeedsGlsl
   seeds.forEach((seed, i) => {
     if (seed.kind === 'disk') {
       const d = v.vec(`u_seed${i}`, [seed.c[0], seed.c[1], seed.r, 0]);
-      const c = v.vec(`u_seedColor${i}`, seed.color);
+      const c = colourValue(v, `u_seedColor${i}`, seed.color, space);
       at.push(`  if (seedDiskInside(p, ${param('vec4', d)})) return ${i};`);
-      colour.push(`  if (seed == ${i}) return toLinear(${c});`);
+      colour.push(`  if (seed == ${i}) return ${c};`);
     } else {
       const rect = v.vec(`u_seed${i}`, [seed.center[0], seed.center[1], seed.width, seed.height]);
       const rot = v.vec(`u_seedRot${i}`, rotationPair(seed.rotation));
@@ -72,6 +77,6 @@ export function seedsGlsl(seeds: readonly SeedSpec[], v: SceneValues): SeedsGlsl
   return {
     seedAt: glslFunction('seedAt', at.join('\n'), [seedDiskInsideGlsl, placeUvGlsl]),
     seedAtArgs: args,
-    seedColour: glslFunction('seedColour', colour.join('\n'), [toLinearGlsl, placeUvGlsl]),
+    seedColour: glslFunction('seedColour', colour.join('\n'), [placeUvGlsl]),
   };
 }

@@ -4,7 +4,7 @@
  * (colour or probe) or `mainImage` for Shadertoy.
  */
 import type { Scene } from '../../nodes/core/scene.ts';
-import { toSrgbGlsl } from './colour.glsl.ts';
+import { type ColourSpace, shadesWithoutBlending, toSrgbGlsl } from './colour.glsl.ts';
 import {
   elementFunctions,
   emitBoundaryDistance,
@@ -55,15 +55,15 @@ export interface EmittedShader {
   readonly pictures: string[];
 }
 
-/** The scene-dependent parts, with the uniforms they read registered in `v`. */
-function sceneParts(scene: Scene, v: SceneValues, withColour: boolean) {
+/** The scene-dependent parts, with the uniforms they read registered in `v`; colours in `space`. */
+function sceneParts(scene: Scene, v: SceneValues, withColour: boolean, space: ColourSpace = 'linear') {
   const placed = placeElements(scene.elements, v);
   const maxIter = v.int('u_maxIterations', scene.maxIterations);
   const edges = withColour && needsEdgeDistance(scene);
   // Seeds only colour: the probe variant is the pure IIS loop (what parity compares).
   const seedList = withColour ? (scene.tile.seeds ?? []) : [];
-  const seeds = seedList.length > 0 ? seedsGlsl(seedList, v) : null;
-  const shadeSample = withColour ? shadeSampleGlsl(scene, v, seeds) : null;
+  const seeds = seedList.length > 0 ? seedsGlsl(seedList, v, space) : null;
+  const shadeSample = withColour ? shadeSampleGlsl(scene, v, seeds, space) : null;
   const lineMap: Record<number, string> = {};
   scene.elements.forEach((e, i) => {
     lineMap[i + 1] = e.nodeId;
@@ -139,14 +139,16 @@ export function fragmentShader(scene: Scene, variant: Variant, baked: boolean): 
 /**
  * Shadertoy's `mainImage` (no #version, no uniforms: Shadertoy supplies iResolution): every value
  * baked, the view of the graph, `samples` jittered samples per pixel averaged in linear light and
- * encoded to sRGB. The image is a still: iTime is not used.
+ * encoded to sRGB. One sample of a tile that blends nothing (shadesWithoutBlending) is shaded in
+ * sRGB and written as it is: no conversion at all. The image is a still: iTime is not used.
  */
 export function shadertoyShader(scene: Scene): string {
+  const count = Math.max(1, Math.round(scene.samples));
+  const direct = count === 1 && shadesWithoutBlending(scene.tile);
   const v = new SceneValues(true);
-  const { emitBody, pictures } = sceneParts(scene, v, true);
+  const { emitBody, pictures } = sceneParts(scene, v, true, direct ? 'srgb' : 'linear');
   const [cx, cy] = scene.view.center;
   const view = `vec3(${[cx, cy, scene.view.scale].map(floatLiteral).join(', ')})`;
-  const samples = intLiteral(Math.max(1, Math.round(scene.samples)));
   const out = new SourceBuilder(false).push(
     '// Kleinflow: an Iterated Inversion System, generated from a node graph. Paste into Shadertoy.',
     '',
@@ -156,17 +158,32 @@ export function shadertoyShader(scene: Scene): string {
     out.push(`#define ${PICTURE_SAMPLER}${i} iChannel${i} // load ${describePicture(src)} there`);
   });
   if (pictures.length > 0) out.push('');
-  emitBody(out, [pixelToWorldGlsl, sampleOffsetGlsl, toSrgbGlsl]);
-  out.push(
+  const head = [
     'void mainImage(out vec4 fragColor, in vec2 fragCoord) {',
     `  vec3 view = ${view};`,
     '  vec2 px = floor(fragCoord);',
+  ];
+  if (count === 1) {
+    // One sample at the pixel centre (sampleOffset(0) = (0.5, 0.5)).
+    emitBody(out, direct ? [pixelToWorldGlsl] : [pixelToWorldGlsl, toSrgbGlsl]);
+    const colour = 'shadeSample(w, view.z / iResolution.y, 1.0).rgb';
+    out.push(
+      ...head,
+      '  vec2 w = pixelToWorld(view, iResolution.xy, px, vec2(0.5));',
+      `  fragColor = vec4(${direct ? colour : `toSrgb(${colour})`}, 1.0);`,
+      '}',
+    );
+    return out.toString();
+  }
+  emitBody(out, [pixelToWorldGlsl, sampleOffsetGlsl, toSrgbGlsl]);
+  out.push(
+    ...head,
     '  vec3 sum = vec3(0.0);',
-    `  for (int k = 0; k < ${samples}; ++k) {`,
+    `  for (int k = 0; k < ${intLiteral(count)}; ++k) {`,
     '    vec2 w = pixelToWorld(view, iResolution.xy, px, sampleOffset(k));',
     '    sum += shadeSample(w, view.z / iResolution.y, 1.0).rgb;',
     '  }',
-    `  fragColor = vec4(toSrgb(sum / ${floatLiteral(Math.max(1, Math.round(scene.samples)))}), 1.0);`,
+    `  fragColor = vec4(toSrgb(sum / ${floatLiteral(count)}), 1.0);`,
     '}',
   );
   return out.toString();

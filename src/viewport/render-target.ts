@@ -1,6 +1,7 @@
 /**
  * Offscreen render targets: a float accumulation buffer of the jittered samples (linear light)
- * and an 8-bit buffer to read a resolved picture back.
+ * and an 8-bit sRGB buffer (SRGB8_ALPHA8: it encodes linear light on write) to read a resolved
+ * picture back.
  */
 
 /**
@@ -19,7 +20,7 @@ export interface RenderTarget {
   readonly mode: AccumulationMode;
 }
 
-export type TargetKind = 'accumulation' | 'rgba8';
+export type TargetKind = 'accumulation' | 'srgb8';
 
 /**
  * The accumulation format: RGBA32F when float targets can be blended (EXT_float_blend), else
@@ -49,7 +50,7 @@ export function createTarget(
   const { internal, type, mode } =
     kind === 'accumulation'
       ? accumulationFormat(gl)
-      : { internal: gl.RGBA8, type: gl.UNSIGNED_BYTE, mode: 'mean' as const };
+      : { internal: gl.SRGB8_ALPHA8, type: gl.UNSIGNED_BYTE, mode: 'mean' as const };
   gl.bindTexture(gl.TEXTURE_2D, texture);
   gl.texImage2D(gl.TEXTURE_2D, 0, internal, width, height, 0, gl.RGBA, type, null);
   // texelFetch only: no filtering, no mipmaps.
@@ -74,7 +75,7 @@ export function disposeTarget(gl: WebGL2RenderingContext, t: RenderTarget | null
   gl.deleteTexture(t.texture);
 }
 
-/** Reads a width×height RGBA8 region of the bound read framebuffer, flipped to top-row-first. */
+/** Reads a width×height 8-bit RGBA region of the bound read framebuffer, flipped to top-row-first. */
 export function readTopRowFirst(
   gl: WebGL2RenderingContext,
   width: number,

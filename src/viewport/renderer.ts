@@ -9,6 +9,7 @@ import { PictureTextures } from './picture-textures.ts';
 import { ProgramCache } from './program-cache.ts';
 import { createTarget, type RenderTarget, readTopRowFirst } from './render-target.ts';
 import { ResolvePass } from './resolve-pass.ts';
+import { canvasEncodesSrgb } from './srgb-canvas.ts';
 import { type FrameParams, type GpuProgram, setFrameUniforms, uploadUniforms } from './uniforms.ts';
 
 export class Renderer {
@@ -80,12 +81,16 @@ export class Renderer {
     gl.disable(gl.BLEND);
   }
 
-  /** Resolves `samples` accumulated samples to sRGB on the canvas (its drawing buffer is width×height). */
+  /**
+   * Resolves `samples` accumulated samples to sRGB on the canvas (its drawing buffer is
+   * width×height; sRGB encoded by the buffer itself where srgb-canvas.ts got an sRGB one).
+   */
   present(target: RenderTarget, samples: number, width: number, height: number): void {
-    this.resolvePass.draw(target.texture, this.resolveCount(target, samples), null, width, height);
+    const count = this.resolveCount(target, samples);
+    this.resolvePass.draw(target.texture, count, null, width, height, canvasEncodesSrgb(this.gl));
   }
 
-  /** Resolves width×height of `target` into `scratch` (RGBA8) and reads it back, top row first. */
+  /** Resolves width×height of `target` into `scratch` (SRGB8_ALPHA8) and reads it back, top row first. */
   readResolved(
     target: RenderTarget,
     samples: number,
@@ -100,6 +105,7 @@ export class Renderer {
       scratch.framebuffer,
       width,
       height,
+      true,
     );
     gl.bindFramebuffer(gl.FRAMEBUFFER, scratch.framebuffer);
     const pixels = readTopRowFirst(gl, width, height);
@@ -111,11 +117,11 @@ export class Renderer {
     return target.mode === 'sum' ? samples : 1;
   }
 
-  /** A float accumulation target and its 8-bit readback twin. */
+  /** A float accumulation target and its 8-bit sRGB readback twin. */
   createTargets(width: number, height: number): { accum: RenderTarget; readback: RenderTarget } {
     return {
       accum: createTarget(this.gl, width, height, 'accumulation'),
-      readback: createTarget(this.gl, width, height, 'rgba8'),
+      readback: createTarget(this.gl, width, height, 'srgb8'),
     };
   }
 

@@ -11,13 +11,16 @@ import { sampleOffset } from '../../shader-gen/view.ts';
 import { createTarget, disposeTarget, type RenderTarget } from './render-target.ts';
 import { Renderer } from './renderer.ts';
 import { type SceneProgram, SceneProgramBuilder } from './scene-program.ts';
+import { requestSrgbDrawingBuffer } from './srgb-canvas.ts';
 import { renderTiled } from './tiled-render.ts';
 import type { RenderToPixelsOptions, ViewportOptions, ViewportStats } from './viewport-types.ts';
 
 export type { RenderToPixelsOptions, ViewportOptions, ViewportStats } from './viewport-types.ts';
 
 const CONTEXT_ATTRIBUTES: WebGLContextAttributes = {
-  alpha: false,
+  // An RGBA drawing buffer: only such a buffer can become SRGB8_ALPHA8 (srgb-canvas.ts). The
+  // picture stays opaque: on screen u_bgAlpha is 1, so every resolved pixel has alpha 1.
+  alpha: true,
   antialias: false,
   depth: false,
   stencil: false,
@@ -57,6 +60,7 @@ export class Viewport {
     const gl = canvas.getContext('webgl2', CONTEXT_ATTRIBUTES);
     if (!gl) throw new Error('WebGL2 is not available in this browser');
     this.gl = gl;
+    requestSrgbDrawingBuffer(gl, canvas.width, canvas.height);
     this.idleBakeMs = options.idleBakeMs ?? 600;
     this.renderer = new Renderer(gl, () => this.restart());
     this.programs = new SceneProgramBuilder((d) => options.onDiagnostics?.(d));
@@ -73,6 +77,7 @@ export class Viewport {
     const onRestored = () => {
       try {
         this.renderer = new Renderer(gl, () => this.restart());
+        requestSrgbDrawingBuffer(gl, canvas.width, canvas.height);
       } catch (e) {
         // Lost again while rebuilding: the next 'webglcontextrestored' tries once more.
         console.warn('[kleinflow] could not rebuild the WebGL renderer', e);
@@ -122,6 +127,7 @@ export class Viewport {
     const h = Math.max(1, Math.round(height * dpr));
     if (this.canvas.width !== w) this.canvas.width = w;
     if (this.canvas.height !== h) this.canvas.height = h;
+    requestSrgbDrawingBuffer(this.gl, w, h);
     this.canvas.style.width = `${width}px`;
     this.canvas.style.height = `${height}px`;
     this.restart();
@@ -157,7 +163,7 @@ export class Viewport {
     const r = this.renderer;
     if (!r || !this.accum || this.samplesDone === 0) return null;
     const { width, height } = this.accum;
-    const scratch = createTarget(r.gl, width, height, 'rgba8');
+    const scratch = createTarget(r.gl, width, height, 'srgb8');
     try {
       return r.readResolved(this.accum, this.samplesDone, scratch, width, height);
     } finally {

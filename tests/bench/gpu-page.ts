@@ -6,6 +6,7 @@
 import type { Scene } from '../../nodes/core/scene.ts';
 import { type CompileOptions, compile } from '../../shader-gen/compile.ts';
 import type { UniformEntry } from '../../shader-gen/glsl/values.ts';
+import { linearToSrgb } from '../../shader-gen/srgb.ts';
 import { sampleOffset } from '../../shader-gen/view.ts';
 import { bindProgram, buildProgram } from '../../src/viewport/gl-program.ts';
 import { createTarget } from '../../src/viewport/render-target.ts';
@@ -15,9 +16,9 @@ import {
   setFrameUniforms,
   uploadUniforms,
 } from '../../src/viewport/uniforms.ts';
-import { median } from './report.ts';
+import { FRAME_SIZE, median } from './report.ts';
 
-export const SIZE = 512;
+const SIZE = FRAME_SIZE;
 
 const canvas = document.querySelector('canvas') as HTMLCanvasElement;
 const gl = canvas.getContext('webgl2') as WebGL2RenderingContext;
@@ -171,12 +172,65 @@ function interleaved(
   return times;
 }
 
+/** A program to render, and whether it writes linear light (else sRGB, written as it is). */
+export interface OutputProgram {
+  readonly vertex: string;
+  readonly fragment: string;
+  readonly uniforms: readonly UniformEntry[];
+  readonly linear: boolean;
+}
+
+/** How far two programs' pictures are apart, in 8-bit sRGB levels. */
+export interface OutputDifference {
+  /** The largest difference of any channel (alpha included) of any pixel. */
+  readonly maxLevels: number;
+  /** The share of pixels where some channel differs by more than one level (rounding). */
+  readonly beyondRounding: number;
+}
+
+/** The SIZE² picture of `p` (sample 0, the pixel centres) as 8-bit levels, sRGB-encoded where linear. */
+function levels(p: OutputProgram, view: Scene['view']): Uint8Array {
+  const b = build(p.vertex, p.fragment, p.uniforms, view);
+  drawFrame(b, 0, view);
+  const raw = new Float32Array(SIZE * SIZE * 4);
+  gl.readPixels(0, 0, SIZE, SIZE, gl.RGBA, gl.FLOAT, raw);
+  const clamp = (x: number) => Math.min(1, Math.max(0, x));
+  return Uint8Array.from(raw, (x, i) =>
+    Math.round((p.linear && i % 4 !== 3 ? linearToSrgb(clamp(x)) : clamp(x)) * 255),
+  );
+}
+
+/**
+ * Equal output, checked: renders each program once and compares the pairs (names of `programs`)
+ * pixel by pixel in 8-bit sRGB levels, what a screen or a PNG shows.
+ */
+function outputDifferences(
+  scene: Scene,
+  programs: Record<string, OutputProgram>,
+  pairs: readonly (readonly [string, string])[],
+): OutputDifference[] {
+  const images = new Map(Object.entries(programs).map(([name, p]) => [name, levels(p, scene.view)]));
+  return pairs.map(([a, b]) => {
+    const x = images.get(a) as Uint8Array;
+    const y = images.get(b) as Uint8Array;
+    let maxLevels = 0;
+    let beyond = 0;
+    for (let i = 0; i < x.length; i += 4) {
+      let worst = 0;
+      for (let k = 0; k < 4; k++) worst = Math.max(worst, Math.abs(x[i + k] - y[i + k]));
+      maxLevels = Math.max(maxLevels, worst);
+      if (worst > 1) beyond++;
+    }
+    return { maxLevels, beyondRounding: beyond / (SIZE * SIZE) };
+  });
+}
+
 function renderer(): string {
   const info = gl.getExtension('WEBGL_debug_renderer_info');
   return String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
 }
 
-const bench = { measure, renderer, interleaved };
+const bench = { measure, renderer, interleaved, outputDifferences };
 declare global {
   interface Window {
     kfBench: typeof bench;

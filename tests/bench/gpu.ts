@@ -8,8 +8,7 @@
 import { readdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { exampleScene } from '../src/viewport/fixtures.ts';
-import { launchChromium } from '../support/browser.ts';
-import { bundle } from '../support/bundle.ts';
+import { withBenchPage } from './bench-page.ts';
 import type { GpuBenchResult } from './gpu-page.ts';
 import { printTable } from './report.ts';
 
@@ -66,12 +65,7 @@ export async function run(): Promise<void> {
     .map((f) => f.slice(0, -'.kleinflow.json'.length))
     .sort();
   const hand = await handWritten();
-  const script = await bundle(fileURLToPath(new URL('./gpu-page.ts', import.meta.url)));
-  const browser = await launchChromium();
-  try {
-    const page = await browser.newPage();
-    await page.setContent('<!doctype html><canvas width="1" height="1"></canvas>');
-    await page.addScriptTag({ content: script });
+  await withBenchPage(async (page) => {
     console.log(`\nGPU (WebGL2): ${await page.evaluate(() => window.kfBench.renderer())}`);
     console.log(
       [
@@ -105,9 +99,7 @@ export async function run(): Promise<void> {
     }
     if (hand.size === 0)
       console.log('(hand-written comparison skipped: tests/bench/hand-written/ is absent)');
-  } finally {
-    await browser.close();
-  }
+  });
 }
 
 if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {

@@ -11,6 +11,7 @@ const BENCHES = [
   './cpu.ts',
   './gpu.ts',
   './shader-ratio.ts',
+  './colour-ratio.ts',
   './scale.ts',
   './source.ts',
   './editor.ts',

@@ -14,13 +14,12 @@
 import { fileURLToPath } from 'node:url';
 import { compile } from '../../shader-gen/compile.ts';
 import { exampleScene } from '../src/viewport/fixtures.ts';
-import { launchChromium } from '../support/browser.ts';
-import { bundle } from '../support/bundle.ts';
+import { withBenchPage } from './bench-page.ts';
 import { HAND_WRITTEN } from './hand-written/index.ts';
-import { median, printTable } from './report.ts';
+import { median, medianRatio, printTable } from './report.ts';
 
 /** Rounds of U B H HU frames (a ratio moves by about ±0.02 between runs at 25–31 rounds here). */
-const ROUNDS = 31;
+export const ROUNDS = 31;
 
 const ms = (x: number) => x.toFixed(1);
 const times = (x: number) => `${x.toFixed(2)}×`;
@@ -37,12 +36,7 @@ const HEADER = [
 ];
 
 export async function run(rounds = ROUNDS): Promise<void> {
-  const script = await bundle(fileURLToPath(new URL('./gpu-page.ts', import.meta.url)));
-  const browser = await launchChromium();
-  try {
-    const page = await browser.newPage();
-    await page.setContent('<!doctype html><canvas width="1" height="1"></canvas>');
-    await page.addScriptTag({ content: script });
+  await withBenchPage(async (page) => {
     console.log(
       `\nGenerated vs hand-written probe shaders, 512², ${rounds} interleaved rounds (U B H HU …), ` +
         'each frame ended by readPixels; ratios are medians of the per-round ratios.\n' +
@@ -64,7 +58,7 @@ export async function run(rounds = ROUNDS): Promise<void> {
         programs,
         rounds,
       ] as const);
-      const perRound = (a: string, b: string) => median(t[a].map((x, r) => x / t[b][r]));
+      const perRound = (a: string, b: string) => medianRatio(t[a], t[b]);
       rows.push([
         example,
         ms(median(t.uniform)),
@@ -77,9 +71,7 @@ export async function run(rounds = ROUNDS): Promise<void> {
       ]);
     }
     printTable(HEADER, rows);
-  } finally {
-    await browser.close();
-  }
+  });
 }
 
 if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {

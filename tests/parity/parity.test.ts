@@ -10,7 +10,7 @@ import type { Scene } from '../../nodes/core/scene.ts';
 import { compile, shadertoySource } from '../../shader-gen/compile.ts';
 import { rasterize } from '../../shader-gen/raster.ts';
 import { pixelToWorld } from '../../shader-gen/view.ts';
-import { HAND_WRITTEN } from '../bench/hand-written/index.ts';
+import { HAND_WRITTEN, withDefines } from '../bench/hand-written/index.ts';
 import { shadertoyWrapper } from '../shader-gen/support/glslang.ts';
 import { HAND_MADE_SCENES } from '../shader-gen/support/scenes.ts';
 import { exampleNames, loadExample, movePoint, sceneOf } from '../support/examples.ts';
@@ -197,6 +197,22 @@ describe('hand-written bench shaders draw the same picture as the generated ones
   }
 });
 
+describe('hand-written colour shaders draw the generated picture (the colour bench compares their speed)', () => {
+  for (const shader of HAND_WRITTEN.filter((h) => h.colour)) {
+    it(`${shader.example}: the baked colour program's pixels, to the float`, async () => {
+      const { scene } = loadExample(shader.example);
+      const baked = compile(scene, { baked: true });
+      const generated = await gpu.render(await gpu.program(baked.vertexSource, baked.source), [], scene.view);
+      const index = await gpu.program(baked.vertexSource, withDefines(shader.source, 'COLOUR'));
+      const hand = await gpu.render(index, [], scene.view);
+      let worst = 0;
+      for (let i = 0; i < hand.data.length; i++)
+        worst = Math.max(worst, Math.abs(hand.data[i] - generated.data[i]));
+      expect(worst).toBeLessThan(1e-6);
+    });
+  }
+});
+
 describe('frame uniforms', () => {
   it('u_resolution + u_pixelOffset: a tile of a bigger image is that part of the image', async () => {
     const { scene } = loadExample('hyperbolic-237');
@@ -235,10 +251,14 @@ describe('frame uniforms', () => {
 });
 
 describe('the Shadertoy version draws what the CPU renders (samples, jitter, sRGB)', () => {
-  for (const name of ['six-disks', 'kaleidoscope-632']) {
-    it(`${name}: ≥ 99 % of pixels within ±${COLOUR_LEVELS} levels of the CPU raster`, async ({ skip }) => {
+  // hyperbolic-237 at one sample: shaded in sRGB with no conversion (shadesWithoutBlending).
+  const cases = [{ name: 'six-disks' }, { name: 'kaleidoscope-632' }, { name: 'hyperbolic-237', samples: 1 }];
+  for (const { name, samples } of cases) {
+    const title = samples ? `${name} at ${samples} sample` : name;
+    it(`${title}: ≥ 99 % of pixels within ±${COLOUR_LEVELS} levels of the CPU raster`, async ({ skip }) => {
       if (!exampleNames().includes(name)) skip();
-      const { scene } = loadExample(name);
+      const loaded = loadExample(name).scene;
+      const scene = samples ? { ...loaded, samples } : loaded;
       const index = await gpu.program(compile(scene).vertexSource, shadertoyWrapper(shadertoySource(scene)));
       const image = await gpu.render(index, [], scene.view);
       const cpu = rasterize(scene, { width: SIZE, height: SIZE });
@@ -253,7 +273,7 @@ describe('the Shadertoy version draws what the CPU renders (samples, jitter, sRG
           if (worst <= COLOUR_LEVELS) agree++;
         }
       }
-      row('hand-written and Shadertoy shaders', `shadertoy ${name}`, {
+      row('hand-written and Shadertoy shaders', `shadertoy ${title}`, {
         'vs CPU': percent(agree / (SIZE * SIZE)),
         'GPU ms': Math.round(image.ms),
       });

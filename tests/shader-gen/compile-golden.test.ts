@@ -37,6 +37,11 @@ const CASES: readonly { file: string; source: () => string }[] = [
     file: 'triangle-333-parity-clip.shadertoy.glsl',
     source: () => shadertoySource(HAND_MADE_SCENES['triangle-333-parity-clip']),
   },
+  {
+    // One sample of a tile that blends nothing: shaded in sRGB, written without any conversion.
+    file: 'triangle-333-parity-clip.shadertoy-1.glsl',
+    source: () => shadertoySource({ ...HAND_MADE_SCENES['triangle-333-parity-clip'], samples: 1 }),
+  },
 ];
 
 describe('generated sources match the golden files', () => {

@@ -7,7 +7,7 @@
 import { describe, expect, it } from 'vitest';
 import type { Scene } from '../../nodes/core/scene.ts';
 import { type CompileOptions, compile, shadertoySource } from '../../shader-gen/compile.ts';
-import { HAND_WRITTEN } from '../bench/hand-written/index.ts';
+import { HAND_WRITTEN, withDefines } from '../bench/hand-written/index.ts';
 import { exampleNames, loadExample } from '../support/examples.ts';
 import {
   type ShaderToCheck,
@@ -31,6 +31,9 @@ function shadersOf(name: string, scene: Scene): ShaderToCheck[] {
     stage: 'frag',
   }));
   out.push({ name: `${name}.shadertoy`, source: shadertoyWrapper(shadertoySource(scene)), stage: 'frag' });
+  // One sample: no sample loop, and sRGB throughout where the tile blends nothing.
+  const one = shadertoyWrapper(shadertoySource({ ...scene, samples: 1 }));
+  out.push({ name: `${name}.shadertoy-1`, source: one, stage: 'frag' });
   return out;
 }
 
@@ -42,6 +45,20 @@ describe('generated GLSL passes glslangValidator and WebGL identifier rules', ()
     ...HAND_WRITTEN.flatMap((h) => [
       { name: `hand-written-${h.example}`, source: h.source, stage: 'frag' as const },
       { name: `hand-written-uniform-${h.example}`, source: h.uniformSource, stage: 'frag' as const },
+      ...(h.colour
+        ? [
+            {
+              name: `hand-written-colour-${h.example}`,
+              source: withDefines(h.source, 'COLOUR'),
+              stage: 'frag' as const,
+            },
+            {
+              name: `hand-written-colour-srgb-${h.example}`,
+              source: withDefines(h.source, 'COLOUR', 'SRGB_OUTPUT'),
+              stage: 'frag' as const,
+            },
+          ]
+        : []),
     ]),
     { name: 'vertex', source: compile(HAND_MADE_SCENES.empty).vertexSource, stage: 'vert' },
   ];
@@ -50,7 +67,9 @@ describe('generated GLSL passes glslangValidator and WebGL identifier rules', ()
   it('covers every example, every hand-made scene and every variant', () => {
     expect(examples.length).toBeGreaterThan(0);
     expect(shaders.length).toBe(
-      (examples.length + Object.keys(HAND_MADE_SCENES).length) * 5 + HAND_WRITTEN.length * 2 + 1,
+      (examples.length + Object.keys(HAND_MADE_SCENES).length) * 6 +
+        HAND_WRITTEN.reduce((n, h) => n + (h.colour ? 4 : 2), 0) +
+        1,
     );
   });
 

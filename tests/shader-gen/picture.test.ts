@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { BUILTIN_PICTURE } from '../../nodes/core/values.ts';
-import { srgbToLinear } from '../../shader-gen/colour.ts';
 import { builtinPicture, resolvePicture, samplePicture } from '../../shader-gen/picture.ts';
 import { placeUv, rotationPair } from '../../shader-gen/placement.ts';
+import { srgbToLinear } from '../../shader-gen/srgb.ts';
 
 /** A 2×2 picture: red, green / blue, white (row 0 at the top). */
 const TINY = {

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { DEFAULT_TILE, type Scene, type SceneElement, type TileSpec } from '../../nodes/core/scene.ts';
 import type { Color } from '../../nodes/core/values.ts';
-import { linearToSrgb } from '../../shader-gen/colour.ts';
 import { rasterize } from '../../shader-gen/raster.ts';
+import { linearToSrgb } from '../../shader-gen/srgb.ts';
 import { inv, refl } from './interpret-scenes.ts';
 
 const RED: Color = [1, 0, 0];

@@ -6,7 +6,6 @@
 import { describe, expect, it } from 'vitest';
 import type { Coloring, Scene, SceneElement, SeedSpec, TileSpec } from '../../nodes/core/scene.ts';
 import { BUILTIN_PICTURE, type Color } from '../../nodes/core/values.ts';
-import { toLinear } from '../../shader-gen/colour.ts';
 import { CENTRE_GUARD } from '../../shader-gen/elements/inversion.ts';
 import { farDisk, farDistance, limitReach } from '../../shader-gen/far-disk.ts';
 import { interpret } from '../../shader-gen/interpret.ts';
@@ -14,6 +13,7 @@ import { builtinPicture, samplePicture } from '../../shader-gen/picture.ts';
 import { placeUv } from '../../shader-gen/placement.ts';
 import { rasterize, sampleColour, sampleContext } from '../../shader-gen/raster.ts';
 import { seedAt } from '../../shader-gen/seeds.ts';
+import { toLinear } from '../../shader-gen/srgb.ts';
 import { COLORINGS, inversion, makeScene, reflection, SCHOTTKY } from './support/scenes.ts';
 
 const RED: Color = [1, 0, 0];

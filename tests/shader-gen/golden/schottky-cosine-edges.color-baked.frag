@@ -80,11 +80,11 @@ vec3 finalColour(int depth, vec2 p) {
 }
 
 vec3 shade(bool clipped, bool escaped, int depth, float edgePixels, vec2 p, float limitPixels, int seed) {
-  if (clipped) return toLinear(vec3(0.06, 0.06, 0.08));
-  if (!escaped) return toLinear(vec3(0.02, 0.02, 0.03));
+  if (clipped) return vec3(0.004896310081623859, 0.004896310081623859, 0.007194409291082934);
+  if (!escaped) return vec3(0.0015479876160990713, 0.0015479876160990713, 0.0023219814241486067);
   vec3 base = finalColour(depth, p);
   float t = clamp(edgePixels - 1.5 / 2.0 + 0.5, 0.0, 1.0);
-  vec3 edge = toLinear(vec3(1.0, 0.95, 0.8));
+  vec3 edge = vec3(1.0, 0.8900054069935289, 0.6038273388553378);
   return edge + (base - edge) * t;
 }
 

@@ -100,18 +100,18 @@ int seedAt(vec2 p, vec4 a0, vec4 a1, vec2 a2) {
   return -1;
 }
 
+vec3 seedColour(int seed, vec2 p) {
+  if (seed == 0) return u_seedColor0;
+  if (seed == 1) return textureLod(u_image0, placeUv(u_seed1, u_seedRot1, p), 0.0).rgb;
+  return vec3(0.0);
+}
+
 float srgbToLinear(float c) {
   return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
 }
 
 vec3 toLinear(vec3 c) {
   return vec3(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b));
-}
-
-vec3 seedColour(int seed, vec2 p) {
-  if (seed == 0) return toLinear(u_seedColor0);
-  if (seed == 1) return textureLod(u_image0, placeUv(u_seed1, u_seedRot1, p), 0.0).rgb;
-  return vec3(0.0);
 }
 
 vec3 cosinePalette(vec3 a, vec3 b, vec3 c, vec3 d, float t) {
@@ -127,12 +127,12 @@ vec3 finalColour(int depth, vec2 p) {
 }
 
 vec3 shade(bool clipped, bool escaped, int depth, float edgePixels, vec2 p, float limitPixels, int seed) {
-  if (clipped) return toLinear(u_background);
+  if (clipped) return u_background;
   if (seed >= 0) return seedColour(seed, p);
-  if (!escaped) return toLinear(u_limitColor);
-  vec3 base = depth == 0 ? toLinear(u_fill) : finalColour(depth, p);
+  if (!escaped) return u_limitColor;
+  vec3 base = depth == 0 ? u_fill : finalColour(depth, p);
   float t = clamp(edgePixels - u_edgeWidth / 2.0 + 0.5, 0.0, 1.0);
-  vec3 edge = toLinear(u_edgeColor);
+  vec3 edge = u_edgeColor;
   return edge + (base - edge) * t;
 }
 

@@ -22,25 +22,13 @@ bool reflectionInside(vec2 p, vec4 d0) {
   return (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w < 0.0;
 }
 
-float srgbToLinear(float c) {
-  return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
-}
-
-vec3 toLinear(vec3 c) {
-  return vec3(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b));
-}
-
-vec3 depthColour(int depth) {
+vec3 finalColour(int depth, vec2 p) {
   return depth % 2 == 0 ? u_even : u_odd;
 }
 
-vec3 finalColour(int depth, vec2 p) {
-  return toLinear(depthColour(depth));
-}
-
 vec3 shade(bool clipped, bool escaped, int depth, float edgePixels, vec2 p, float limitPixels, int seed) {
-  if (clipped) return toLinear(u_background);
-  if (!escaped) return toLinear(u_limitColor);
+  if (clipped) return u_background;
+  if (!escaped) return u_limitColor;
   vec3 base = finalColour(depth, p);
   return base;
 }
@@ -86,7 +74,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
         continue;
       }
     }
-#line 90 0
+#line 78 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
@@ -96,7 +84,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   if (reflectionInside(p, el1)) return false;
 #line 1 3
   if (reflectionInside(p, el2)) return false;
-#line 100 0
+#line 88 0
   return true;
 }
 

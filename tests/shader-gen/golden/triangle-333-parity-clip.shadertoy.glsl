@@ -4,25 +4,13 @@ bool reflectionInside(vec2 p, vec4 d0) {
   return (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w < 0.0;
 }
 
-float srgbToLinear(float c) {
-  return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
-}
-
-vec3 toLinear(vec3 c) {
-  return vec3(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b));
-}
-
-vec3 depthColour(int depth) {
-  return depth % 2 == 0 ? vec3(0.93, 0.91, 0.85) : vec3(0.13, 0.16, 0.24);
-}
-
 vec3 finalColour(int depth, vec2 p) {
-  return toLinear(depthColour(depth));
+  return depth % 2 == 0 ? vec3(0.8480882574948618, 0.8073459089125288, 0.692071056865372) : vec3(0.01532520332062848, 0.0219809470798872, 0.046964200689122895);
 }
 
 vec3 shade(bool clipped, bool escaped, int depth, float edgePixels, vec2 p, float limitPixels, int seed) {
-  if (clipped) return toLinear(vec3(0.06, 0.06, 0.08));
-  if (!escaped) return toLinear(vec3(0.02, 0.02, 0.03));
+  if (clipped) return vec3(0.004896310081623859, 0.004896310081623859, 0.007194409291082934);
+  if (!escaped) return vec3(0.0015479876160990713, 0.0015479876160990713, 0.0023219814241486067);
   vec3 base = finalColour(depth, p);
   return base;
 }

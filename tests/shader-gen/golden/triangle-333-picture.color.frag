@@ -23,14 +23,6 @@ bool reflectionInside(vec2 p, vec4 d0) {
   return (p.x - d0.x) * d0.z + (p.y - d0.y) * d0.w < 0.0;
 }
 
-float srgbToLinear(float c) {
-  return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
-}
-
-vec3 toLinear(vec3 c) {
-  return vec3(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b));
-}
-
 vec2 placeUv(vec4 rect, vec2 rot, vec2 p) {
   float dx = p.x - rect.x;
   float dy = p.y - rect.y;
@@ -44,8 +36,8 @@ vec3 finalColour(int depth, vec2 p) {
 }
 
 vec3 shade(bool clipped, bool escaped, int depth, float edgePixels, vec2 p, float limitPixels, int seed) {
-  if (clipped) return toLinear(u_background);
-  if (!escaped) return toLinear(u_limitColor);
+  if (clipped) return u_background;
+  if (!escaped) return u_limitColor;
   vec3 base = finalColour(depth, p);
   return base;
 }
@@ -91,7 +83,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
         continue;
       }
     }
-#line 95 0
+#line 87 0
     return true;
   }
   // depth ≥ maxIter: escaped only if no element holds p.
@@ -101,7 +93,7 @@ bool runIis(inout vec2 p, inout float s, inout int depth) {
   if (reflectionInside(p, el1)) return false;
 #line 1 3
   if (reflectionInside(p, el2)) return false;
-#line 105 0
+#line 97 0
   return true;
 }
 

@@ -1,8 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import type { Coloring } from '../../../nodes/core/scene.ts';
 import { BUILTIN_PICTURE } from '../../../nodes/core/values.ts';
-import { toLinear } from '../../../shader-gen/colour.ts';
 import { rasterize, sampleColour, sampleContext } from '../../../shader-gen/raster.ts';
+import { toLinear } from '../../../shader-gen/srgb.ts';
 import { decodePicture, pictureSources, scenePictures } from '../../../src/cli/scene-pictures.ts';
 import { encodePng } from '../../../src/io/png.ts';
 import { makeScene, reflection } from '../../shader-gen/support/scenes.ts';

@@ -6,6 +6,7 @@ import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Scene } from '../../../nodes/core/scene.ts';
 import { rasterize } from '../../../shader-gen/raster.ts';
+import { linearToSrgb } from '../../../shader-gen/srgb.ts';
 import { colourCount, compareImages, exampleScene } from './fixtures.ts';
 import { decode, type HarnessPage, openHarness } from './page/open-page.ts';
 
@@ -47,6 +48,16 @@ describe('Viewport.renderToPixels', () => {
     const { pixels } = await render({ width: 120, height: 90, samples: 3, tile: 64 });
     const cpu = rasterize(scene, { width: 120, height: 90, samples: 3 }).data;
     expect(compareImages(decode(pixels), new Uint8Array(cpu.buffer), 3).offShare).toBeLessThan(0.02);
+  });
+
+  it('encodes to sRGB as srgb.ts does, to the level (the SRGB8_ALPHA8 readback does it, not a shader)', async () => {
+    // 256 linear values evenly spread in sRGB, the dark end (the linear segment) included.
+    const linear = Array.from({ length: 256 }, (_, i) => (i / 255) ** 2.2);
+    const got = await page.evaluate((l) => window.kfViewport.resolveLinear(l), linear);
+    const want = linear.map((v) => Math.round(linearToSrgb(v) * 255));
+    const off = got.map((g, i) => Math.abs(g - want[i]));
+    expect(Math.max(...off)).toBeLessThanOrEqual(1);
+    expect(off.filter((d) => d > 0).length).toBeLessThan(linear.length * 0.05);
   });
 
   it('makes the background outside the clip disk transparent on request', async () => {

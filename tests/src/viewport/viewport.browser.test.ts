@@ -56,6 +56,21 @@ describe('Viewport', () => {
     expect((await stats()).samples).toBe(scene.samples);
   });
 
+  it('the canvas shows the resolved picture, encoded to sRGB by an sRGB drawing buffer', async () => {
+    const scene = exampleScene('hyperbolic-237');
+    await create(160, 120);
+    await setScene(scene);
+    await settle(scene.samples);
+    // Chromium has drawingBufferStorage: the buffer encodes, the resolve shader does not.
+    expect(await page.evaluate(() => window.kfViewport.canvasIsSrgb())).toBe(true);
+    // A new frame (restarted by setView), captured as the page sees the canvas.
+    const frame = page.evaluate(() => window.kfViewport.nextFrameShown());
+    await setView(scene.view);
+    const { shown, snapshot: resolved } = await frame;
+    const diff = compareImages(decode(shown), decode(resolved), 1);
+    expect(diff.offShare).toBe(0);
+  });
+
   it('moving a circle changes the picture and compiles nothing', async () => {
     await create(128, 128);
     await setScene(circlesScene());

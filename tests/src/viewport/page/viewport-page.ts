@@ -5,6 +5,7 @@
  */
 import type { Diagnostic } from '../../../../nodes/core/diagnostics.ts';
 import type { Scene, View } from '../../../../nodes/core/scene.ts';
+import { Renderer } from '../../../../src/viewport/renderer.ts';
 import { attachPanZoom, type RenderToPixelsOptions, Viewport } from '../../../../src/viewport/viewport.ts';
 
 function toBase64(a: Uint8ClampedArray | null): string | null {
@@ -56,6 +57,17 @@ WebGL2RenderingContext.prototype.getProgramParameter = function (p: WebGLProgram
 };
 
 const canvas = document.querySelector('canvas') as HTMLCanvasElement;
+let capture: ((frame: { shown: string; snapshot: string }) => void) | null = null;
+
+/** The canvas's pixels as the page sees them, top row first. */
+function canvasPixels(): Uint8ClampedArray {
+  const copy = document.createElement('canvas');
+  copy.width = canvas.width;
+  copy.height = canvas.height;
+  const ctx = copy.getContext('2d') as CanvasRenderingContext2D;
+  ctx.drawImage(canvas, 0, 0);
+  return ctx.getImageData(0, 0, copy.width, copy.height).data;
+}
 let vp: Viewport | null = null;
 let view: View = { center: [0, 0], scale: 1 };
 const diagnostics: Diagnostic[][] = [];
@@ -80,6 +92,11 @@ const harness = {
       onFrame: (info) => {
         frameLog.push({ ...info, baked: vp!.stats.baked });
         if (recording) recorded.push(toBase64(vp!.snapshot())!);
+        if (capture) {
+          // Right after the frame is presented: the drawing buffer still holds it.
+          capture({ shown: toBase64(canvasPixels())!, snapshot: toBase64(vp!.snapshot())! });
+          capture = null;
+        }
       },
     });
     vp.setSize(width, height, 1);
@@ -95,6 +112,37 @@ const harness = {
   view: () => view,
   stats: () => vp!.stats,
   snapshot: () => toBase64(vp!.snapshot()),
+  /**
+   * The next frame as the canvas shows it (drawn into a 2D canvas, so the browser interprets the
+   * drawing buffer's format) and as snapshot() resolves it, both taken right after it is presented.
+   */
+  nextFrameShown(): Promise<{ shown: string; snapshot: string }> {
+    return new Promise((resolve) => {
+      capture = resolve;
+    });
+  },
+  /**
+   * Linear values `linear` (one opaque pixel each, as one accumulated sample) resolved by the
+   * renderer into its 8-bit sRGB readback target: the bytes of each pixel's red channel.
+   */
+  resolveLinear(linear: number[]): number[] {
+    const gl = document.createElement('canvas').getContext('webgl2') as WebGL2RenderingContext;
+    const r = new Renderer(gl);
+    const { accum, readback } = r.createTargets(linear.length, 1);
+    if (accum.mode !== 'sum') throw new Error('this check needs a float accumulation target');
+    const data = new Float32Array(linear.flatMap((v) => [v, v, v, 1]));
+    gl.bindTexture(gl.TEXTURE_2D, accum.texture);
+    gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, linear.length, 1, gl.RGBA, gl.FLOAT, data);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    const px = r.readResolved(accum, 1, readback, linear.length, 1);
+    r.dispose();
+    return linear.map((_, i) => px[i * 4]);
+  },
+  /** Whether the canvas's drawing buffer is SRGB8_ALPHA8 (src/viewport/srgb-canvas.ts). */
+  canvasIsSrgb(): boolean {
+    const gl = canvas.getContext('webgl2') as WebGL2RenderingContext & { drawingBufferFormat?: number };
+    return gl.drawingBufferFormat === gl.SRGB8_ALPHA8;
+  },
   record(on: boolean): string[] {
     recording = on;
     const out = recorded;

@@ -11,6 +11,7 @@ import { GraphEditor } from '../editor/GraphEditor.tsx';
 import { isTyping } from '../editor/typing.ts';
 import { createEvaluator } from '../state/evaluation.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
+import { fitSquareView } from '../viewport/fit-view.ts';
 import type { Viewport } from '../viewport/viewport.ts';
 import { useAnimationClock } from './animation.ts';
 import { Banner, type Message } from './Banner.tsx';
@@ -26,6 +27,12 @@ import { useAutosave } from './use-autosave.ts';
 import { WalkthroughPanel } from './walkthrough/WalkthroughPanel.tsx';
 import { WelcomeCard } from './welcome/WelcomeCard.tsx';
 import { rememberWelcome, welcomeSeen } from './welcome/welcome-memory.ts';
+
+/** The live render pane's size in CSS pixels (0 × 0 before it is laid out). */
+const renderPaneSize = () => {
+  const pane = document.querySelector<HTMLElement>('[data-testid="render-pane"]');
+  return { width: pane?.clientWidth ?? 0, height: pane?.clientHeight ?? 0 };
+};
 
 const storage = (): Storage | undefined => {
   try {
@@ -83,7 +90,10 @@ export function App({ initialMessages }: Props) {
   const openExample = useCallback(
     (ex: (typeof EXAMPLES)[number]) => {
       const replacing = store.getState().doc.nodes.length > 0;
-      load(ex.doc, `open ${ex.title}`);
+      // Examples are framed for a square pane: in a tall one, zoom out so none of it is cropped.
+      // One undo step with the load, so Ctrl+Z restores the previous graph and its view together.
+      const { center, scale } = fitSquareView(ex.doc.view, renderPaneSize());
+      load({ ...ex.doc, view: { center: [center[0], center[1]], scale } }, `open ${ex.title}`);
       if (replacing) notify(loadedMessage(`“${ex.title}”`));
       setHelp(false);
       setGallery(false);

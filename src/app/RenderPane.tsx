@@ -3,12 +3,14 @@
  * direct-manipulation overlay on top. The view lives in the document but pan/zoom is not an undo
  * step: it is stored with a debounced silent change.
  */
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import type { View } from '../../nodes/core/scene.ts';
 import type { Evaluation } from '../../nodes/graph/evaluate.ts';
 import { registry } from '../../nodes/types/index.ts';
+import { isTyping } from '../editor/typing.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
+import { fitBounds, pictureBounds } from '../viewport/fit-view.ts';
 import { type NodePatch, RenderOverlay } from '../viewport/overlay/RenderOverlay.tsx';
 import { attachPanZoom } from '../viewport/pan-zoom.ts';
 import { Viewport } from '../viewport/viewport.ts';
@@ -93,30 +95,52 @@ export function RenderPane({
     return () => observer.disconnect();
   }, []);
 
+  // One way a view changes from inside the pane (pan, zoom, Fit): shown at once, stored in the
+  // document a moment later, silently (a view change is not an undo step).
+  const storeTimer = useRef<ReturnType<typeof setTimeout> | undefined>(undefined);
+  const showView = useCallback(
+    (v: View) => {
+      setView(v);
+      viewport.current?.setView(v);
+      clearTimeout(storeTimer.current);
+      storeTimer.current = setTimeout(
+        () =>
+          store.dispatchSilently({
+            type: 'set-view',
+            view: { center: [v.center[0], v.center[1]], scale: v.scale },
+          }),
+        VIEW_STORE_DELAY_MS,
+      );
+    },
+    [store],
+  );
+  useEffect(() => () => clearTimeout(storeTimer.current), []);
+  useEffect(() => attachPanZoom(pane.current!, () => viewRef.current, showView), [showView]);
+
+  const bounds = pictureBounds(evaluation.scene);
+  const fit = () => bounds && showView(fitBounds(bounds, size));
+  // Pan/zoom listens natively on the pane: a press on the button must not start a pan (React's
+  // own stopPropagation runs at the root, after the pane has seen the event).
+  const fitButton = useRef<HTMLButtonElement>(null);
+  const hasBounds = bounds !== null;
   useEffect(() => {
-    let timer: ReturnType<typeof setTimeout> | undefined;
-    const detach = attachPanZoom(
-      pane.current!,
-      () => viewRef.current,
-      (v) => {
-        setView(v);
-        viewport.current?.setView(v);
-        clearTimeout(timer);
-        timer = setTimeout(
-          () =>
-            store.dispatchSilently({
-              type: 'set-view',
-              view: { center: [v.center[0], v.center[1]], scale: v.scale },
-            }),
-          VIEW_STORE_DELAY_MS,
-        );
-      },
-    );
-    return () => {
-      clearTimeout(timer);
-      detach();
+    const b = fitButton.current;
+    if (!b) return undefined;
+    const stop = (e: PointerEvent) => e.stopPropagation();
+    b.addEventListener('pointerdown', stop);
+    return () => b.removeEventListener('pointerdown', stop);
+  }, [hasBounds]);
+  const fitRef = useRef(fit);
+  fitRef.current = fit;
+  useEffect(() => {
+    const onKey = (e: KeyboardEvent) => {
+      if (e.key !== 'f' || e.ctrlKey || e.metaKey || e.altKey || isTyping(e.target)) return;
+      e.preventDefault();
+      fitRef.current();
     };
-  }, [store]);
+    window.addEventListener('keydown', onKey);
+    return () => window.removeEventListener('keydown', onKey);
+  }, []);
 
   useEffect(() => {
     const v = viewport.current;
@@ -145,6 +169,17 @@ export function RenderPane({
           onPreview={(patches) => store.preview(patchChange(patches))}
           onCommit={(patches) => store.commit(patchChange(patches), 'drag in the render')}
         />
+      )}
+      {bounds && (
+        <button
+          type="button"
+          className="kf-button kf-render__fit"
+          title="Show the whole picture (F)"
+          ref={fitButton}
+          onClick={fit}
+        >
+          Fit
+        </button>
       )}
       {failure && <div className="kf-render__failure">{failure}</div>}
       {hint && (

@@ -33,6 +33,7 @@ export const SHORTCUTS: readonly { group: string; items: readonly Shortcut[] }[]
       { keys: ['Drag'], action: 'Pan (or drag a handle of the construction)' },
       { keys: ['Wheel', 'Pinch'], action: 'Zoom about the cursor' },
       { keys: ['Shift drag handle'], action: 'Snap while dragging' },
+      { keys: ['F'], action: 'Fit: show the whole picture' },
     ],
   },
   {

@@ -9,6 +9,9 @@
  */
 import { type RefObject, useCallback, useEffect, useRef } from 'react';
 
+const FOCUSABLE =
+  'button:not([disabled]), [href], input:not([disabled]), select:not([disabled]), textarea:not([disabled]), [tabindex]:not([tabindex="-1"])';
+
 export interface ModalDialog {
   readonly ref: RefObject<HTMLDialogElement | null>;
   /** Pass to the dialog's onClose (Escape, form method=dialog, close()). */
@@ -22,7 +25,30 @@ export function useModalDialog(onClose: () => void): ModalDialog {
   useEffect(() => {
     const d = ref.current!;
     if (!d.open) d.showModal();
+    // showModal makes the page behind inert, but Tab can still leave the dialog for the browser's
+    // own UI and come back to <body>: keep the keyboard cycling through the dialog's controls.
+    const trap = (e: KeyboardEvent) => {
+      if (e.key !== 'Tab') return;
+      const focusable = [...d.querySelectorAll<HTMLElement>(FOCUSABLE)].filter(
+        (el) => el.offsetParent !== null,
+      );
+      if (focusable.length === 0) return;
+      const first = focusable[0];
+      const last = focusable[focusable.length - 1];
+      const inside = d.contains(document.activeElement);
+      if (e.shiftKey && (!inside || document.activeElement === first)) {
+        e.preventDefault();
+        last.focus();
+      } else if (!e.shiftKey && (!inside || document.activeElement === last)) {
+        e.preventDefault();
+        first.focus();
+      }
+    };
+    d.addEventListener('keydown', trap);
+    document.addEventListener('keydown', trap);
     return () => {
+      d.removeEventListener('keydown', trap);
+      document.removeEventListener('keydown', trap);
       if (d.open) d.close();
     };
   }, []);

@@ -109,6 +109,14 @@ describe('first visit, unfinished graphs and the walkthrough — dev server (npm
     await page.getByRole('button', { name: 'Help' }).waitFor();
     await settle(page);
     expect(await welcome().count()).toBe(0);
+    // Escape dismisses it too (a fresh first visit in a new context).
+    const other = await (await app.newContext({ width: 1400, height: 900 }, { firstVisit: true })).newPage();
+    await other.goto(app.url);
+    const card = other.getByRole('region', { name: 'Welcome to Kleinflow' });
+    await card.waitFor();
+    await other.keyboard.press('Escape');
+    await card.waitFor({ state: 'detached' });
+    await other.context().close();
   });
 
   it('shows an empty graph as a calm pane that says what to do — never a flat error colour', async () => {

@@ -2,6 +2,7 @@
  * The first-visit card: open an example, build a kaleidoscope step by step, or start from an
  * empty canvas. Any choice (or ×) dismisses it for good in this browser.
  */
+import { useEffect } from 'react';
 import type { Example } from '../examples.ts';
 
 interface Props {
@@ -15,6 +16,12 @@ interface Props {
 const FIRST_EXAMPLES = ['hyperbolic-237', 'kaleidoscope-333', 'apollonian-gasket', 'loxodromic-spiral'];
 
 export function WelcomeCard({ examples, onExample, onWalkthrough, onEmpty, onDismiss }: Props) {
+  // Escape dismisses it like every other popup.
+  useEffect(() => {
+    const onKey = (e: KeyboardEvent) => e.key === 'Escape' && onDismiss();
+    window.addEventListener('keydown', onKey);
+    return () => window.removeEventListener('keydown', onKey);
+  }, [onDismiss]);
   const firsts = FIRST_EXAMPLES.flatMap((id) => examples.filter((e) => e.id === id));
   return (
     <section className="kf-welcome" aria-label="Welcome to Kleinflow">

@@ -15,8 +15,8 @@ export const colorNode = defineNode({
   outputs: { color: { type: 'color', label: 'colour' } },
   params: { color: { kind: 'color', default: '#e85d75', label: 'colour' } },
   evaluate: ({ params }) => ({
-    outputs: { color: params.color as Color },
-    readout: toHex(params.color as Color),
+    outputs: { color: params.color },
+    readout: toHex(params.color),
   }),
 });
 
@@ -76,13 +76,8 @@ export const cosinePaletteNode = defineNode({
     },
   },
   evaluate: ({ inputs, params }) => {
-    const preset = params.preset as string;
-    const p: Palette = PALETTES[preset] ?? {
-      a: inputs.a as Color,
-      b: inputs.b as Color,
-      c: inputs.c as Color,
-      d: inputs.d as Color,
-    };
+    const preset = params.preset;
+    const p: Palette = PALETTES[preset] ?? inputs;
     return { outputs: { a: p.a, b: p.b, c: p.c, d: p.d }, readout: preset };
   },
 });

@@ -79,11 +79,7 @@ export const imageNode = defineNode({
     },
   },
   evaluate: ({ params }) => {
-    const { image, problem } = pictureOf(
-      params.src as string,
-      params.width as number,
-      params.height as number,
-    );
+    const { image, problem } = pictureOf(params.src, params.width, params.height);
     const readout = image === BUILTIN_PICTURE ? 'built-in checker' : `${image.width} × ${image.height}`;
     return { outputs: { image }, diagnostics: problem ? [problem] : [], readout };
   },

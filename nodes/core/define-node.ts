@@ -3,9 +3,10 @@
  * migrations, overlay and drag handles. Adding a node type = one file + one line in registry.ts.
  */
 import type { Diagnostic } from './diagnostics.ts';
+import type { HandleItem, OverlayShape } from './overlay.ts';
 import type { PortInputMap, PortValueMap } from './port-values.ts';
 import type { ManyPortType, PortType } from './ports.ts';
-import type { HandleItem, OverlayShape, Scene } from './scene.ts';
+import type { Scene } from './scene.ts';
 import type { Color, Vec2 } from './values.ts';
 
 export interface InputSpec {

@@ -4,7 +4,8 @@
  */
 import { z } from 'zod';
 import type { ManyPortType, PortType } from './ports.ts';
-import type { SceneElement, SeedSpec, TileSpec } from './scene.ts';
+import type { SceneElement } from './scene-elements.ts';
+import type { SeedSpec, TileSpec } from './tile-spec.ts';
 import type { Circle, Color, ImageRef, Line, Vec2 } from './values.ts';
 
 /** What a port of each type carries at evaluation time. */

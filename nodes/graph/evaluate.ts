@@ -4,16 +4,12 @@
  */
 import type { EvalContext, NodeDef, RenderSettings } from '../core/define-node.ts';
 import { type Diagnostic, diag, hasErrors } from '../core/diagnostics.ts';
+import type { HandleItem, OverlayItem } from '../core/overlay.ts';
 import { PORT_TYPE_INFO } from '../core/ports.ts';
 import type { NodeRegistry } from '../core/registry.ts';
-import {
-  DEFAULT_TILE,
-  EMPTY_SCENE_DEFAULTS,
-  type HandleItem,
-  type OverlayItem,
-  type Scene,
-  type SceneElement,
-} from '../core/scene.ts';
+import { EMPTY_SCENE_DEFAULTS, type Scene } from '../core/scene.ts';
+import type { SceneElement } from '../core/scene-elements.ts';
+import { DEFAULT_TILE } from '../core/tile-spec.ts';
 import { type Analysis, analyzeGraph } from './analyze.ts';
 import type { GraphDoc } from './document.ts';
 import { migrateNodeParams } from './migrate.ts';

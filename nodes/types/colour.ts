@@ -1,7 +1,7 @@
 /** Colour values: a picked colour and cosine palettes for the tile's a, b, c, d inputs. */
 import { defineNode } from '../core/define-node.ts';
 import { toHex } from '../core/port-values.ts';
-import { type Coloring, DEFAULT_TILE } from '../core/scene.ts';
+import { DEFAULT_COLORING } from '../core/tile-spec.ts';
 import type { Color } from '../core/values.ts';
 
 export const colorNode = defineNode({
@@ -24,7 +24,7 @@ type Palette = { readonly a: Color; readonly b: Color; readonly c: Color; readon
 
 const half: Color = [0.5, 0.5, 0.5];
 const one: Color = [1, 1, 1];
-const cos = DEFAULT_TILE.coloring as Extract<Coloring, { mode: 'cosine' }>;
+const cos = DEFAULT_COLORING;
 
 /**
  * Named palettes of the form a + b·cos(2π(c·t + d)) (Quilez's examples whose c fits in [0, 1]);

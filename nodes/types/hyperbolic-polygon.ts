@@ -1,5 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { InversionElement } from '../core/scene.ts';
+import type { InversionElement } from '../core/scene-elements.ts';
 import { hyperbolicPolygonMirrors, isHyperbolicPolygon } from '../geometry/hyperbolic-polygon.ts';
 import { angleInput } from './construction-shared.ts';
 import { fail, fmt } from './shared.ts';

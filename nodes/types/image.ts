@@ -6,7 +6,7 @@
  */
 import { defineNode } from '../core/define-node.ts';
 import { diag } from '../core/diagnostics.ts';
-import { LIMITS } from '../core/scene.ts';
+import { LIMITS } from '../core/limits.ts';
 import { BUILTIN_PICTURE, type ImageRef } from '../core/values.ts';
 
 const MB = (chars: number) => `${(chars / (1024 * 1024)).toFixed(1)} MB`;

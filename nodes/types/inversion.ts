@@ -1,5 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { InversionElement } from '../core/scene.ts';
+import type { InversionElement } from '../core/scene-elements.ts';
 import { fail, fmt } from './shared.ts';
 
 export const inversionNode = defineNode({

@@ -1,5 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { ReflectionElement } from '../core/scene.ts';
+import type { ReflectionElement } from '../core/scene-elements.ts';
 import type { Vec2 } from '../core/values.ts';
 import { add, perp, rotate, scale, sub } from '../geometry/vec.ts';
 import { angleInput, degreesOf, lineAlong, unitFromDegrees } from './construction-shared.ts';

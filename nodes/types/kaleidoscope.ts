@@ -1,5 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { InversionElement, ReflectionElement, SceneElement } from '../core/scene.ts';
+import type { InversionElement, ReflectionElement, SceneElement } from '../core/scene-elements.ts';
 import type { Circle, Line, Vec2 } from '../core/values.ts';
 import { triangleGeometry, triangleMirrors } from '../geometry/triangle.ts';
 import { fail } from './shared.ts';

@@ -1,5 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { TranslationElement } from '../core/scene.ts';
+import type { TranslationElement } from '../core/scene-elements.ts';
 import type { Vec2 } from '../core/values.ts';
 import { GEOMETRY_EPS } from '../geometry/circle.ts';
 import { add, cross, dot, len, normalize, perp, scale, sub } from '../geometry/vec.ts';

@@ -1,5 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { LoxodromicElement } from '../core/scene.ts';
+import type { LoxodromicElement } from '../core/scene-elements.ts';
 import { circleThrough3, GEOMETRY_EPS, invertPoint } from '../geometry/circle.ts';
 import { twoCircleRegions } from '../geometry/mobius.ts';
 import { dist, normalize, perp, sub } from '../geometry/vec.ts';

@@ -1,6 +1,6 @@
 import { defineNode, type InputSpec } from '../core/define-node.ts';
 import { diag } from '../core/diagnostics.ts';
-import type { MobiusMatrixElement } from '../core/scene.ts';
+import type { MobiusMatrixElement } from '../core/scene-elements.ts';
 import { type Complex, cabs } from '../geometry/complex.ts';
 import {
   classifyMatrix,

@@ -1,6 +1,6 @@
 import { defineNode } from '../core/define-node.ts';
 import { diag } from '../core/diagnostics.ts';
-import type { MobiusElement } from '../core/scene.ts';
+import type { MobiusElement } from '../core/scene-elements.ts';
 import { classifyTwoCircle, type MobiusClass, twoCircleRegions } from '../geometry/mobius.ts';
 import { degrees, fail, fmt } from './shared.ts';
 

@@ -1,5 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { ParallelMirrorsElement } from '../core/scene.ts';
+import type { ParallelMirrorsElement } from '../core/scene-elements.ts';
 import { fail, fmt, pointInput } from './shared.ts';
 
 /** Smallest side a drag may set, so the rectangle never collapses while dragging. */

@@ -1,5 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { ReflectionElement } from '../core/scene.ts';
+import type { ReflectionElement } from '../core/scene-elements.ts';
 import { isDegenerateLine, lineNormal } from '../geometry/circle.ts';
 import { fail } from './shared.ts';
 

@@ -1,6 +1,7 @@
 import { defineNode } from '../core/define-node.ts';
 import { diag } from '../core/diagnostics.ts';
-import { DEFAULT_TILE, LIMITS } from '../core/scene.ts';
+import { LIMITS } from '../core/limits.ts';
+import { DEFAULT_TILE } from '../core/tile-spec.ts';
 import { elementInput } from './shared.ts';
 
 export const renderNode = defineNode({

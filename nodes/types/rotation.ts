@@ -1,5 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { RotationElement } from '../core/scene.ts';
+import type { RotationElement } from '../core/scene-elements.ts';
 import type { Vec2 } from '../core/values.ts';
 import { add, rotate, sub } from '../geometry/vec.ts';
 import { angleInput, degreesOf, lineAlong, unitFromDegrees } from './construction-shared.ts';

@@ -3,7 +3,7 @@
  * images under the whole IIS the tile paints. Wire them into the tile's `seeds` input.
  */
 import { defineNode } from '../core/define-node.ts';
-import type { SeedSpec } from '../core/scene.ts';
+import type { SeedSpec } from '../core/tile-spec.ts';
 import { BUILTIN_PICTURE, type Vec2 } from '../core/values.ts';
 import { dist } from '../geometry/vec.ts';
 import { fail, fmt, pointInput } from './shared.ts';

@@ -1,5 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { SpiralSimilarityElement } from '../core/scene.ts';
+import type { SpiralSimilarityElement } from '../core/scene-elements.ts';
 import type { Circle } from '../core/values.ts';
 import { dist } from '../geometry/vec.ts';
 import { angleInput } from './construction-shared.ts';

@@ -3,7 +3,7 @@
  * reflection. Each acts across the strip 0 ≤ (p − origin)·n < period, n the unit direction.
  */
 import { defineNode } from '../core/define-node.ts';
-import type { SceneElement, StripData } from '../core/scene.ts';
+import type { SceneElement, StripData } from '../core/scene-elements.ts';
 import type { Line, Vec2 } from '../core/values.ts';
 import { add, dot, perp, scale, sub } from '../geometry/vec.ts';
 import { angleInput, degreesOf, lineAlong, unitFromDegrees } from './construction-shared.ts';

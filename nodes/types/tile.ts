@@ -1,13 +1,14 @@
 import { defineNode, type FieldCondition, type InputSpec, type ParamSpec } from '../core/define-node.ts';
 import { diag } from '../core/diagnostics.ts';
+import { LIMITS } from '../core/limits.ts';
 import { toHex } from '../core/port-values.ts';
-import { type Coloring, DEFAULT_TILE, LIMITS, type TileSpec } from '../core/scene.ts';
+import { type Coloring, DEFAULT_COLORING, DEFAULT_TILE, type TileSpec } from '../core/tile-spec.ts';
 import { BUILTIN_PICTURE, type Color, type Vec2 } from '../core/values.ts';
 import { dist } from '../geometry/vec.ts';
 import { fmt } from './shared.ts';
 
 const d = DEFAULT_TILE;
-const cos = d.coloring as Extract<Coloring, { mode: 'cosine' }>;
+const cos = DEFAULT_COLORING;
 const colour = (c: Color, label: string, ui: Pick<InputSpec, 'when' | 'more'> = {}) => ({
   type: 'color' as const,
   label,

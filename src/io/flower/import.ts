@@ -8,12 +8,12 @@ import { type Diagnostic, diag } from '../../../nodes/core/diagnostics.ts';
 import { canConnect } from '../../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../../nodes/core/registry.ts';
 import {
-  DEFAULT_VIEW,
   DOC_VERSION,
   FORMAT,
   type GraphDoc,
   type GraphEdge,
   type GraphNode,
+  newDocumentView,
 } from '../../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
 import { loadDocument } from '../../../nodes/graph/load.ts';
@@ -68,7 +68,7 @@ export function importFlower(json: unknown, registry: NodeRegistry = defaultRegi
     },
     nodes,
     edges,
-    view: { ...DEFAULT_VIEW },
+    view: newDocumentView(),
   };
   const view = flowerView(evaluateGraph(doc, registry).scene.overlays);
   doc.view = { center: [view.center[0], view.center[1]], scale: view.scale };

@@ -8,7 +8,6 @@ import type { HandleItem, OverlayItem } from '../core/overlay.ts';
 import { PORT_TYPE_INFO } from '../core/ports.ts';
 import type { NodeRegistry } from '../core/registry.ts';
 import { EMPTY_SCENE_DEFAULTS, type Scene } from '../core/scene.ts';
-import type { SceneElement } from '../core/scene-elements.ts';
 import { DEFAULT_TILE } from '../core/tile-spec.ts';
 import { type Analysis, analyzeGraph } from './analyze.ts';
 import type { GraphDoc } from './document.ts';
@@ -157,7 +156,8 @@ function evaluateNode(
       }
       values.push(value);
     }
-    if (many) inputs[port] = (values as SceneElement[][]).flat();
+    // One flat list: an element output is itself a list, a seed output one value (PortInputMap).
+    if (many) inputs[port] = values.flat();
     else if (values.length > 0) {
       inputs[port] = values[0];
       if (spec.type === 'number') {
@@ -168,7 +168,7 @@ function evaluateNode(
   }
   if (hasErrors(diagnostics)) return { diagnostics };
 
-  const ctx: EvalContext = { nodeId, inputs: inputs as EvalContext['inputs'], params: resolved.params, time };
+  const ctx: EvalContext = { nodeId, inputs, params: resolved.params, time };
   let outcome: ReturnType<NodeDef['evaluate']>;
   try {
     outcome = def.evaluate(ctx);

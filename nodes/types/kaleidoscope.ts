@@ -1,6 +1,7 @@
 import { defineNode } from '../core/define-node.ts';
+import type { OverlayShape } from '../core/overlay.ts';
 import type { InversionElement, ReflectionElement, SceneElement } from '../core/scene-elements.ts';
-import type { Circle, Line, Vec2 } from '../core/values.ts';
+import type { Circle, Vec2 } from '../core/values.ts';
 import { triangleGeometry, triangleMirrors } from '../geometry/triangle.ts';
 import { fail } from './shared.ts';
 
@@ -70,11 +71,12 @@ export const kaleidoscopeNode = defineNode({
     return { outputs: { elements, boundary }, readout: `${geometry} (${name(p)}, ${name(q)}, ${name(r)})` };
   },
   overlay: (_ctx, out) =>
-    out.elements.map((e) =>
-      e.kind === 'inversion'
-        ? { shape: 'circle' as const, circle: { c: e.c, r: e.r } }
-        : e.kind === 'reflection'
-          ? { shape: 'line' as const, line: { a: e.q, b: [e.q[0] - e.n[1], e.q[1] + e.n[0]] } satisfies Line }
-          : { shape: 'point' as const, at: [0, 0] as Vec2 },
+    out.elements.map(
+      (e): OverlayShape =>
+        e.kind === 'inversion'
+          ? { shape: 'circle', circle: { c: e.c, r: e.r } }
+          : e.kind === 'reflection'
+            ? { shape: 'line', line: { a: e.q, b: [e.q[0] - e.n[1], e.q[1] + e.n[0]] } }
+            : { shape: 'point', at: [0, 0] },
     ),
 });

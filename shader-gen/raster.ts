@@ -4,6 +4,7 @@
  */
 import type { Scene } from '../nodes/core/scene.ts';
 import type { Circle } from '../nodes/core/values.ts';
+import { pixelToWorld } from '../nodes/core/view.ts';
 import { shade } from './colour.ts';
 import type { IisState } from './elements/element-kind.ts';
 import { farDisk, farDistance, limitReach } from './far-disk.ts';
@@ -11,7 +12,7 @@ import { type PreparedElements, prepare, runIis } from './interpret.ts';
 import type { PictureMap } from './picture.ts';
 import { seedAt } from './seeds.ts';
 import { linearToSrgb, type Rgb } from './srgb.ts';
-import { pixelToWorld, sampleOffset } from './view.ts';
+import { sampleOffset } from './view.ts';
 
 export interface RasterOptions {
   readonly width: number;

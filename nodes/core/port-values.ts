@@ -3,8 +3,31 @@
  * it becomes the runtime value (PortValueMap). Colours are "#rrggbb" on disk, [r, g, b] at run time.
  */
 import { z } from 'zod';
-import type { PortType } from './ports.ts';
-import type { Color } from './values.ts';
+import type { ManyPortType, PortType } from './ports.ts';
+import type { SceneElement } from './scene-elements.ts';
+import type { SeedSpec, TileSpec } from './tile-spec.ts';
+import type { Circle, Color, ImageRef, Line, Vec2 } from './values.ts';
+
+/** What a port of each type carries at evaluation time. */
+export interface PortValueMap {
+  number: number;
+  point: Vec2;
+  line: Line;
+  circle: Circle;
+  element: readonly SceneElement[];
+  tile: TileSpec;
+  color: Color;
+  image: ImageRef;
+  seed: SeedSpec;
+}
+
+/** One value of a many-type's list (an element output already carries a list). */
+type Item<V> = V extends readonly (infer E)[] ? E : V;
+
+/** What an input of each type receives: many-inputs get every wire's values in one flat array. */
+export type PortInputMap = {
+  [T in PortType]: T extends ManyPortType ? readonly Item<PortValueMap[T]>[] : PortValueMap[T];
+};
 
 const finite = z.number().finite();
 const vec2 = z.tuple([finite, finite]);
@@ -12,9 +35,10 @@ const vec2 = z.tuple([finite, finite]);
 export const hexColor = z
   .string()
   .regex(/^#[0-9a-fA-F]{6}$/, 'expected a colour like "#ff8800"')
-  .transform(
-    (s): Color => [1, 3, 5].map((i) => Number.parseInt(s.slice(i, i + 2), 16) / 255) as unknown as Color,
-  );
+  .transform((s): Color => {
+    const [r, g, b] = [1, 3, 5].map((i) => Number.parseInt(s.slice(i, i + 2), 16) / 255);
+    return [r, g, b];
+  });
 
 /** Color → "#rrggbb" (components clamped to [0, 1]). */
 export function toHex(c: Color): string {

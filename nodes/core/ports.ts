@@ -25,27 +25,41 @@ interface PortTypeInfo {
   readonly doc: string;
 }
 
-export const PORT_TYPE_INFO: Readonly<Record<PortType, PortTypeInfo>> = {
-  number: { color: '#9aa5b1', many: false, accepts: [], doc: 'a real number' },
-  point: { color: '#f2c14e', many: false, accepts: [], doc: 'a point of the plane' },
-  line: { color: '#4ecdc4', many: false, accepts: [], doc: 'a directed line (keeps its left side)' },
-  circle: { color: '#5b8def', many: false, accepts: [], doc: 'a circle (centre and radius)' },
+/** No other type converts into this one. */
+const ONLY_ITSELF: readonly PortType[] = [];
+
+// `satisfies` (not a type annotation) keeps each `many` literal, from which ManyPortType is derived.
+export const PORT_TYPE_INFO = {
+  number: { color: '#9aa5b1', many: false, accepts: ONLY_ITSELF, doc: 'a real number' },
+  point: { color: '#f2c14e', many: false, accepts: ONLY_ITSELF, doc: 'a point of the plane' },
+  line: { color: '#4ecdc4', many: false, accepts: ONLY_ITSELF, doc: 'a directed line (keeps its left side)' },
+  circle: { color: '#5b8def', many: false, accepts: ONLY_ITSELF, doc: 'a circle (centre and radius)' },
   element: {
     color: '#e85d75',
     many: true,
-    accepts: [],
+    accepts: ONLY_ITSELF,
     doc: 'one or more IIS elements (mirrors, generators)',
   },
-  tile: { color: '#b07cf0', many: false, accepts: [], doc: 'how the tile and its images are coloured' },
-  color: { color: '#f08a5d', many: false, accepts: [], doc: 'an sRGB colour' },
-  image: { color: '#7bc96f', many: false, accepts: [], doc: 'a picture' },
+  tile: {
+    color: '#b07cf0',
+    many: false,
+    accepts: ONLY_ITSELF,
+    doc: 'how the tile and its images are coloured',
+  },
+  color: { color: '#f08a5d', many: false, accepts: ONLY_ITSELF, doc: 'an sRGB colour' },
+  image: { color: '#7bc96f', many: false, accepts: ONLY_ITSELF, doc: 'a picture' },
   seed: {
     color: '#e0b0ff',
     many: true,
-    accepts: [],
+    accepts: ONLY_ITSELF,
     doc: 'one or more orbit seeds (disks or picture rectangles) whose images the tile paints',
   },
-};
+} satisfies Readonly<Record<PortType, PortTypeInfo>>;
+
+/** The types whose inputs take many edges (element, seed): they receive one flat array. */
+export type ManyPortType = {
+  [T in PortType]: (typeof PORT_TYPE_INFO)[T]['many'] extends true ? T : never;
+}[PortType];
 
 /** Whether an output of type `from` may be connected to an input of type `to`. */
 export function canConnect(from: PortType, to: PortType): boolean {

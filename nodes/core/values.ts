@@ -1,8 +1,8 @@
 /**
- * The runtime values that travel along edges. They are plain data (JSON-compatible apart from
- * `element`, which carries scene elements), so documents, the evaluator and the UI share them.
+ * The plain values of the plane (points, lines, circles, colours, pictures): JSON-compatible data
+ * that documents, the evaluator, the Scene and the UI share. Imports nothing, so every layer can
+ * use it; what each port type carries (these plus scene elements) is PortValueMap in port-values.ts.
  */
-import type { SceneElement, SeedSpec, TileSpec } from './scene.ts';
 
 /** A point or vector of the world plane (y up). */
 export type Vec2 = readonly [number, number];
@@ -27,19 +27,6 @@ export interface ImageRef {
   readonly src: string;
   readonly width: number;
   readonly height: number;
-}
-
-/** What a port of each type carries at evaluation time. */
-export interface PortValueMap {
-  number: number;
-  point: Vec2;
-  line: Line;
-  circle: Circle;
-  element: readonly SceneElement[];
-  tile: TileSpec;
-  color: Color;
-  image: ImageRef;
-  seed: SeedSpec;
 }
 
 /**

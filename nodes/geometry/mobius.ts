@@ -2,7 +2,7 @@
  * Two-circle Möbius generators g = σ_C2∘σ_C1 (docs/math.md "Two-circle Möbius generator"): their type
  * (from the real trace τ) and the regions A (where g applies) and B = g(complement of A).
  */
-import type { DiskRegion } from '../core/scene.ts';
+import type { DiskRegion } from '../core/scene-elements.ts';
 import type { Circle, Vec2 } from '../core/values.ts';
 import { GEOMETRY_EPS, invertCircle, invertPoint } from './circle.ts';
 import { dist } from './vec.ts';

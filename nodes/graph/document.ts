@@ -4,6 +4,7 @@
  * (params.ts), because the type decides what they mean.
  */
 import { z } from 'zod';
+import { DEFAULT_VIEW, type View } from '../core/view.ts';
 
 export const FORMAT = 'kleinflow';
 /** Current document version. Older versions migrate forward in migrate.ts. */
@@ -27,10 +28,11 @@ export const nodeSchema = z.strictObject({
 
 export const edgeSchema = z.strictObject({ id, from: portRefSchema, to: portRefSchema });
 
+/** A View (nodes/core/view.ts) as stored in a document. */
 export const viewSchema = z.strictObject({
   center: vec2,
   scale: finite.positive('expected a positive number'),
-});
+}) satisfies z.ZodType<View>;
 
 export const metaSchema = z
   .object({
@@ -53,7 +55,11 @@ export type GraphNode = z.infer<typeof nodeSchema>;
 export type GraphEdge = z.infer<typeof edgeSchema>;
 export type PortRef = z.infer<typeof portRefSchema>;
 
-export const DEFAULT_VIEW = { center: [0, 0] as [number, number], scale: 4 };
+/** A new document's view: a fresh copy of DEFAULT_VIEW (documents are plain mutable JSON). */
+export const newDocumentView = (): GraphDoc['view'] => ({
+  center: [...DEFAULT_VIEW.center],
+  scale: DEFAULT_VIEW.scale,
+});
 
 export function emptyDocument(title = 'Untitled'): GraphDoc {
   return {
@@ -62,6 +68,6 @@ export function emptyDocument(title = 'Untitled'): GraphDoc {
     meta: { title },
     nodes: [],
     edges: [],
-    view: { ...DEFAULT_VIEW },
+    view: newDocumentView(),
   };
 }

@@ -4,17 +4,12 @@
  */
 import type { EvalContext, NodeDef, RenderSettings } from '../core/define-node.ts';
 import { type Diagnostic, diag, hasErrors } from '../core/diagnostics.ts';
+import type { HandleItem, OverlayItem } from '../core/overlay.ts';
 import { ownEntry, setOwn } from '../core/port-lookup.ts';
 import { PORT_TYPE_INFO } from '../core/ports.ts';
 import type { NodeRegistry } from '../core/registry.ts';
-import {
-  DEFAULT_TILE,
-  EMPTY_SCENE_DEFAULTS,
-  type HandleItem,
-  type OverlayItem,
-  type Scene,
-  type SceneElement,
-} from '../core/scene.ts';
+import { EMPTY_SCENE_DEFAULTS, type Scene } from '../core/scene.ts';
+import { DEFAULT_TILE } from '../core/tile-spec.ts';
 import { type Analysis, analyzeGraph } from './analyze.ts';
 import type { GraphDoc } from './document.ts';
 import { nodeVersion, nodeVersionProblem } from './migrate.ts';
@@ -164,7 +159,8 @@ function evaluateNode(
       }
       values.push(value);
     }
-    if (many) setOwn(inputs, port, (values as SceneElement[][]).flat());
+    // One flat list: an element output is itself a list, a seed output one value (PortInputMap).
+    if (many) setOwn(inputs, port, values.flat());
     else if (values.length > 0) {
       setOwn(inputs, port, values[0]);
       if (spec.type === 'number') {
@@ -175,7 +171,7 @@ function evaluateNode(
   }
   if (hasErrors(diagnostics)) return { diagnostics };
 
-  const ctx: EvalContext = { nodeId, inputs: inputs as EvalContext['inputs'], params: resolved.params, time };
+  const ctx: EvalContext = { nodeId, inputs, params: resolved.params, time };
   let outcome: ReturnType<NodeDef['evaluate']>;
   try {
     outcome = def.evaluate(ctx);

@@ -6,8 +6,8 @@
  * (unknown types, bad edges, cycles) are found later by analyze/evaluate and never stop a load.
  */
 import { type Diagnostic, diag } from '../core/diagnostics.ts';
+import { LIMITS } from '../core/limits.ts';
 import type { NodeRegistry } from '../core/registry.ts';
-import { LIMITS } from '../core/scene.ts';
 import { describeValue } from './describe-value.ts';
 import { DOC_VERSION, docSchema, FORMAT, type GraphDoc } from './document.ts';
 import { pathBeyondDepth } from './json-depth.ts';

@@ -31,7 +31,7 @@ export const timeNode = defineNode({
   outputs: { time: { type: 'number', label: 'time' } },
   params: {},
   evaluate: ({ inputs, time }) => {
-    const t = time * (inputs.speed as number);
+    const t = time * inputs.speed;
     return { outputs: { time: t }, readout: `t = ${fmt(t)}` };
   },
 });
@@ -66,15 +66,9 @@ export const sineNode = defineNode({
   outputs: { value: { type: 'number', label: 'value' } },
   params: {},
   evaluate: ({ inputs }) => {
-    const T = inputs.period as number;
+    const T = inputs.period;
     if (!(T > 0)) return noPeriod(T);
-    const v = sineWave(
-      inputs.t as number,
-      T,
-      inputs.amplitude as number,
-      inputs.phase as number,
-      inputs.offset as number,
-    );
+    const v = sineWave(inputs.t, T, inputs.amplitude, inputs.phase, inputs.offset);
     return { outputs: { value: v }, readout: fmt(v) };
   },
 });
@@ -102,35 +96,27 @@ export const circularMotionNode = defineNode({
   outputs: { point: { type: 'point', label: 'point' } },
   params: { visible: VISIBLE },
   evaluate: ({ inputs }) => {
-    const T = inputs.period as number;
+    const T = inputs.period;
     if (!(T > 0)) return noPeriod(T);
-    const p = circularPosition(
-      inputs.center as Vec2,
-      inputs.radius as number,
-      inputs.t as number,
-      T,
-      inputs.phase as number,
-    );
+    const p = circularPosition(inputs.center, inputs.radius, inputs.t, T, inputs.phase);
     return { outputs: { point: p } };
   },
   overlay: (ctx, out) => [
     {
       shape: 'circle',
-      circle: { c: ctx.inputs.center as Vec2, r: ctx.inputs.radius as number } satisfies Circle,
+      circle: { c: ctx.inputs.center, r: ctx.inputs.radius } satisfies Circle,
     },
-    { shape: 'point', at: out.point as Vec2 },
+    { shape: 'point', at: out.point },
   ],
   handles: (ctx, out) => [
-    { handle: 'center', at: ctx.inputs.center as Vec2 },
-    { handle: 'point', at: out.point as Vec2 },
+    { handle: 'center', at: ctx.inputs.center },
+    ...(out.point ? [{ handle: 'point', at: out.point }] : []),
   ],
   drag: (handle, to, ctx) => {
-    const c = ctx.inputs.center as Vec2;
+    const c = ctx.inputs.center;
     if (handle === 'center') return { center: [...to] };
     // Moving the point sets the radius and the phase that puts it there at the current time.
     const a = Math.atan2(to[1] - c[1], to[0] - c[0]);
-    const t = ctx.inputs.t as number;
-    const T = ctx.inputs.period as number;
-    return { radius: dist(c, to), phase: a - cycleAngle(t, T) };
+    return { radius: dist(c, to), phase: a - cycleAngle(ctx.inputs.t, ctx.inputs.period) };
   },
 });

@@ -1,5 +1,4 @@
 import { defineNode } from '../core/define-node.ts';
-import type { Circle, Vec2 } from '../core/values.ts';
 import { circleThrough3 } from '../geometry/circle.ts';
 import { fail, pointInput, VISIBLE } from './shared.ts';
 
@@ -14,14 +13,14 @@ export const circle3ptNode = defineNode({
   outputs: { circle: { type: 'circle', label: 'circle' } },
   params: { visible: VISIBLE },
   evaluate: ({ inputs }) => {
-    const circle = circleThrough3(inputs.a as Vec2, inputs.b as Vec2, inputs.c as Vec2);
+    const circle = circleThrough3(inputs.a, inputs.b, inputs.c);
     if (!circle) return fail('the three points are collinear (or coincide): no circle passes through them');
     return { outputs: { circle } };
   },
   overlay: (ctx, out) => [
-    { shape: 'circle', circle: out.circle as Circle },
-    ...(['a', 'b', 'c'] as const).map((k) => ({ shape: 'point' as const, at: ctx.inputs[k] as Vec2 })),
+    { shape: 'circle', circle: out.circle },
+    ...(['a', 'b', 'c'] as const).map((k) => ({ shape: 'point' as const, at: ctx.inputs[k] })),
   ],
-  handles: (ctx) => (['a', 'b', 'c'] as const).map((k) => ({ handle: k, at: ctx.inputs[k] as Vec2 })),
+  handles: (ctx) => (['a', 'b', 'c'] as const).map((k) => ({ handle: k, at: ctx.inputs[k] })),
   drag: (handle, to) => ({ [handle]: [...to] }),
 });

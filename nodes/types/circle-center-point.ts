@@ -1,5 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { Circle, Vec2 } from '../core/values.ts';
+import type { Circle } from '../core/values.ts';
 import { GEOMETRY_EPS } from '../geometry/circle.ts';
 import { dist } from '../geometry/vec.ts';
 import { pointHandles } from './construction-shared.ts';
@@ -16,12 +16,12 @@ export const circleCenterPointNode = defineNode({
   outputs: { circle: { type: 'circle', label: 'circle' } },
   params: { visible: VISIBLE },
   evaluate: ({ inputs }) => {
-    const c = inputs.center as Vec2;
-    const r = dist(c, inputs.through as Vec2);
+    const c = inputs.center;
+    const r = dist(c, inputs.through);
     if (!(r > GEOMETRY_EPS * Math.max(1, Math.hypot(...c))))
       return fail('the centre and the point coincide: the radius would be 0');
     return { outputs: { circle: { c, r } satisfies Circle } };
   },
-  overlay: (_ctx, out) => [{ shape: 'circle', circle: out.circle as Circle }],
+  overlay: (_ctx, out) => [{ shape: 'circle', circle: out.circle }],
   ...pointHandles('center', 'through'),
 });

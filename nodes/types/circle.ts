@@ -1,5 +1,4 @@
 import { defineNode } from '../core/define-node.ts';
-import type { Circle, Vec2 } from '../core/values.ts';
 import { dist } from '../geometry/vec.ts';
 import { fail, fmt, pointInput, VISIBLE } from './shared.ts';
 
@@ -17,20 +16,19 @@ export const circleNode = defineNode({
   outputs: { circle: { type: 'circle', label: 'circle' } },
   params: { visible: VISIBLE },
   evaluate: ({ inputs }) => {
-    const r = inputs.radius as number;
+    const r = inputs.radius;
     if (!(r > 0)) return fail(`radius must be positive, got ${fmt(r)}`);
-    return { outputs: { circle: { c: inputs.center as Vec2, r } satisfies Circle } };
+    return { outputs: { circle: { c: inputs.center, r } } };
   },
-  overlay: (_ctx, out) => [{ shape: 'circle', circle: out.circle as Circle }],
+  overlay: (_ctx, out) => [{ shape: 'circle', circle: out.circle }],
   handles: (_ctx, out) => {
-    const { c, r } = out.circle as Circle;
+    if (!out.circle) return [];
+    const { c, r } = out.circle;
     return [
       { handle: 'center', at: c },
       { handle: 'rim', at: [c[0] + r, c[1]] },
     ];
   },
   drag: (handle, to, ctx) =>
-    handle === 'center'
-      ? { center: [...to] }
-      : { radius: Math.max(1e-6, dist(ctx.inputs.center as Vec2, to)) },
+    handle === 'center' ? { center: [...to] } : { radius: Math.max(1e-6, dist(ctx.inputs.center, to)) },
 });

@@ -1,7 +1,7 @@
 /** Colour values: a picked colour and cosine palettes for the tile's a, b, c, d inputs. */
 import { defineNode } from '../core/define-node.ts';
 import { toHex } from '../core/port-values.ts';
-import { type Coloring, DEFAULT_TILE } from '../core/scene.ts';
+import { DEFAULT_COLORING } from '../core/tile-spec.ts';
 import type { Color } from '../core/values.ts';
 
 export const colorNode = defineNode({
@@ -15,8 +15,8 @@ export const colorNode = defineNode({
   outputs: { color: { type: 'color', label: 'colour' } },
   params: { color: { kind: 'color', default: '#e85d75', label: 'colour' } },
   evaluate: ({ params }) => ({
-    outputs: { color: params.color as Color },
-    readout: toHex(params.color as Color),
+    outputs: { color: params.color },
+    readout: toHex(params.color),
   }),
 });
 
@@ -24,7 +24,7 @@ type Palette = { readonly a: Color; readonly b: Color; readonly c: Color; readon
 
 const half: Color = [0.5, 0.5, 0.5];
 const one: Color = [1, 1, 1];
-const cos = DEFAULT_TILE.coloring as Extract<Coloring, { mode: 'cosine' }>;
+const cos = DEFAULT_COLORING;
 
 /**
  * Named palettes of the form a + b·cos(2π(c·t + d)) (Quilez's examples whose c fits in [0, 1]);
@@ -76,13 +76,8 @@ export const cosinePaletteNode = defineNode({
     },
   },
   evaluate: ({ inputs, params }) => {
-    const preset = params.preset as string;
-    const p: Palette = PALETTES[preset] ?? {
-      a: inputs.a as Color,
-      b: inputs.b as Color,
-      c: inputs.c as Color,
-      d: inputs.d as Color,
-    };
+    const preset = params.preset;
+    const p: Palette = PALETTES[preset] ?? inputs;
     return { outputs: { a: p.a, b: p.b, c: p.c, d: p.d }, readout: preset };
   },
 });

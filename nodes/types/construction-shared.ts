@@ -2,18 +2,13 @@
  * Helpers shared by the construction, generator and kaleidoscope node files added with the full
  * mathematics: direction inputs in degrees and draggable handles on point inputs.
  */
-import type { EvalContext, InputSpec, NodeDef } from '../core/define-node.ts';
+import type { InputSpec } from '../core/define-node.ts';
 import type { Line, Vec2 } from '../core/values.ts';
 import { add } from '../geometry/vec.ts';
 
 /** A direction input in degrees, counter-clockwise from +x. */
-export const angleInput = (label: string, dflt: number, doc: string): InputSpec => ({
-  type: 'number',
-  label,
-  default: dflt,
-  step: 1,
-  doc,
-});
+export const angleInput = (label: string, dflt: number, doc: string) =>
+  ({ type: 'number', label, default: dflt, step: 1, doc }) as const satisfies InputSpec;
 
 /** Unit vector (cos t, sin t) for t in degrees. */
 export const unitFromDegrees = (deg: number): Vec2 => {
@@ -31,10 +26,10 @@ export const lineAlong = (p: Vec2, d: Vec2): Line => ({ a: p, b: add(p, d) });
  * Handles on a node's point inputs: each sits at the input's value and a drag writes the new
  * point back (a wired input drags its source, see NodeDef.drag).
  */
-export function pointHandles(...keys: string[]): Pick<NodeDef, 'handles' | 'drag'> {
+export function pointHandles<const K extends string>(...keys: K[]) {
   return {
-    handles: (ctx: EvalContext) =>
-      keys.filter((k) => ctx.inputs[k] !== undefined).map((k) => ({ handle: k, at: ctx.inputs[k] as Vec2 })),
+    handles: (ctx: { readonly inputs: { readonly [k in K]: Vec2 } }) =>
+      keys.map((k) => ({ handle: k, at: ctx.inputs[k] })),
     drag: (handle: string, to: Vec2) => ({ [handle]: [...to] }),
   };
 }

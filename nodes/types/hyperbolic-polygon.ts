@@ -1,6 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { InversionElement } from '../core/scene.ts';
-import type { Circle } from '../core/values.ts';
+import type { InversionElement } from '../core/scene-elements.ts';
 import { hyperbolicPolygonMirrors, isHyperbolicPolygon } from '../geometry/hyperbolic-polygon.ts';
 import { angleInput } from './construction-shared.ts';
 import { fail, fmt } from './shared.ts';
@@ -35,26 +34,25 @@ export const hyperbolicPolygonNode = defineNode({
   },
   params: {},
   evaluate: ({ inputs, nodeId }) => {
-    const n = inputs.n as number;
-    const q = inputs.q as number;
+    const { n, q } = inputs;
     if (!isHyperbolicPolygon(n, q)) {
       const kind = (n - 2) * (q - 1) === 2 ? 'Euclidean' : 'spherical';
       return fail(
         `an ${n}-gon with angles 180°/${q} is ${kind}, not hyperbolic: needs (n − 2)(q − 1) > 2 (try more sides or a larger q)`,
       );
     }
-    const rot = ((inputs.rotation as number) * Math.PI) / 180;
+    const rot = (inputs.rotation * Math.PI) / 180;
     const elements = hyperbolicPolygonMirrors(n, q, rot).map(
       (m): InversionElement => ({ kind: 'inversion', nodeId, c: m.c, r: m.r }),
     );
     return {
-      outputs: { elements, boundary: { c: [0, 0], r: 1 } satisfies Circle },
+      outputs: { elements, boundary: { c: [0, 0], r: 1 } },
       readout: `{${n}, ${2 * q}}: ${n}-gons with ${fmt(180 / q)}° angles, ${2 * q} at each vertex`,
     };
   },
   overlay: (_ctx, out) =>
-    (out.elements as InversionElement[]).map((e) => ({
-      shape: 'circle' as const,
-      circle: { c: e.c, r: e.r },
-    })),
+    // Every element is an inversion (evaluate makes only those); the guard keeps the type exact.
+    out.elements.flatMap((e) =>
+      e.kind === 'inversion' ? [{ shape: 'circle' as const, circle: { c: e.c, r: e.r } }] : [],
+    ),
 });

@@ -6,7 +6,7 @@
  */
 import { defineNode } from '../core/define-node.ts';
 import { diag } from '../core/diagnostics.ts';
-import { LIMITS } from '../core/scene.ts';
+import { LIMITS } from '../core/limits.ts';
 import { BUILTIN_PICTURE, type ImageRef } from '../core/values.ts';
 
 const MB = (chars: number) => `${(chars / (1024 * 1024)).toFixed(1)} MB`;
@@ -79,11 +79,7 @@ export const imageNode = defineNode({
     },
   },
   evaluate: ({ params }) => {
-    const { image, problem } = pictureOf(
-      params.src as string,
-      params.width as number,
-      params.height as number,
-    );
+    const { image, problem } = pictureOf(params.src, params.width, params.height);
     const readout = image === BUILTIN_PICTURE ? 'built-in checker' : `${image.width} × ${image.height}`;
     return { outputs: { image }, diagnostics: problem ? [problem] : [], readout };
   },

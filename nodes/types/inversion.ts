@@ -1,6 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { InversionElement } from '../core/scene.ts';
-import type { Circle } from '../core/values.ts';
+import type { InversionElement } from '../core/scene-elements.ts';
 import { fail, fmt } from './shared.ts';
 
 export const inversionNode = defineNode({
@@ -14,7 +13,7 @@ export const inversionNode = defineNode({
   outputs: { element: { type: 'element', label: 'element' } },
   params: {},
   evaluate: ({ inputs, nodeId }) => {
-    const { c, r } = inputs.circle as Circle;
+    const { c, r } = inputs.circle;
     if (!(r > 0)) return fail(`the circle's radius must be positive, got ${fmt(r)}`);
     const element: InversionElement = { kind: 'inversion', nodeId, c, r };
     return { outputs: { element: [element] } };

@@ -1,5 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { ReflectionElement } from '../core/scene.ts';
+import type { ReflectionElement } from '../core/scene-elements.ts';
 import type { Vec2 } from '../core/values.ts';
 import { add, perp, rotate, scale, sub } from '../geometry/vec.ts';
 import { angleInput, degreesOf, lineAlong, unitFromDegrees } from './construction-shared.ts';
@@ -10,10 +10,10 @@ import { fmt, pointInput } from './shared.ts';
  * u (normal perp(u)), mirror 2 the right of v (normal −perp(v)): together they keep the wedge of
  * angle π/k between u and v (docs/math.md: orient them so, or the kept region is the π − π/k wedge).
  */
-const mirrors = (inputs: Readonly<Record<string, unknown>>) => {
-  const c = inputs.center as Vec2;
-  const u = unitFromDegrees(inputs.angle as number);
-  const v = rotate(u, Math.PI / (inputs.k as number));
+const mirrors = (inputs: { readonly center: Vec2; readonly angle: number; readonly k: number }) => {
+  const c = inputs.center;
+  const u = unitFromDegrees(inputs.angle);
+  const v = rotate(u, Math.PI / inputs.k);
   return { c, u, v };
 };
 
@@ -41,7 +41,7 @@ export const kMirrorNode = defineNode({
   params: {},
   evaluate: ({ inputs, nodeId }) => {
     const { c, u, v } = mirrors(inputs);
-    const k = inputs.k as number;
+    const k = inputs.k;
     const m1: ReflectionElement = { kind: 'reflection', nodeId, q: c, n: perp(u) };
     const m2: ReflectionElement = { kind: 'reflection', nodeId, q: c, n: scale(perp(v), -1) };
     return { outputs: { elements: [m1, m2] }, readout: `*${k}${k}: ${2 * k} wedges of ${fmt(180 / k)}°` };
@@ -61,5 +61,5 @@ export const kMirrorNode = defineNode({
     ];
   },
   drag: (handle, to, ctx) =>
-    handle === 'center' ? { center: [...to] } : { angle: degreesOf(sub(to, ctx.inputs.center as Vec2)) },
+    handle === 'center' ? { center: [...to] } : { angle: degreesOf(sub(to, ctx.inputs.center)) },
 });

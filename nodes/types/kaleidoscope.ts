@@ -1,6 +1,7 @@
 import { defineNode } from '../core/define-node.ts';
-import type { InversionElement, ReflectionElement, SceneElement } from '../core/scene.ts';
-import type { Circle, Line, Vec2 } from '../core/values.ts';
+import type { OverlayShape } from '../core/overlay.ts';
+import type { InversionElement, ReflectionElement, SceneElement } from '../core/scene-elements.ts';
+import type { Circle, Vec2 } from '../core/values.ts';
 import { triangleGeometry, triangleMirrors } from '../geometry/triangle.ts';
 import { fail } from './shared.ts';
 
@@ -44,12 +45,12 @@ export const kaleidoscopeNode = defineNode({
       type: 'circle',
       label: 'disk',
       doc: 'the unit circle (the Poincaré disk) in the hyperbolic case',
+      optional: true,
     },
   },
   params: {},
   evaluate: ({ inputs, nodeId }) => {
-    const [p, q, r] = [inputs.p, inputs.q, inputs.r] as number[];
-    const size = inputs.size as number;
+    const { p, q, r, size } = inputs;
     if (q === 1 || r === 1) return fail('q and r must be 2 or more (or 0 for ∞)');
     const geometry = triangleGeometry(p, q, r);
     if (geometry === 'euclidean' && !(size > 0))
@@ -65,16 +66,17 @@ export const kaleidoscopeNode = defineNode({
       m.mirror3.kind === 'line'
         ? refl(m.mirror3)
         : ({ kind: 'inversion', nodeId, c: m.mirror3.c, r: m.mirror3.r } satisfies InversionElement);
-    const outputs: Record<string, unknown> = { elements: [refl(m.line1), refl(m.line2), third] };
-    if (geometry === 'hyperbolic') outputs.boundary = { c: [0, 0], r: 1 } satisfies Circle;
-    return { outputs, readout: `${geometry} (${name(p)}, ${name(q)}, ${name(r)})` };
+    const elements = [refl(m.line1), refl(m.line2), third];
+    const boundary: Circle | undefined = geometry === 'hyperbolic' ? { c: [0, 0], r: 1 } : undefined;
+    return { outputs: { elements, boundary }, readout: `${geometry} (${name(p)}, ${name(q)}, ${name(r)})` };
   },
   overlay: (_ctx, out) =>
-    (out.elements as SceneElement[]).map((e) =>
-      e.kind === 'inversion'
-        ? { shape: 'circle' as const, circle: { c: e.c, r: e.r } }
-        : e.kind === 'reflection'
-          ? { shape: 'line' as const, line: { a: e.q, b: [e.q[0] - e.n[1], e.q[1] + e.n[0]] } satisfies Line }
-          : { shape: 'point' as const, at: [0, 0] as Vec2 },
+    out.elements.map(
+      (e): OverlayShape =>
+        e.kind === 'inversion'
+          ? { shape: 'circle', circle: { c: e.c, r: e.r } }
+          : e.kind === 'reflection'
+            ? { shape: 'line', line: { a: e.q, b: [e.q[0] - e.n[1], e.q[1] + e.n[0]] } }
+            : { shape: 'point', at: [0, 0] },
     ),
 });

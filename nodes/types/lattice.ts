@@ -1,5 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { TranslationElement } from '../core/scene.ts';
+import type { TranslationElement } from '../core/scene-elements.ts';
 import type { Vec2 } from '../core/values.ts';
 import { GEOMETRY_EPS } from '../geometry/circle.ts';
 import { add, cross, dot, len, normalize, perp, scale, sub } from '../geometry/vec.ts';
@@ -33,9 +33,9 @@ export const latticeNode = defineNode({
   outputs: { elements: { type: 'element', label: 'translations' } },
   params: {},
   evaluate: ({ inputs, nodeId }) => {
-    const q = inputs.origin as Vec2;
-    const u = sub(inputs.u as Vec2, q);
-    const v = sub(inputs.v as Vec2, q);
+    const q = inputs.origin;
+    const u = sub(inputs.u, q);
+    const v = sub(inputs.v, q);
     const area = cross(u, v);
     if (!(Math.abs(area) > GEOMETRY_EPS * Math.max(1, len(u) * len(v)))) {
       return fail('the corners u and v are collinear with the origin (or coincide): no parallelogram');
@@ -47,9 +47,9 @@ export const latticeNode = defineNode({
     };
   },
   overlay: (ctx) => {
-    const q = ctx.inputs.origin as Vec2;
-    const u = sub(ctx.inputs.u as Vec2, q);
-    const v = sub(ctx.inputs.v as Vec2, q);
+    const q = ctx.inputs.origin;
+    const u = sub(ctx.inputs.u, q);
+    const v = sub(ctx.inputs.v, q);
     return [
       { shape: 'line', line: lineAlong(q, u) },
       { shape: 'line', line: lineAlong(q, v) },

@@ -1,16 +1,20 @@
 /** Lines constructed from points and lines: perpendicular bisector, parallel and perpendicular. */
-import { defineNode } from '../core/define-node.ts';
+import { defineNode, type InputSpec, type OutputSpecs } from '../core/define-node.ts';
 import type { Line, Vec2 } from '../core/values.ts';
 import { isDegenerateLine } from '../geometry/circle.ts';
 import { lerp, nearlyEqual, perp, sub } from '../geometry/vec.ts';
 import { lineAlong, pointHandles } from './construction-shared.ts';
 import { fail, pointInput, VISIBLE } from './shared.ts';
 
-const lineOut = { line: { type: 'line' as const, label: 'line' } };
-const lineOverlay = (_ctx: unknown, out: Readonly<Record<string, unknown>>) => [
-  { shape: 'line' as const, line: out.line as Line },
+const lineOut = { line: { type: 'line', label: 'line' } } as const satisfies OutputSpecs;
+const lineOverlay = (_ctx: unknown, out: { readonly line: Line }) => [
+  { shape: 'line' as const, line: out.line },
 ];
-const lineIn = { type: 'line' as const, label: 'line', default: { a: [-1, -0.5], b: [1, 0.5] } };
+const lineIn = {
+  type: 'line',
+  label: 'line',
+  default: { a: [-1, -0.5], b: [1, 0.5] },
+} as const satisfies InputSpec;
 const noLine = 'the line has no direction (its two points coincide)';
 
 export const perpendicularBisectorNode = defineNode({
@@ -24,7 +28,7 @@ export const perpendicularBisectorNode = defineNode({
   outputs: lineOut,
   params: { visible: VISIBLE },
   evaluate: ({ inputs }) => {
-    const [a, b] = [inputs.a as Vec2, inputs.b as Vec2];
+    const { a, b } = inputs;
     if (nearlyEqual(a, b, 1e-12 * Math.max(1, Math.hypot(...a))))
       return fail('a and b coincide: every line through them bisects');
     return { outputs: { line: lineAlong(lerp(a, b, 0.5), perp(sub(b, a))) } };
@@ -49,9 +53,9 @@ function lineThroughPoint(type: string, label: string, doc: string, turn: (d: Ve
     outputs: lineOut,
     params: { visible: VISIBLE },
     evaluate: ({ inputs }) => {
-      const line = inputs.line as Line;
+      const { line, point } = inputs;
       if (isDegenerateLine(line)) return fail(noLine);
-      return { outputs: { line: lineAlong(inputs.point as Vec2, turn(sub(line.b, line.a))) } };
+      return { outputs: { line: lineAlong(point, turn(sub(line.b, line.a))) } };
     },
     overlay: lineOverlay,
     ...pointHandles('point'),

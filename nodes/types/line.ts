@@ -14,14 +14,17 @@ export const lineNode = defineNode({
   outputs: { line: { type: 'line', label: 'line' } },
   params: { visible: VISIBLE },
   evaluate: ({ inputs }) => {
-    const line = { a: inputs.a, b: inputs.b } as Line;
+    const line: Line = { a: inputs.a, b: inputs.b };
     if (isDegenerateLine(line)) return fail('the two points coincide: a line needs two distinct points');
     return { outputs: { line } };
   },
-  overlay: (_ctx, out) => [{ shape: 'line', line: out.line as Line }],
-  handles: (_ctx, out) => [
-    { handle: 'a', at: (out.line as Line).a },
-    { handle: 'b', at: (out.line as Line).b },
-  ],
+  overlay: (_ctx, out) => [{ shape: 'line', line: out.line }],
+  handles: (_ctx, { line }) =>
+    line
+      ? [
+          { handle: 'a', at: line.a },
+          { handle: 'b', at: line.b },
+        ]
+      : [],
   drag: (handle, to) => ({ [handle]: [...to] }),
 });

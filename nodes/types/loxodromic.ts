@@ -1,6 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { LoxodromicElement } from '../core/scene.ts';
-import type { Circle, Vec2 } from '../core/values.ts';
+import type { LoxodromicElement } from '../core/scene-elements.ts';
 import { circleThrough3, GEOMETRY_EPS, invertPoint } from '../geometry/circle.ts';
 import { twoCircleRegions } from '../geometry/mobius.ts';
 import { dist, normalize, perp, sub } from '../geometry/vec.ts';
@@ -21,9 +20,7 @@ export const loxodromicNode = defineNode({
   outputs: { element: { type: 'element', label: 'element' }, orthogonal: { type: 'circle', label: 'C3' } },
   params: {},
   evaluate: ({ inputs, nodeId }) => {
-    const c1 = inputs.c1 as Circle;
-    const c2 = inputs.c2 as Circle;
-    const P = inputs.control as Vec2;
+    const { c1, c2, control: P } = inputs;
     const d = dist(c1.c, c2.c);
     const tol = GEOMETRY_EPS * Math.max(1, c2.r);
     if (d <= tol) return fail('C1 and C2 are concentric: the line through their centres is undefined');
@@ -58,9 +55,9 @@ export const loxodromicNode = defineNode({
     return { outputs: { element: [element], orthogonal: c3 }, readout: 'loxodromic' };
   },
   overlay: (ctx, out) => [
-    { shape: 'circle', circle: out.orthogonal as Circle },
-    { shape: 'point', at: ctx.inputs.control as Vec2 },
+    { shape: 'circle', circle: out.orthogonal },
+    { shape: 'point', at: ctx.inputs.control },
   ],
-  handles: (ctx) => [{ handle: 'control', at: ctx.inputs.control as Vec2 }],
+  handles: (ctx) => [{ handle: 'control', at: ctx.inputs.control }],
   drag: (_h, to) => ({ control: [...to] }),
 });

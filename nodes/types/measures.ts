@@ -1,6 +1,5 @@
 /** Measurements as number outputs (wire them into any number input): an angle and a distance. */
 import { defineNode } from '../core/define-node.ts';
-import type { Vec2 } from '../core/values.ts';
 import { cross, dist, dot, sub } from '../geometry/vec.ts';
 import { lineAlong, pointHandles } from './construction-shared.ts';
 import { degrees, fail, fmt, pointInput, VISIBLE } from './shared.ts';
@@ -26,9 +25,9 @@ export const angleNode = defineNode({
   },
   params: { visible: VISIBLE },
   evaluate: ({ inputs }) => {
-    const b = inputs.b as Vec2;
-    const u = sub(inputs.a as Vec2, b);
-    const v = sub(inputs.c as Vec2, b);
+    const b = inputs.b;
+    const u = sub(inputs.a, b);
+    const v = sub(inputs.c, b);
     if (Math.hypot(...u) <= SAME_POINT || Math.hypot(...v) <= SAME_POINT) {
       return fail('a or c coincides with the vertex b: the angle is undefined');
     }
@@ -37,10 +36,10 @@ export const angleNode = defineNode({
     return { outputs: { angle, degrees: (angle * 180) / Math.PI }, readout: degrees(angle) };
   },
   overlay: (ctx) => {
-    const b = ctx.inputs.b as Vec2;
+    const b = ctx.inputs.b;
     return [
-      { shape: 'line', line: lineAlong(b, sub(ctx.inputs.a as Vec2, b)) },
-      { shape: 'line', line: lineAlong(b, sub(ctx.inputs.c as Vec2, b)) },
+      { shape: 'line', line: lineAlong(b, sub(ctx.inputs.a, b)) },
+      { shape: 'line', line: lineAlong(b, sub(ctx.inputs.c, b)) },
     ];
   },
   ...pointHandles('a', 'b', 'c'),
@@ -57,12 +56,12 @@ export const distanceNode = defineNode({
   outputs: { distance: { type: 'number', label: 'distance' } },
   params: { visible: VISIBLE },
   evaluate: ({ inputs }) => {
-    const d = dist(inputs.a as Vec2, inputs.b as Vec2);
+    const d = dist(inputs.a, inputs.b);
     return { outputs: { distance: d }, readout: fmt(d) };
   },
   overlay: (ctx) => [
-    { shape: 'point', at: ctx.inputs.a as Vec2 },
-    { shape: 'point', at: ctx.inputs.b as Vec2 },
+    { shape: 'point', at: ctx.inputs.a },
+    { shape: 'point', at: ctx.inputs.b },
   ],
   ...pointHandles('a', 'b'),
 });

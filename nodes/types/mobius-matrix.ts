@@ -1,7 +1,6 @@
 import { defineNode, type InputSpec } from '../core/define-node.ts';
 import { diag } from '../core/diagnostics.ts';
-import type { MobiusMatrixElement } from '../core/scene.ts';
-import type { Circle } from '../core/values.ts';
+import type { MobiusMatrixElement } from '../core/scene-elements.ts';
 import { type Complex, cabs } from '../geometry/complex.ts';
 import {
   classifyMatrix,
@@ -33,12 +32,8 @@ export function describeMatrix(cls: MatrixClass): string {
   return head;
 }
 
-const part = (label: string, dflt: number): InputSpec => ({
-  type: 'number',
-  label,
-  default: dflt,
-  step: 0.01,
-});
+const part = (label: string, dflt: number) =>
+  ({ type: 'number', label, default: dflt, step: 0.01 }) as const satisfies InputSpec;
 
 export const mobiusMatrixNode = defineNode({
   type: 'mobius-matrix',
@@ -68,7 +63,7 @@ export const mobiusMatrixNode = defineNode({
   },
   params: {},
   evaluate: ({ inputs, nodeId }) => {
-    const z = (k: string): Complex => [inputs[`${k}_re`] as number, inputs[`${k}_im`] as number];
+    const z = (k: 'a' | 'b' | 'c' | 'd'): Complex => [inputs[`${k}_re`], inputs[`${k}_im`]];
     const m = normalizeMatrix({ a: z('a'), b: z('b'), c: z('c'), d: z('d') });
     if (!m) return fail('ad − bc = 0: the matrix is not invertible (the map would be constant)');
     if (isAffine(m)) {
@@ -104,7 +99,7 @@ export const mobiusMatrixNode = defineNode({
     };
   },
   overlay: (_ctx, out) => [
-    { shape: 'circle', circle: out.isometric as Circle },
-    { shape: 'circle', circle: out.isometricInverse as Circle },
+    { shape: 'circle', circle: out.isometric },
+    { shape: 'circle', circle: out.isometricInverse },
   ],
 });

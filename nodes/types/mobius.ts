@@ -1,7 +1,6 @@
 import { defineNode } from '../core/define-node.ts';
 import { diag } from '../core/diagnostics.ts';
-import type { MobiusElement } from '../core/scene.ts';
-import type { Circle } from '../core/values.ts';
+import type { MobiusElement } from '../core/scene-elements.ts';
 import { classifyTwoCircle, type MobiusClass, twoCircleRegions } from '../geometry/mobius.ts';
 import { degrees, fail, fmt } from './shared.ts';
 
@@ -27,8 +26,7 @@ export const mobiusNode = defineNode({
   outputs: { element: { type: 'element', label: 'element' }, image: { type: 'circle', label: "C1'" } },
   params: {},
   evaluate: ({ inputs, nodeId }) => {
-    const c1 = inputs.c1 as Circle;
-    const c2 = inputs.c2 as Circle;
+    const { c1, c2 } = inputs;
     if (!(c1.r > 0 && c2.r > 0)) return fail('both circles need a positive radius');
     const regions = twoCircleRegions(c1, c2);
     if (!regions.ok) return fail(regions.reason);
@@ -48,5 +46,5 @@ export const mobiusNode = defineNode({
           ],
     };
   },
-  overlay: (_ctx, out) => [{ shape: 'circle', circle: out.image as Circle }],
+  overlay: (_ctx, out) => [{ shape: 'circle', circle: out.image }],
 });

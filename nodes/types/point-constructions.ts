@@ -1,14 +1,14 @@
 /** Points constructed from others: midpoint, image in a circle, mirror image in a line. */
-import { defineNode } from '../core/define-node.ts';
-import type { Circle, Line, Vec2 } from '../core/values.ts';
+import { defineNode, type OutputSpecs } from '../core/define-node.ts';
+import type { Vec2 } from '../core/values.ts';
 import { invertPoint, isDegenerateLine, lineNormal, reflectPoint } from '../geometry/circle.ts';
 import { lerp } from '../geometry/vec.ts';
 import { pointHandles } from './construction-shared.ts';
 import { fail, pointInput, VISIBLE } from './shared.ts';
 
-const pointOut = { point: { type: 'point' as const, label: 'point' } };
-const pointOverlay = (_ctx: unknown, out: Readonly<Record<string, unknown>>) => [
-  { shape: 'point' as const, at: out.point as Vec2 },
+const pointOut = { point: { type: 'point', label: 'point' } } as const satisfies OutputSpecs;
+const pointOverlay = (_ctx: unknown, out: { readonly point: Vec2 }) => [
+  { shape: 'point' as const, at: out.point },
 ];
 
 export const midpointNode = defineNode({
@@ -21,7 +21,7 @@ export const midpointNode = defineNode({
   inputs: { a: pointInput('a', -1, 0), b: pointInput('b', 1, 0) },
   outputs: pointOut,
   params: { visible: VISIBLE },
-  evaluate: ({ inputs }) => ({ outputs: { point: lerp(inputs.a as Vec2, inputs.b as Vec2, 0.5) } }),
+  evaluate: ({ inputs }) => ({ outputs: { point: lerp(inputs.a, inputs.b, 0.5) } }),
   overlay: pointOverlay,
   ...pointHandles('a', 'b'),
 });
@@ -40,9 +40,9 @@ export const invertPointNode = defineNode({
   outputs: pointOut,
   params: { visible: VISIBLE },
   evaluate: ({ inputs }) => {
-    const circle = inputs.circle as Circle;
+    const { circle, point } = inputs;
     if (!(circle.r > 0)) return fail('the circle needs a positive radius');
-    const image = invertPoint(circle, inputs.point as Vec2);
+    const image = invertPoint(circle, point);
     if (!image) return fail("the point is the circle's centre: its image is at infinity");
     return { outputs: { point: image } };
   },
@@ -64,9 +64,9 @@ export const reflectPointNode = defineNode({
   outputs: pointOut,
   params: { visible: VISIBLE },
   evaluate: ({ inputs }) => {
-    const line = inputs.line as Line;
+    const { line, point } = inputs;
     if (isDegenerateLine(line)) return fail('the line has no direction (its two points coincide)');
-    return { outputs: { point: reflectPoint(line.a, lineNormal(line), inputs.point as Vec2) } };
+    return { outputs: { point: reflectPoint(line.a, lineNormal(line), point) } };
   },
   overlay: pointOverlay,
   ...pointHandles('point'),

@@ -1,5 +1,4 @@
 import { defineNode } from '../core/define-node.ts';
-import type { Vec2 } from '../core/values.ts';
 import { VISIBLE } from './shared.ts';
 
 export const pointNode = defineNode({
@@ -15,8 +14,8 @@ export const pointNode = defineNode({
   },
   outputs: { point: { type: 'point', label: 'point' } },
   params: { visible: VISIBLE },
-  evaluate: ({ inputs }) => ({ outputs: { point: [inputs.x, inputs.y] as Vec2 } }),
-  overlay: (_ctx, out) => [{ shape: 'point', at: out.point as Vec2 }],
-  handles: (_ctx, out) => [{ handle: 'point', at: out.point as Vec2 }],
+  evaluate: ({ inputs }) => ({ outputs: { point: [inputs.x, inputs.y] } }),
+  overlay: (_ctx, out) => [{ shape: 'point', at: out.point }],
+  handles: (_ctx, out) => (out.point ? [{ handle: 'point', at: out.point }] : []),
   drag: (_h, to) => ({ x: to[0], y: to[1] }),
 });

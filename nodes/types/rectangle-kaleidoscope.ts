@@ -1,6 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { ParallelMirrorsElement } from '../core/scene.ts';
-import type { Vec2 } from '../core/values.ts';
+import type { ParallelMirrorsElement } from '../core/scene-elements.ts';
 import { fail, fmt, pointInput } from './shared.ts';
 
 /** Smallest side a drag may set, so the rectangle never collapses while dragging. */
@@ -21,9 +20,7 @@ export const rectangleKaleidoscopeNode = defineNode({
   outputs: { elements: { type: 'element', label: 'mirrors' } },
   params: {},
   evaluate: ({ inputs, nodeId }) => {
-    const q = inputs.corner as Vec2;
-    const a = inputs.width as number;
-    const b = inputs.height as number;
+    const { corner: q, width: a, height: b } = inputs;
     if (!(a > 0 && b > 0))
       return fail(`the rectangle needs a positive width and height, got ${fmt(a)} × ${fmt(b)}`);
     // Opposite sides are parallel mirror pairs: each pair folds in closed form (depth = mirrors crossed).
@@ -32,9 +29,9 @@ export const rectangleKaleidoscopeNode = defineNode({
     return { outputs: { elements: [across, up] }, readout: `*2222: ${fmt(a)} × ${fmt(b)}` };
   },
   overlay: (ctx) => {
-    const [x0, y0] = ctx.inputs.corner as Vec2;
-    const x1 = x0 + (ctx.inputs.width as number);
-    const y1 = y0 + (ctx.inputs.height as number);
+    const [x0, y0] = ctx.inputs.corner;
+    const x1 = x0 + ctx.inputs.width;
+    const y1 = y0 + ctx.inputs.height;
     return [
       { shape: 'line', line: { a: [x0, y0], b: [x1, y0] } },
       { shape: 'line', line: { a: [x1, y0], b: [x1, y1] } },
@@ -43,15 +40,15 @@ export const rectangleKaleidoscopeNode = defineNode({
     ];
   },
   handles: (ctx) => {
-    const [x0, y0] = ctx.inputs.corner as Vec2;
+    const [x0, y0] = ctx.inputs.corner;
     return [
       { handle: 'corner', at: [x0, y0] },
-      { handle: 'opposite', at: [x0 + (ctx.inputs.width as number), y0 + (ctx.inputs.height as number)] },
+      { handle: 'opposite', at: [x0 + ctx.inputs.width, y0 + ctx.inputs.height] },
     ];
   },
   drag: (handle, to, ctx) => {
     if (handle === 'corner') return { corner: [...to] };
-    const [x0, y0] = ctx.inputs.corner as Vec2;
+    const [x0, y0] = ctx.inputs.corner;
     return { width: Math.max(MIN_SIDE, to[0] - x0), height: Math.max(MIN_SIDE, to[1] - y0) };
   },
 });

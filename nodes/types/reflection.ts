@@ -1,6 +1,5 @@
 import { defineNode } from '../core/define-node.ts';
-import type { ReflectionElement } from '../core/scene.ts';
-import type { Line, Vec2 } from '../core/values.ts';
+import type { ReflectionElement } from '../core/scene-elements.ts';
 import { isDegenerateLine, lineNormal } from '../geometry/circle.ts';
 import { fail } from './shared.ts';
 
@@ -17,14 +16,14 @@ export const reflectionNode = defineNode({
     flip: { kind: 'boolean', default: false, label: 'flip', doc: 'keep the other side of the line' },
   },
   evaluate: ({ inputs, params, nodeId }) => {
-    const line = inputs.line as Line;
+    const line = inputs.line;
     if (isDegenerateLine(line)) return fail('the line has no direction (its two points coincide)');
     const n = lineNormal(line);
     const element: ReflectionElement = {
       kind: 'reflection',
       nodeId,
       q: line.a,
-      n: (params.flip ? [-n[0], -n[1]] : n) as Vec2,
+      n: params.flip ? [-n[0], -n[1]] : n,
     };
     return { outputs: { element: [element] } };
   },

@@ -1,7 +1,7 @@
 import { defineNode } from '../core/define-node.ts';
 import { diag } from '../core/diagnostics.ts';
-import { DEFAULT_TILE, LIMITS, type SceneElement, type TileSpec } from '../core/scene.ts';
-import type { Circle } from '../core/values.ts';
+import { LIMITS } from '../core/limits.ts';
+import { DEFAULT_TILE } from '../core/tile-spec.ts';
 import { elementInput } from './shared.ts';
 
 export const renderNode = defineNode({
@@ -41,7 +41,7 @@ export const renderNode = defineNode({
     },
   },
   evaluate: ({ inputs, params }) => {
-    let elements = inputs.elements as readonly SceneElement[];
+    let elements = inputs.elements;
     const diagnostics = [];
     if (elements.length > LIMITS.maxElements) {
       // A warning: the first maxElements still draw (an error would withhold the whole render).
@@ -62,10 +62,10 @@ export const renderNode = defineNode({
       readout: `${elements.length} element${elements.length === 1 ? '' : 's'}`,
       render: {
         elements,
-        tile: (inputs.tile as TileSpec | undefined) ?? DEFAULT_TILE,
-        maxIterations: params.maxIterations as number,
-        samples: params.samples as number,
-        clip: (inputs.clip as Circle | undefined) ?? null,
+        tile: inputs.tile ?? DEFAULT_TILE,
+        maxIterations: params.maxIterations,
+        samples: params.samples,
+        clip: inputs.clip ?? null,
       },
     };
   },

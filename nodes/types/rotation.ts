@@ -1,15 +1,15 @@
 import { defineNode } from '../core/define-node.ts';
-import type { RotationElement } from '../core/scene.ts';
+import type { RotationElement } from '../core/scene-elements.ts';
 import type { Vec2 } from '../core/values.ts';
 import { add, rotate, sub } from '../geometry/vec.ts';
 import { angleInput, degreesOf, lineAlong, unitFromDegrees } from './construction-shared.ts';
 import { fmt, pointInput } from './shared.ts';
 
 /** The wedge's two rays, from the centre along b1 and along b1 turned by 2π/order. */
-const wedge = (inputs: Readonly<Record<string, unknown>>) => {
-  const c = inputs.center as Vec2;
-  const b1 = unitFromDegrees(inputs.angle as number);
-  return { c, b1, b2: rotate(b1, (2 * Math.PI) / (inputs.order as number)) };
+const wedge = (inputs: { readonly center: Vec2; readonly angle: number; readonly order: number }) => {
+  const c = inputs.center;
+  const b1 = unitFromDegrees(inputs.angle);
+  return { c, b1, b2: rotate(b1, (2 * Math.PI) / inputs.order) };
 };
 
 export const rotationNode = defineNode({
@@ -36,7 +36,7 @@ export const rotationNode = defineNode({
   params: {},
   evaluate: ({ inputs, nodeId }) => {
     const { c, b1 } = wedge(inputs);
-    const order = inputs.order as number;
+    const order = inputs.order;
     const element: RotationElement = { kind: 'rotation', nodeId, c, b1, order };
     return { outputs: { element: [element] }, readout: `order ${order}: wedge of ${fmt(360 / order)}°` };
   },
@@ -56,5 +56,5 @@ export const rotationNode = defineNode({
     ];
   },
   drag: (handle, to, ctx) =>
-    handle === 'center' ? { center: [...to] } : { angle: degreesOf(sub(to, ctx.inputs.center as Vec2)) },
+    handle === 'center' ? { center: [...to] } : { angle: degreesOf(sub(to, ctx.inputs.center)) },
 });

@@ -3,8 +3,8 @@
  * images under the whole IIS the tile paints. Wire them into the tile's `seeds` input.
  */
 import { defineNode } from '../core/define-node.ts';
-import type { SeedSpec } from '../core/scene.ts';
-import { BUILTIN_PICTURE, type Circle, type Color, type ImageRef, type Vec2 } from '../core/values.ts';
+import type { SeedSpec } from '../core/tile-spec.ts';
+import { BUILTIN_PICTURE, type Vec2 } from '../core/values.ts';
 import { dist } from '../geometry/vec.ts';
 import { fail, fmt, pointInput } from './shared.ts';
 
@@ -27,24 +27,22 @@ export const seedDiskNode = defineNode({
   outputs: { seed: { type: 'seed', label: 'seed' } },
   params: {},
   evaluate: ({ inputs, nodeId }) => {
-    const { c, r } = inputs.circle as Circle;
+    const { c, r } = inputs.circle;
     if (!(r > 0)) return fail(`the seed disk's radius must be positive, got ${fmt(r)}`);
-    const seed: SeedSpec = { kind: 'disk', nodeId, c, r, color: inputs.color as Color };
+    const seed: SeedSpec = { kind: 'disk', nodeId, c, r, color: inputs.color };
     return { outputs: { seed }, readout: `r = ${fmt(r)}` };
   },
-  overlay: (_ctx, out) => {
-    const seed = out.seed as Extract<SeedSpec, { kind: 'disk' }>;
-    return [{ shape: 'circle', circle: { c: seed.c, r: seed.r } }];
-  },
-  handles: (_ctx, out) => {
-    const { c, r } = out.seed as Extract<SeedSpec, { kind: 'disk' }>;
+  // The circle comes from the inputs: the seed output is the same disk (evaluate copies it).
+  overlay: ({ inputs }) => [{ shape: 'circle', circle: inputs.circle }],
+  handles: ({ inputs }) => {
+    const { c, r } = inputs.circle;
     return [
       { handle: 'center', at: c },
       { handle: 'rim', at: [c[0] + r, c[1]] },
     ];
   },
   drag: (handle, to, ctx) => {
-    const { c, r } = ctx.inputs.circle as Circle;
+    const { c, r } = ctx.inputs.circle;
     return handle === 'center'
       ? { circle: { c: [...to], r } }
       : { circle: { c: [...c], r: Math.max(1e-6, dist(c, to)) } };
@@ -76,38 +74,30 @@ export const seedImageNode = defineNode({
   outputs: { seed: { type: 'seed', label: 'seed' } },
   params: {},
   evaluate: ({ inputs, nodeId }) => {
-    const width = inputs.width as number;
-    const height = inputs.height as number;
+    const { width, height } = inputs;
     if (!(width > 0 && height > 0))
       return fail(`the seed rectangle needs a positive size, got ${fmt(width)} × ${fmt(height)}`);
     const seed: SeedSpec = {
       kind: 'image',
       nodeId,
-      center: inputs.center as Vec2,
+      center: inputs.center,
       width,
       height,
-      rotation: rad(inputs.rotation as number),
-      image: (inputs.image as ImageRef | undefined) ?? BUILTIN_PICTURE,
+      rotation: rad(inputs.rotation),
+      image: inputs.image ?? BUILTIN_PICTURE,
     };
     return { outputs: { seed }, readout: `${fmt(width)} × ${fmt(height)}` };
   },
-  overlay: (_ctx, out) => {
-    const s = out.seed as Extract<SeedSpec, { kind: 'image' }>;
-    return [{ shape: 'point', at: s.center }];
-  },
-  handles: (_ctx, out) => {
-    const s = out.seed as Extract<SeedSpec, { kind: 'image' }>;
-    return [
-      { handle: 'center', at: s.center },
-      { handle: 'corner', at: cornerOf(s.center, s.width, s.height, s.rotation) },
-    ];
-  },
+  // Drawn from the inputs, which the seed output copies (the rotation in radians).
+  overlay: ({ inputs }) => [{ shape: 'point', at: inputs.center }],
+  handles: ({ inputs: s }) => [
+    { handle: 'center', at: s.center },
+    { handle: 'corner', at: cornerOf(s.center, s.width, s.height, rad(s.rotation)) },
+  ],
   /** The corner keeps the aspect ratio: it scales the rectangle and turns it about the centre. */
   drag: (handle, to, ctx) => {
     if (handle === 'center') return { center: [...to] };
-    const c = ctx.inputs.center as Vec2;
-    const w = ctx.inputs.width as number;
-    const h = ctx.inputs.height as number;
+    const { center: c, width: w, height: h } = ctx.inputs;
     const half = Math.hypot(w, h) / 2;
     const k = Math.max(1e-6, dist(c, to)) / half;
     const turn = Math.atan2(to[1] - c[1], to[0] - c[0]) - Math.atan2(h, w);

@@ -2,26 +2,24 @@
 import type { EvalOutcome, InputSpec, ParamSpec } from '../core/define-node.ts';
 import { diag } from '../core/diagnostics.ts';
 
-/** A node error for a degenerate or invalid set-up; the node has no outputs. */
-export const fail = (reason: string, readout?: string): EvalOutcome => ({
+/** A node error for a degenerate or invalid set-up; the node has no outputs (so it fits every node). */
+export const fail = (reason: string, readout?: string): EvalOutcome<never> => ({
   diagnostics: [diag('degenerate', {}, reason)],
   ...(readout ? { readout } : {}),
 });
 
 /** The overlay toggle every geometric node has. */
-export const VISIBLE: ParamSpec = {
+export const VISIBLE = {
   kind: 'boolean',
   default: true,
   label: 'show',
   doc: 'draw it over the render',
-};
+} as const satisfies ParamSpec;
 
-export const pointInput = (label: string, x: number, y: number): InputSpec => ({
-  type: 'point',
-  label,
-  default: [x, y],
-});
-export const elementInput = (label: string): InputSpec => ({ type: 'element', label, optional: true });
+export const pointInput = (label: string, x: number, y: number) =>
+  ({ type: 'point', label, default: [x, y] }) as const satisfies InputSpec;
+export const elementInput = (label: string) =>
+  ({ type: 'element', label, optional: true }) as const satisfies InputSpec;
 
 /** Formats a number for read-outs: up to 4 significant decimals, no trailing zeros. */
 export const fmt = (v: number): string => (Number.isInteger(v) ? String(v) : String(Number(v.toFixed(4))));

@@ -1,6 +1,6 @@
 import { defineNode } from '../core/define-node.ts';
-import type { SpiralSimilarityElement } from '../core/scene.ts';
-import type { Circle, Vec2 } from '../core/values.ts';
+import type { SpiralSimilarityElement } from '../core/scene-elements.ts';
+import type { Circle } from '../core/values.ts';
 import { dist } from '../geometry/vec.ts';
 import { angleInput } from './construction-shared.ts';
 import { fail, fmt, pointInput } from './shared.ts';
@@ -31,10 +31,7 @@ export const spiralSimilarityNode = defineNode({
   outputs: { element: { type: 'element', label: 'element' } },
   params: {},
   evaluate: ({ inputs, nodeId }) => {
-    const c = inputs.center as Vec2;
-    const r1 = inputs.r1 as number;
-    const r2 = inputs.r2 as number;
-    const phi = inputs.angle as number;
+    const { center: c, r1, r2, angle: phi } = inputs;
     if (!(r1 > 0)) return fail(`r1 must be positive, got ${fmt(r1)}`);
     if (!(r2 > r1))
       return fail(
@@ -54,9 +51,7 @@ export const spiralSimilarityNode = defineNode({
     };
   },
   overlay: (ctx) => {
-    const c = ctx.inputs.center as Vec2;
-    const r1 = ctx.inputs.r1 as number;
-    const r2 = ctx.inputs.r2 as number;
+    const { center: c, r1, r2 } = ctx.inputs;
     // The tile annulus: r1 ≤ |p − c| < r2²/r1.
     return [
       { shape: 'point', at: c },
@@ -65,18 +60,18 @@ export const spiralSimilarityNode = defineNode({
     ];
   },
   handles: (ctx) => {
-    const c = ctx.inputs.center as Vec2;
+    const { center: c, r1, r2 } = ctx.inputs;
     return [
       { handle: 'center', at: c },
-      { handle: 'r1', at: [c[0] + (ctx.inputs.r1 as number), c[1]] },
-      { handle: 'r2', at: [c[0] + (ctx.inputs.r2 as number), c[1]] },
+      { handle: 'r1', at: [c[0] + r1, c[1]] },
+      { handle: 'r2', at: [c[0] + r2, c[1]] },
     ];
   },
   drag: (handle, to, ctx) => {
-    const c = ctx.inputs.center as Vec2;
+    const { center: c, r1, r2 } = ctx.inputs;
     const r = dist(c, to);
     if (handle === 'center') return { center: [...to] };
-    if (handle === 'r1') return { r1: Math.max(1e-6, Math.min(r, (ctx.inputs.r2 as number) / GAP)) };
-    return { r2: Math.max(r, (ctx.inputs.r1 as number) * GAP) };
+    if (handle === 'r1') return { r1: Math.max(1e-6, Math.min(r, r2 / GAP)) };
+    return { r2: Math.max(r, r1 * GAP) };
   },
 });

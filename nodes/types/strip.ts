@@ -2,8 +2,8 @@
  * The strip generators (closed-form elements, docs/math.md): translation, parallel mirrors and glide
  * reflection. Each acts across the strip 0 ≤ (p − origin)·n < period, n the unit direction.
  */
-import { defineNode, type NodeDef } from '../core/define-node.ts';
-import type { SceneElement, StripData } from '../core/scene.ts';
+import { defineNode } from '../core/define-node.ts';
+import type { SceneElement, StripData } from '../core/scene-elements.ts';
 import type { Line, Vec2 } from '../core/values.ts';
 import { add, dot, perp, scale, sub } from '../geometry/vec.ts';
 import { angleInput, degreesOf, lineAlong, unitFromDegrees } from './construction-shared.ts';
@@ -14,10 +14,10 @@ type StripKind = 'translation' | 'parallel-mirrors' | 'glide-reflection';
 /** Smallest period a drag may set (keeps the strip valid while the edge is dragged past the origin). */
 const MIN_PERIOD = 1e-3;
 
-const stripData = (inputs: Readonly<Record<string, unknown>>): StripData => ({
-  q: inputs.origin as Vec2,
-  n: unitFromDegrees(inputs.angle as number),
-  period: inputs.period as number,
+const stripData = (inputs: { readonly origin: Vec2; readonly angle: number; readonly period: number }) => ({
+  q: inputs.origin,
+  n: unitFromDegrees(inputs.angle),
+  period: inputs.period,
 });
 
 /** The strip's two edges h = 0 and h = D (lines along perp(n)). */
@@ -26,7 +26,7 @@ const stripEdges = ({ q, n, period }: StripData): Line[] => [
   lineAlong(add(q, scale(n, period)), perp(n)),
 ];
 
-function stripNode(kind: StripKind, label: string, doc: string, what: string): NodeDef {
+function stripNode(kind: StripKind, label: string, doc: string, what: string) {
   return defineNode({
     type: kind,
     version: 1,
@@ -51,10 +51,10 @@ function stripNode(kind: StripKind, label: string, doc: string, what: string): N
     evaluate: ({ inputs, nodeId }) => {
       const data = stripData(inputs);
       if (!(data.period > 0)) return fail(`the period must be positive, got ${fmt(data.period)}`);
-      const element = { kind, nodeId, ...data } as SceneElement;
+      const element: SceneElement = { kind, nodeId, ...data };
       return {
         outputs: { element: [element] },
-        readout: `period ${fmt(data.period)} along ${fmt(inputs.angle as number)}°`,
+        readout: `period ${fmt(data.period)} along ${fmt(inputs.angle)}°`,
       };
     },
     overlay: (ctx) => {

@@ -1,13 +1,14 @@
 import { defineNode, type FieldCondition, type InputSpec, type ParamSpec } from '../core/define-node.ts';
 import { diag } from '../core/diagnostics.ts';
+import { LIMITS } from '../core/limits.ts';
 import { toHex } from '../core/port-values.ts';
-import { type Coloring, DEFAULT_TILE, LIMITS, type SeedSpec, type TileSpec } from '../core/scene.ts';
-import { BUILTIN_PICTURE, type Circle, type Color, type ImageRef, type Vec2 } from '../core/values.ts';
+import { type Coloring, DEFAULT_COLORING, DEFAULT_TILE, type TileSpec } from '../core/tile-spec.ts';
+import { BUILTIN_PICTURE, type Color, type Vec2 } from '../core/values.ts';
 import { dist } from '../geometry/vec.ts';
 import { fmt } from './shared.ts';
 
 const d = DEFAULT_TILE;
-const cos = d.coloring as Extract<Coloring, { mode: 'cosine' }>;
+const cos = DEFAULT_COLORING;
 const colour = (c: Color, label: string, ui: Pick<InputSpec, 'when' | 'more'> = {}) => ({
   type: 'color' as const,
   label,
@@ -21,15 +22,16 @@ const inMode = (...modes: Mode[]): FieldCondition => ({ param: 'mode', is: modes
 /** Limit-set mode paints only the limit set: tile fill, inner area and edges do not apply. */
 const TILED = inMode('cosine', 'depth-hsv', 'parity', 'image');
 /** A depth-hsv setting in [lowest, 1]. */
-const hsv = (value: number, lowest: number, label: string, step = 0.01): ParamSpec => ({
-  kind: 'number',
-  default: value,
-  min: lowest,
-  max: 1,
-  step,
-  label,
-  when: inMode('depth-hsv'),
-});
+const hsv = (value: number, lowest: number, label: string, step = 0.01) =>
+  ({
+    kind: 'number',
+    default: value,
+    min: lowest,
+    max: 1,
+    step,
+    label,
+    when: inMode('depth-hsv'),
+  }) as const satisfies ParamSpec;
 const rad = (deg: number) => (deg * Math.PI) / 180;
 
 /** The picture's turn handle: centre + R(θ)(0, size/2), the middle of its top edge. */
@@ -158,9 +160,9 @@ export const tileNode = defineNode({
     },
   },
   evaluate: ({ inputs, params, nodeId }) => {
-    const c = (k: string) => inputs[k] as Color;
-    const mode = params.mode as Coloring['mode'];
-    const size = inputs.imageSize as number;
+    const c = inputs;
+    const mode = params.mode;
+    const size = inputs.imageSize;
     if (mode === 'image' && !(size > 0))
       return {
         diagnostics: [
@@ -169,27 +171,27 @@ export const tileNode = defineNode({
       };
     const coloring: Coloring =
       mode === 'cosine'
-        ? { mode, a: c('a'), b: c('b'), c: c('c'), d: c('d'), step: params.step as number }
+        ? { mode, a: c.a, b: c.b, c: c.c, d: c.d, step: params.step }
         : mode === 'parity'
-          ? { mode, even: c('even'), odd: c('odd') }
+          ? { mode, even: c.even, odd: c.odd }
           : mode === 'image'
             ? {
                 mode,
-                image: (inputs.image as ImageRef | undefined) ?? BUILTIN_PICTURE,
-                center: inputs.imageCenter as Vec2,
+                image: inputs.image ?? BUILTIN_PICTURE,
+                center: inputs.imageCenter,
                 size,
-                rotation: rad(inputs.imageRotation as number),
+                rotation: rad(inputs.imageRotation),
               }
             : mode === 'limit-set'
-              ? { mode, glow: params.glow as number }
+              ? { mode, glow: params.glow }
               : {
                   mode,
-                  hueOffset: params.hueOffset as number,
-                  hueStep: params.hueStep as number,
-                  saturation: params.saturation as number,
-                  value: params.value as number,
+                  hueOffset: params.hueOffset,
+                  hueStep: params.hueStep,
+                  saturation: params.saturation,
+                  value: params.value,
                 };
-    let seeds = (inputs.seeds ?? []) as unknown as readonly SeedSpec[];
+    let seeds = inputs.seeds;
     const diagnostics = [];
     if (seeds.length > LIMITS.maxSeeds) {
       diagnostics.push(diag('tooManySeeds', { port: 'seeds' }, seeds.length, LIMITS.maxSeeds));
@@ -198,15 +200,15 @@ export const tileNode = defineNode({
     const tile: TileSpec = {
       nodeId,
       coloring,
-      limitColor: c('limit'),
-      background: c('background'),
-      edgeWidth: params.edgeWidth as number,
-      edgeColor: c('edgeColor'),
-      fill: params.fillTile ? c('fill') : null,
+      limitColor: c.limit,
+      background: c.background,
+      edgeWidth: params.edgeWidth,
+      edgeColor: c.edgeColor,
+      fill: params.fillTile ? c.fill : null,
       seeds,
-      seedsOnly: seeds.length > 0 && (params.seedsOnly as boolean),
-      seedFade: params.seedFade as number,
-      inner: (inputs.inner as Circle | undefined) ?? null,
+      seedsOnly: seeds.length > 0 && params.seedsOnly,
+      seedFade: params.seedFade,
+      inner: inputs.inner ?? null,
     };
     const extras = [
       seeds.length > 0 ? `${seeds.length} seed${seeds.length === 1 ? '' : 's'}` : '',
@@ -216,23 +218,20 @@ export const tileNode = defineNode({
   },
   overlay: ({ params, inputs }) =>
     params.mode === 'image'
-      ? [{ shape: 'circle', circle: { c: inputs.imageCenter as Vec2, r: (inputs.imageSize as number) / 2 } }]
+      ? [{ shape: 'circle', circle: { c: inputs.imageCenter, r: inputs.imageSize / 2 } }]
       : [],
   handles: ({ params, inputs }) => {
     if (params.mode !== 'image') return [];
-    const c = inputs.imageCenter as Vec2;
+    const c = inputs.imageCenter;
     return [
       { handle: 'picture-center', at: c },
-      {
-        handle: 'picture-top',
-        at: topOf(c, inputs.imageSize as number, rad(inputs.imageRotation as number)),
-      },
+      { handle: 'picture-top', at: topOf(c, inputs.imageSize, rad(inputs.imageRotation)) },
     ];
   },
   /** The centre moves the picture; the top handle scales it (height = 2·distance) and turns it. */
   drag: (handle, to, ctx) => {
     if (handle === 'picture-center') return { imageCenter: [...to] };
-    const c = ctx.inputs.imageCenter as Vec2;
+    const c = ctx.inputs.imageCenter;
     const turn = Math.atan2(to[1] - c[1], to[0] - c[0]) - Math.PI / 2;
     return { imageSize: Math.max(1e-6, 2 * dist(c, to)), imageRotation: (turn * 180) / Math.PI };
   },

@@ -121,15 +121,12 @@ export function RenderPane({
   const fit = () => bounds && showView(fitBounds(bounds, size));
   // Pan/zoom listens natively on the pane: a press on the button must not start a pan (React's
   // own stopPropagation runs at the root, after the pane has seen the event).
-  const fitButton = useRef<HTMLButtonElement>(null);
-  const hasBounds = bounds !== null;
-  useEffect(() => {
-    const b = fitButton.current;
+  const fitButton = useCallback((b: HTMLButtonElement | null) => {
     if (!b) return undefined;
     const stop = (e: PointerEvent) => e.stopPropagation();
     b.addEventListener('pointerdown', stop);
     return () => b.removeEventListener('pointerdown', stop);
-  }, [hasBounds]);
+  }, []);
   const fitRef = useRef(fit);
   fitRef.current = fit;
   useEffect(() => {

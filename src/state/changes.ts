@@ -7,6 +7,7 @@
 import { inputSpec, portSpec } from '../../nodes/core/port-lookup.ts';
 import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
+import { sameView } from '../../nodes/core/view.ts';
 import type { GraphDoc, GraphEdge, GraphNode, PortRef } from '../../nodes/graph/document.ts';
 
 export interface ParamPatch {
@@ -123,10 +124,7 @@ export function applyChange(doc: GraphDoc, change: Change, registry: NodeRegistr
     case 'load-document':
       return change.doc;
     case 'set-view': {
-      const { center, scale } = change.view;
-      const same =
-        center[0] === doc.view.center[0] && center[1] === doc.view.center[1] && scale === doc.view.scale;
-      return same ? doc : { ...doc, view: change.view };
+      return sameView(change.view, doc.view) ? doc : { ...doc, view: change.view };
     }
     case 'set-meta':
       return shallowEqual(change.meta, doc.meta) ? doc : { ...doc, meta: change.meta };

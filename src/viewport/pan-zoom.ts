@@ -8,8 +8,8 @@
  * so keeping the world point under the cursor fixed while the scale changes from s to s' gives
  *   center' = p − ((x − W/2)/H, (H/2 − y)/H) · s'.
  */
-import type { View } from '../../nodes/core/scene.ts';
 import type { Vec2 } from '../../nodes/core/values.ts';
+import { viewKeeping as keepAtPixel, pixelToWorld, type View } from '../../nodes/core/view.ts';
 
 /** Zoom factor per wheel pixel: 100 px of wheel (one notch, about) zooms by e^0.15 ≈ 1.16. */
 const WHEEL_ZOOM_PER_PIXEL = 0.0015;
@@ -25,15 +25,14 @@ export interface PanZoomOptions {
   canvasHeightPx?: () => number;
 }
 
-/** World point under the element-relative CSS pixel (x, y). */
+/** World point under the element-relative CSS pixel (x, y): pixel (x, h − y) from the bottom-left. */
 function worldAt(view: View, w: number, h: number, x: number, y: number): Vec2 {
-  return [view.center[0] + ((x - w / 2) / h) * view.scale, view.center[1] + ((h / 2 - y) / h) * view.scale];
+  return pixelToWorld(view, w, h, x, h - y, 0, 0);
 }
 
-/** The view with scale `scale` that keeps world point `p` at CSS pixel (x, y). */
+/** The view with scale `scale` (clamped) that keeps world point `p` at CSS pixel (x, y). */
 function viewKeeping(p: Vec2, scale: number, w: number, h: number, x: number, y: number): View {
-  const s = Math.min(MAX_SCALE, Math.max(MIN_SCALE, scale));
-  return { center: [p[0] - ((x - w / 2) / h) * s, p[1] - ((h / 2 - y) / h) * s], scale: s };
+  return keepAtPixel(p, Math.min(MAX_SCALE, Math.max(MIN_SCALE, scale)), w, h, x, h - y);
 }
 
 export function attachPanZoom(

@@ -2,7 +2,7 @@
  * A linked program with its uniform locations (looked up once, when it is linked) and the uploads:
  * the scene's uniforms from the CompiledProgram, and the per-frame uniforms the runtime sets.
  */
-import type { View } from '../../nodes/core/scene.ts';
+import type { View } from '../../nodes/core/view.ts';
 import { FRAME_UNIFORMS, type UniformEntry } from '../../shader-gen/compile.ts';
 
 type FrameUniform = (typeof FRAME_UNIFORMS)[number]['name'];

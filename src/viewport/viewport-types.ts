@@ -1,6 +1,7 @@
 /** The Viewport's public option and result types (viewport.ts), the contract the editor uses. */
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
-import type { Scene, View } from '../../nodes/core/scene.ts';
+import type { Scene } from '../../nodes/core/scene.ts';
+import type { View } from '../../nodes/core/view.ts';
 
 export interface ViewportOptions {
   /** The compiler's and the driver's diagnostics (KF403 with node ids), whenever they change; [] when clean. */

@@ -7,12 +7,12 @@
  */
 import { readFileSync } from 'node:fs';
 import type { Scene } from '../../nodes/core/scene.ts';
+import { pixelToWorld } from '../../nodes/core/view.ts';
 import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
 import { registry } from '../../nodes/types/index.ts';
 import type { CpuElement, IisState } from '../../shader-gen/elements/element-kind.ts';
 import { type PreparedElements, prepare, runIis } from '../../shader-gen/interpret.ts';
-import { pixelToWorld } from '../../shader-gen/view.ts';
 import { exampleNames, examplePath } from '../../src/cli/examples.ts';
 import { median } from './report.ts';
 

@@ -13,6 +13,7 @@
  * the tolerance is 16× it.
  */
 import type { Scene, SeedSpec } from '../../nodes/core/scene.ts';
+import { pixelToWorld } from '../../nodes/core/view.ts';
 import type { IisState } from '../../shader-gen/elements/element-kind.ts';
 import { type PreparedElements, prepare, runIis } from '../../shader-gen/interpret.ts';
 import { type MarginResult, pathMargin } from '../../shader-gen/path-margin.ts';
@@ -20,7 +21,6 @@ import { placeUv } from '../../shader-gen/placement.ts';
 import { sampleColour, sampleContext } from '../../shader-gen/raster.ts';
 import { seedAt } from '../../shader-gen/seeds.ts';
 import { linearToSrgb } from '../../shader-gen/srgb.ts';
-import { pixelToWorld } from '../../shader-gen/view.ts';
 import type { ProbeImage } from './gpu-probe.ts';
 
 export const MARGIN_FRACTION = 1e-5;

@@ -7,9 +7,9 @@
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Scene } from '../../nodes/core/scene.ts';
+import { pixelToWorld } from '../../nodes/core/view.ts';
 import { compile, shadertoySource } from '../../shader-gen/compile.ts';
 import { rasterize } from '../../shader-gen/raster.ts';
-import { pixelToWorld } from '../../shader-gen/view.ts';
 import { HAND_WRITTEN, withDefines } from '../bench/hand-written/index.ts';
 import { shadertoyWrapper } from '../shader-gen/support/glslang.ts';
 import { HAND_MADE_SCENES } from '../shader-gen/support/scenes.ts';

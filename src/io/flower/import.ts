@@ -9,12 +9,12 @@ import { inputSpec, outputSpec, ownEntry } from '../../../nodes/core/port-lookup
 import { canConnect } from '../../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../../nodes/core/registry.ts';
 import {
-  DEFAULT_VIEW,
   DOC_VERSION,
   FORMAT,
   type GraphDoc,
   type GraphEdge,
   type GraphNode,
+  newDocumentView,
 } from '../../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
 import { loadDocument } from '../../../nodes/graph/load.ts';
@@ -76,7 +76,7 @@ export function importFlower(json: unknown, registry: NodeRegistry = defaultRegi
     },
     nodes,
     edges,
-    view: { ...DEFAULT_VIEW },
+    view: newDocumentView(),
   };
   const view = flowerView(evaluateGraph(doc, registry).scene.overlays);
   doc.view = { center: [view.center[0], view.center[1]], scale: view.scale };

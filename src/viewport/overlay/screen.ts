@@ -4,7 +4,7 @@
  */
 import type { HandleItem, OverlayItem, View } from '../../../nodes/core/scene.ts';
 import type { Vec2 } from '../../../nodes/core/values.ts';
-import { pixelToWorld, worldToPixel } from '../../../shader-gen/view.ts';
+import { pixelToWorld, worldToPixel } from '../../../nodes/core/view.ts';
 import type { ScreenShape } from './hit-test.ts';
 
 export interface Screen {

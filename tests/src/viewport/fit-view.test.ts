@@ -2,7 +2,7 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import type { Scene } from '../../../nodes/core/scene.ts';
-import { pixelToWorld } from '../../../shader-gen/view.ts';
+import { pixelToWorld } from '../../../nodes/core/view.ts';
 import { fitBounds, fitSquareView, pictureBounds } from '../../../src/viewport/fit-view.ts';
 
 describe('fitBounds', () => {

@@ -6,11 +6,11 @@ import { existsSync, readdirSync, readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { describe, expect, it } from 'vitest';
 import type { InversionElement, ReflectionElement } from '../../../../nodes/core/scene.ts';
+import { pixelToWorld } from '../../../../nodes/core/view.ts';
 import { evaluateGraph } from '../../../../nodes/graph/evaluate.ts';
 import { registry } from '../../../../nodes/types/index.ts';
 import { interpret } from '../../../../shader-gen/interpret.ts';
 import { rasterize } from '../../../../shader-gen/raster.ts';
-import { pixelToWorld } from '../../../../shader-gen/view.ts';
 import { importFlower } from '../../../../src/io/flower/import.ts';
 import { flowerMirrors, inFlowerTile, keptNormal } from './support/flower-reference.ts';
 

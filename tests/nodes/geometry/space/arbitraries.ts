@@ -1,5 +1,9 @@
 /** Shared fast-check arbitraries for the 3-D geometry tests: points, spheres, generator set-ups. */
 import fc from 'fast-check';
+import {
+  type CompoundLoxodromic3d,
+  compoundLoxodromic3d,
+} from '../../../../nodes/geometry/space/compound-loxodromic-3d.ts';
 import type { Sphere } from '../../../../nodes/geometry/space/sphere.ts';
 import { add3, normalize3, scale3, type Vec3 } from '../../../../nodes/geometry/space/vec3.ts';
 
@@ -37,3 +41,10 @@ export const disjointPair = fc
     s1,
     s2: { center: add3(s1.center, scale3(dir, s1.radius + r2 + gap)), radius: r2 } as Sphere,
   }));
+
+/** A nested S1, S2 with control points P, Q1, Q2 whose spheres S3, S4 are well conditioned. */
+export const compoundSetup = fc
+  .tuple(nestedPair, point3, point3, point3)
+  .map(([{ s1, s2 }, p, q1, q2]) => compoundLoxodromic3d(s1, s2, p, q1, q2))
+  .filter((r) => r.ok && r.value.s3.radius < 100 && r.value.s4.radius < 100)
+  .map((r) => (r as { ok: true; value: CompoundLoxodromic3d }).value);

@@ -4,6 +4,7 @@
  * has reached the fundamental domain) or the iteration budget is spent.
  */
 import { type CompoundLoxodromic3d, stepCompoundLoxodromic3d } from './compound-loxodromic-3d.ts';
+import { type CompoundParabolic3d, stepCompoundParabolic3d } from './compound-parabolic-3d.ts';
 import { type Mobius3d, stepMobius3d } from './mobius-3d.ts';
 import {
   insideSphere,
@@ -20,7 +21,8 @@ export type Element3d =
   | { readonly kind: 'sphere-inversion'; readonly sphere: Sphere }
   | { readonly kind: 'plane-reflection'; readonly plane: Plane }
   | { readonly kind: 'mobius-3d'; readonly g: Mobius3d }
-  | { readonly kind: 'compound-loxodromic-3d'; readonly g: CompoundLoxodromic3d };
+  | { readonly kind: 'compound-loxodromic-3d'; readonly g: CompoundLoxodromic3d }
+  | { readonly kind: 'compound-parabolic-3d'; readonly g: CompoundParabolic3d };
 
 /** One element's step: its map if x lies in its region (ball; moved side of a plane), else null. */
 export function stepElement3d(e: Element3d, x: Vec3): Mapped | null {
@@ -33,6 +35,8 @@ export function stepElement3d(e: Element3d, x: Vec3): Mapped | null {
       return stepMobius3d(e.g, x);
     case 'compound-loxodromic-3d':
       return stepCompoundLoxodromic3d(e.g, x);
+    case 'compound-parabolic-3d':
+      return stepCompoundParabolic3d(e.g, x);
   }
 }
 

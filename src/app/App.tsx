@@ -16,6 +16,7 @@ import { useAnimationClock } from './animation.ts';
 import { Banner, type Message } from './Banner.tsx';
 import { EXAMPLES } from './examples.ts';
 import { HelpDialog } from './help/HelpDialog.tsx';
+import { Presentation } from './present/Presentation.tsx';
 import { useDocumentIo } from './io/use-document-io.tsx';
 import { type RenderInfo, RenderPane } from './RenderPane.tsx';
 import { SplitPane } from './SplitPane.tsx';
@@ -53,6 +54,7 @@ export function App({ initialMessages }: Props) {
   const [help, setHelp] = useState(false);
   const [welcome, setWelcome] = useState(() => !welcomeSeen(storage()));
   const [walkthrough, setWalkthrough] = useState(false);
+  const [presenting, setPresenting] = useState(false);
   const [frameKey, setFrameKey] = useState(0);
   const viewport = useRef<Viewport | null>(null);
   const fileInput = useRef<HTMLInputElement>(null);
@@ -119,6 +121,20 @@ export function App({ initialMessages }: Props) {
     [evaluation, renderDiagnostics],
   );
 
+  const graphEditor = (inspectorTab: boolean) => (
+    <ReactFlowProvider>
+      <GraphEditor
+        evaluation={evaluation}
+        extraDiagnostics={renderDiagnostics}
+        hoveredNodeId={hovered}
+        frameKey={frameKey}
+        onHoverNode={setHovered}
+        inspectorTab={inspectorTab}
+      />
+    </ReactFlowProvider>
+  );
+
+  if (presenting) return <Presentation onExit={() => setPresenting(false)} />;
   return (
     <div className="kf-app">
       <TopBar
@@ -139,20 +155,12 @@ export function App({ initialMessages }: Props) {
         onRedo={store.redo}
         onPlay={() => store.setPlaying(!playing)}
         onHelp={() => setHelp(true)}
+        onPresent={() => setPresenting(true)}
       />
       <Banner messages={messages} onDismiss={(id) => setMessages((ms) => ms.filter((m) => m.id !== id))} />
       <SplitPane
-        left={
-          <ReactFlowProvider>
-            <GraphEditor
-              evaluation={evaluation}
-              extraDiagnostics={renderDiagnostics}
-              hoveredNodeId={hovered}
-              frameKey={frameKey}
-              onHoverNode={setHovered}
-            />
-          </ReactFlowProvider>
-        }
+        left={graphEditor(false)}
+        inspector={graphEditor(true)}
         right={
           <RenderPane
             evaluation={evaluation}

@@ -1,7 +1,11 @@
-/** The top bar: document title, examples, file actions, export, undo/redo, play and help. */
+/**
+ * The top bar: document title, examples, file actions, export, present, undo/redo, play and help.
+ * On a phone-narrow window every command but Present moves into one ☰ menu, in the same order.
+ */
 import { useEffect, useState } from 'react';
 import type { Example } from './examples.ts';
-import { Menu, type MenuItem } from './Menu.tsx';
+import { Menu, type MenuGroup, type MenuItem } from './Menu.tsx';
+import { useNarrow } from './use-narrow.ts';
 
 interface Props {
   readonly title: string;
@@ -10,6 +14,8 @@ interface Props {
   readonly redoLabel: string | null;
   readonly playing: boolean;
   readonly exportItems: readonly MenuItem[];
+  /** Phone-narrow: the commands collapse into one menu (default: from the window width). */
+  readonly narrow?: boolean;
   onTitle(title: string): void;
   onExample(example: Example): void;
   onNew(): void;
@@ -19,13 +25,62 @@ interface Props {
   onRedo(): void;
   onPlay(): void;
   onHelp(): void;
+  onPresent(): void;
+}
+
+/** Every toolbar command, grouped as the desktop bar groups them, for the phone's menu. */
+function commandGroups(p: Props): MenuGroup[] {
+  return [
+    {
+      label: 'Examples',
+      items: p.examples.map((ex) => ({ label: ex.title, onSelect: () => p.onExample(ex) })),
+    },
+    {
+      label: 'File',
+      items: [
+        { label: 'New', hint: 'empty graph', onSelect: p.onNew },
+        { label: 'Open…', hint: 'Ctrl O', onSelect: p.onOpen },
+        { label: 'Save', hint: 'Ctrl S', onSelect: p.onSave },
+      ],
+    },
+    { label: 'Export', items: p.exportItems },
+    {
+      label: 'Edit',
+      items: [
+        { label: 'Undo', hint: p.undoLabel ?? undefined, disabled: !p.undoLabel, onSelect: p.onUndo },
+        { label: 'Redo', hint: p.redoLabel ?? undefined, disabled: !p.redoLabel, onSelect: p.onRedo },
+      ],
+    },
+    {
+      label: 'View',
+      items: [
+        { label: p.playing ? 'Pause animation' : 'Play animation', onSelect: p.onPlay },
+        { label: 'Help', hint: '?', onSelect: p.onHelp },
+      ],
+    },
+  ];
+}
+
+function PresentButton({ onPresent }: Pick<Props, 'onPresent'>) {
+  return (
+    <button
+      type="button"
+      className="kf-button kf-button--present"
+      onClick={onPresent}
+      title="Present the construction step by step (Esc leaves)"
+    >
+      Present
+    </button>
+  );
 }
 
 export function TopBar(p: Props) {
   const [title, setTitle] = useState(p.title);
   useEffect(() => setTitle(p.title), [p.title]);
+  const narrowWindow = useNarrow();
+  const narrow = p.narrow ?? narrowWindow;
   return (
-    <header className="kf-topbar">
+    <header className={narrow ? 'kf-topbar kf-topbar--narrow' : 'kf-topbar'}>
       <div className="kf-brand">
         <svg viewBox="0 0 24 24" width="20" height="20" aria-hidden="true">
           <circle cx="12" cy="12" r="9.5" fill="none" stroke="currentColor" strokeWidth="1.5" />
@@ -43,72 +98,80 @@ export function TopBar(p: Props) {
         onBlur={() => title !== p.title && p.onTitle(title)}
         onKeyDown={(e) => e.key === 'Enter' && (e.target as HTMLInputElement).blur()}
       />
-      <nav className="kf-toolbar" aria-label="Document">
-        <Menu
-          label="Examples"
-          title="Open an example graph"
-          items={p.examples.map((ex) => ({ label: ex.title, onSelect: () => p.onExample(ex) }))}
-        />
-        <button type="button" className="kf-button" onClick={p.onNew} title="Start an empty graph">
-          New
-        </button>
-        <button
-          type="button"
-          className="kf-button"
-          onClick={p.onOpen}
-          title="Open a .kleinflow.json file or a Kleinflow PNG (Ctrl O)"
-        >
-          Open…
-        </button>
-        <button
-          type="button"
-          className="kf-button"
-          onClick={p.onSave}
-          title="Download the graph as .kleinflow.json (Ctrl S)"
-        >
-          Save
-        </button>
-        <Menu label="Export" title="Export a picture or the shader" items={p.exportItems} />
-        <span className="kf-toolbar__gap" />
-        <button
-          type="button"
-          className="kf-button kf-button--icon"
-          onClick={p.onUndo}
-          disabled={!p.undoLabel}
-          aria-label="Undo"
-          title={p.undoLabel ? `Undo ${p.undoLabel} (Ctrl Z)` : 'Nothing to undo'}
-        >
-          ↶
-        </button>
-        <button
-          type="button"
-          className="kf-button kf-button--icon"
-          onClick={p.onRedo}
-          disabled={!p.redoLabel}
-          aria-label="Redo"
-          title={p.redoLabel ? `Redo ${p.redoLabel} (Ctrl Y)` : 'Nothing to redo'}
-        >
-          ↷
-        </button>
-        <button
-          type="button"
-          className={`kf-button kf-button--icon${p.playing ? ' kf-button--active' : ''}`}
-          onClick={p.onPlay}
-          aria-label={p.playing ? 'Pause animation' : 'Play animation'}
-          title={p.playing ? 'Pause animation time' : 'Play animation time (nodes may read time)'}
-        >
-          {p.playing ? '❚❚' : '▶'}
-        </button>
-        <button
-          type="button"
-          className="kf-button kf-button--icon"
-          onClick={p.onHelp}
-          aria-label="Help"
-          title="Help and shortcuts (?)"
-        >
-          ?
-        </button>
-      </nav>
+      {narrow ? (
+        <nav className="kf-toolbar" aria-label="Document">
+          <PresentButton onPresent={p.onPresent} />
+          <Menu label="☰" ariaLabel="Menu" title="Every command" groups={commandGroups(p)} alignEnd />
+        </nav>
+      ) : (
+        <nav className="kf-toolbar" aria-label="Document">
+          <Menu
+            label="Examples"
+            title="Open an example graph"
+            items={p.examples.map((ex) => ({ label: ex.title, onSelect: () => p.onExample(ex) }))}
+          />
+          <button type="button" className="kf-button" onClick={p.onNew} title="Start an empty graph">
+            New
+          </button>
+          <button
+            type="button"
+            className="kf-button"
+            onClick={p.onOpen}
+            title="Open a .kleinflow.json file or a Kleinflow PNG (Ctrl O)"
+          >
+            Open…
+          </button>
+          <button
+            type="button"
+            className="kf-button"
+            onClick={p.onSave}
+            title="Download the graph as .kleinflow.json (Ctrl S)"
+          >
+            Save
+          </button>
+          <Menu label="Export" title="Export a picture or the shader" items={p.exportItems} />
+          <PresentButton onPresent={p.onPresent} />
+          <span className="kf-toolbar__gap" />
+          <button
+            type="button"
+            className="kf-button kf-button--icon"
+            onClick={p.onUndo}
+            disabled={!p.undoLabel}
+            aria-label="Undo"
+            title={p.undoLabel ? `Undo ${p.undoLabel} (Ctrl Z)` : 'Nothing to undo'}
+          >
+            ↶
+          </button>
+          <button
+            type="button"
+            className="kf-button kf-button--icon"
+            onClick={p.onRedo}
+            disabled={!p.redoLabel}
+            aria-label="Redo"
+            title={p.redoLabel ? `Redo ${p.redoLabel} (Ctrl Y)` : 'Nothing to redo'}
+          >
+            ↷
+          </button>
+          <button
+            type="button"
+            className={`kf-button kf-button--icon${p.playing ? ' kf-button--active' : ''}`}
+            onClick={p.onPlay}
+            aria-label={p.playing ? 'Pause animation' : 'Play animation'}
+            title={p.playing ? 'Pause animation time' : 'Play animation time (nodes may read time)'}
+          >
+            {p.playing ? '❚❚' : '▶'}
+          </button>
+          <button
+            type="button"
+            className="kf-button kf-button--icon"
+            onClick={p.onHelp}
+            aria-label="Help"
+            title="Help and shortcuts (?)"
+          >
+            ?
+          </button>
+        </nav>
+      )}
     </header>
   );
 }

@@ -45,6 +45,8 @@ export function Presentation({ onExit, editorHref }: Props) {
   const [count, setCount] = useState(1);
   const [hovered, setHovered] = useState<string | null>(null);
   const [listOpen, setListOpen] = useState(!narrow);
+  // On a phone the list covers the picture: closed by default, and closed again once a step is picked.
+  useEffect(() => setListOpen(!narrow), [narrow]);
   const [editing, setEditing] = useState(false);
   const built = Math.min(count, steps.length);
   const shown = useMemo(() => readOnly(evaluationUpTo(evaluation, steps, built)), [evaluation, steps, built]);
@@ -125,7 +127,15 @@ export function Presentation({ onExit, editorHref }: Props) {
           )}
         </div>
         {listOpen && steps.length > 0 && (
-          <StepList steps={steps} count={built} notes={notes} onCount={step} />
+          <StepList
+            steps={steps}
+            count={built}
+            notes={notes}
+            onCount={(n) => {
+              step(n);
+              if (narrow) setListOpen(false);
+            }}
+          />
         )}
         <div className="kf-present__foot">
           {note && (

@@ -13,7 +13,8 @@ import { currentDoc, openViaPicker } from './io-page.ts';
 
 const shots = join(repoRoot, 'test-artifacts');
 const example = (name: string) => readFileSync(join(repoRoot, 'examples', `${name}.kleinflow.json`), 'utf8');
-const HOSTILE = '<img src=x onerror="window.__pwned=1">';
+const LAST_NOTE = 'The **Render** node reflects the triangle in its three mirrors until the plane is full.';
+const THIRD = 'Third: <img src=x onerror="window.__pwned=1"> stays text.';
 
 describe('presentation', () => {
   let app: ServedApp;
@@ -37,6 +38,7 @@ describe('presentation', () => {
   const stepNow = () => page.getByTestId('step-now');
 
   it('Present opens at step 1 with every step listed; the graph is gone and nothing can be dragged', async () => {
+    await expect.poll(() => page.locator('[data-handle]').count()).toBeGreaterThan(0); // the editor's handles
     await page.getByRole('button', { name: 'Present' }).click();
     await page.getByTestId('present-mode').waitFor();
     expect(await page.locator('.react-flow').count()).toBe(0);
@@ -58,31 +60,36 @@ describe('presentation', () => {
     await panel.getByRole('textbox', { name: 'Title' }).fill('Three mirrors');
     await panel
       .getByRole('textbox', { name: 'Description' })
-      .fill(`A **kaleidoscope** from a triangle.\n\n- mirrors\n- angles of *60°*\n\n${HOSTILE}`);
+      .fill('A **kaleidoscope** from one triangle.\n\n- three mirrors\n- corners of *60°*');
     await panel.getByRole('textbox', { name: /^Note for step 2/ }).fill('Now the **second** corner.');
     await page.getByRole('heading', { name: 'Presentation text' }).click(); // leaving the field commits it
     expect(await page.getByRole('heading', { level: 1 }).textContent()).toBe('Three mirrors');
     const head = page.locator('.kf-present__head');
     expect(await head.locator('strong').textContent()).toBe('kaleidoscope');
     expect(await head.locator('li').count()).toBe(2);
-    expect(await head.textContent()).toContain(HOSTILE);
-    expect(await page.locator('img[src="x"]').count()).toBe(0);
-    expect(await page.evaluate(() => (window as { __pwned?: number }).__pwned)).toBeUndefined();
     const note = page.getByRole('region', { name: 'Step note' });
     expect(await note.locator('strong').textContent()).toBe('second');
     await page.keyboard.press('ArrowRight');
     await note.waitFor({ state: 'detached' });
-    await panel.getByRole('textbox', { name: /^Note for step 3/ }).fill('Third.');
+    await panel.getByRole('textbox', { name: /^Note for step 3/ }).fill(THIRD);
     await page.keyboard.press('ArrowLeft'); // typing: the arrow moves the caret, not the step
     expect(await stepNow().textContent()).toMatch(/Step 3 \//);
     await page.keyboard.press('Escape'); // the first Esc leaves the field (and commits it) …
     expect(await page.getByTestId('present-mode').count()).toBe(1);
+    expect(await note.textContent()).toBe(THIRD);
+    expect(await page.locator('img[src="x"]').count()).toBe(0);
+    expect(await page.evaluate(() => (window as { __pwned?: number }).__pwned)).toBeUndefined();
     await page.setViewportSize({ width: 390, height: 844 });
     await page.keyboard.press('ArrowLeft');
     await note.waitFor();
     await page.waitForTimeout(400);
     await page.screenshot({ path: join(shots, 'present-edit-phone.png') });
     await page.setViewportSize({ width: 1280, height: 800 });
+    await page.keyboard.press('End');
+    await panel.getByRole('textbox', { name: /^Note for step \d+: Render/ }).fill(LAST_NOTE);
+    await page.getByRole('heading', { name: 'Presentation text' }).click();
+    await note.waitFor();
+    await page.waitForTimeout(1500); // the picture fades in and refines
     await page.screenshot({ path: join(shots, 'present-edit.png') });
   });
 
@@ -119,8 +126,12 @@ describe('presentation', () => {
       meta: { title: string; description: string; stepNotes: Record<string, string> };
     };
     expect(doc.meta.title).toBe('Three mirrors');
-    expect(doc.meta.description).toContain(HOSTILE);
-    expect(Object.values(doc.meta.stepNotes).sort()).toEqual(['Now the **second** corner.', 'Third.']);
+    expect(doc.meta.description).toContain('**kaleidoscope**');
+    expect(Object.values(doc.meta.stepNotes).sort()).toEqual([
+      'Now the **second** corner.',
+      LAST_NOTE,
+      THIRD,
+    ]);
     await openViaPicker(page, 'k333.kleinflow.json', Buffer.from(example('kaleidoscope-333')));
     await page.getByRole('button', { name: 'Present' }).click();
     expect(await page.getByRole('navigation', { name: 'Step list' }).getByText('✎').count()).toBe(0);
@@ -131,7 +142,7 @@ describe('presentation', () => {
       .poll(() => page.getByRole('textbox', { name: 'Document title' }).inputValue())
       .toBe('Three mirrors');
     await page.getByRole('button', { name: 'Present' }).click();
-    expect(await page.getByRole('navigation', { name: 'Step list' }).getByText('✎').count()).toBe(2);
+    expect(await page.getByRole('navigation', { name: 'Step list' }).getByText('✎').count()).toBe(3);
     await page.keyboard.press('Escape');
   });
 

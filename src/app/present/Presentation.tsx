@@ -48,6 +48,7 @@ export function Presentation({ onExit, editorHref }: Props) {
   // On a phone the list covers the picture: closed by default, and closed again once a step is picked.
   useEffect(() => setListOpen(!narrow), [narrow]);
   const [editing, setEditing] = useState(false);
+  const [headOpen, setHeadOpen] = useState(false);
   const built = Math.min(count, steps.length);
   const shown = useMemo(() => readOnly(evaluationUpTo(evaluation, steps, built)), [evaluation, steps, built]);
   const pictured = built >= steps.length || renderReached(evaluation, steps, built);
@@ -90,10 +91,22 @@ export function Presentation({ onExit, editorHref }: Props) {
           onFrame={noop}
           onViewport={noop}
         />
-        <header className="kf-present__head">
+        <header className={`kf-present__head${headOpen ? ' kf-present__head--open' : ''}`}>
           <h1 className="kf-present__title">{title}</h1>
           {doc.meta.description?.trim() && (
-            <Markdown className="kf-present__description" text={doc.meta.description} />
+            <>
+              <Markdown className="kf-present__description" text={doc.meta.description} />
+              {narrow && (
+                <button
+                  type="button"
+                  className="kf-present__more"
+                  aria-expanded={headOpen}
+                  onClick={() => setHeadOpen(!headOpen)}
+                >
+                  {headOpen ? 'Less' : 'More'}
+                </button>
+              )}
+            </>
           )}
         </header>
         <div className="kf-present__tools" role="toolbar" aria-label="Presentation">

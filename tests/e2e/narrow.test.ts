@@ -143,11 +143,17 @@ describe.each([
     expect(await page.getByTestId('step-now').textContent()).toMatch(/^Step 2 \//);
     if (device === 'phone') expect(await list.count()).toBe(0); // picking a step uncovers the picture
     await page.keyboard.press('End');
-    await page.waitForTimeout(500);
+    // The whole construction shows the picture (the canvas fades in), in view under the panels.
+    const canvas = page.locator('canvas.kf-render__canvas');
+    await expect
+      .poll(() => canvas.evaluate((c) => getComputedStyle(c).opacity), { timeout: 30_000 })
+      .toBe('1');
+    expect(await inView(page, canvas)).toBe(true);
+    await page.waitForTimeout(device === 'phone' ? 2_000 : 0); // a first frame for the screenshot
     await page.screenshot({ path: join(shots, `${device}-present.png`) });
     await page.keyboard.press('Escape');
     await page.locator('.kf-topbar').waitFor();
-  });
+  }, 60_000);
 
   it.runIf(device === 'phone')('shows one pane at a time: Graph, Picture and Inspector tabs', async () => {
     const tabs = page.getByRole('tablist', { name: 'Panes' });

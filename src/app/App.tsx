@@ -105,13 +105,13 @@ export function App({ initialMessages }: Props) {
       else if (mod && (key === 'y' || (key === 'z' && e.shiftKey))) store.redo();
       else if (mod && key === 's') save();
       else if (mod && key === 'o') open();
-      else if (!mod && e.key === '?') setHelp(true);
+      else if (!mod && e.key === '?' && !presenting) setHelp(true);
       else return;
       e.preventDefault();
     };
     window.addEventListener('keydown', onKey);
     return () => window.removeEventListener('keydown', onKey);
-  }, [store, save, open]);
+  }, [store, save, open, presenting]);
 
   const onViewport = useCallback((v: Viewport | null) => {
     viewport.current = v;

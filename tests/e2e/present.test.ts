@@ -120,8 +120,10 @@ describe('presentation', () => {
   });
 
   it('Esc leaves the presentation; the text is in the saved document and comes back from the file', async () => {
+    await page.keyboard.press('?'); // the editor's Help key does nothing while presenting …
     await page.keyboard.press('Escape');
     await page.locator('.react-flow').waitFor();
+    expect(await page.getByRole('dialog', { name: 'Help' }).count()).toBe(0); // … nor after
     const doc = (await currentDoc(page)) as {
       meta: { title: string; description: string; stepNotes: Record<string, string> };
     };

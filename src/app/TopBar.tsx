@@ -1,6 +1,6 @@
 /**
  * The top bar: document title, examples, file actions, export, present, undo/redo, play and help.
- * On a phone-narrow window every command but Present moves into one ☰ menu, in the same order.
+ * On a phone-narrow window every command but Present moves into one ☰ menu (commandGroups).
  */
 import { useEffect, useState } from 'react';
 import type { Example } from './examples.ts';
@@ -14,8 +14,6 @@ interface Props {
   readonly redoLabel: string | null;
   readonly playing: boolean;
   readonly exportItems: readonly MenuItem[];
-  /** Phone-narrow: the commands collapse into one menu (default: from the window width). */
-  readonly narrow?: boolean;
   onTitle(title: string): void;
   onExample(example: Example): void;
   onNew(): void;
@@ -28,13 +26,9 @@ interface Props {
   onPresent(): void;
 }
 
-/** Every toolbar command, grouped as the desktop bar groups them, for the phone's menu. */
+/** Every toolbar command but Present, in groups, for the phone's menu. */
 function commandGroups(p: Props): MenuGroup[] {
   return [
-    {
-      label: 'Examples',
-      items: p.examples.map((ex) => ({ label: ex.title, onSelect: () => p.onExample(ex) })),
-    },
     {
       label: 'File',
       items: [
@@ -43,7 +37,6 @@ function commandGroups(p: Props): MenuGroup[] {
         { label: 'Save', hint: 'Ctrl S', onSelect: p.onSave },
       ],
     },
-    { label: 'Export', items: p.exportItems },
     {
       label: 'Edit',
       items: [
@@ -57,6 +50,12 @@ function commandGroups(p: Props): MenuGroup[] {
         { label: p.playing ? 'Pause animation' : 'Play animation', onSelect: p.onPlay },
         { label: 'Help', hint: '?', onSelect: p.onHelp },
       ],
+    },
+    { label: 'Export', items: p.exportItems },
+    // The long list last, so the short groups above need no scrolling.
+    {
+      label: 'Examples',
+      items: p.examples.map((ex) => ({ label: ex.title, onSelect: () => p.onExample(ex) })),
     },
   ];
 }
@@ -77,8 +76,7 @@ function PresentButton({ onPresent }: Pick<Props, 'onPresent'>) {
 export function TopBar(p: Props) {
   const [title, setTitle] = useState(p.title);
   useEffect(() => setTitle(p.title), [p.title]);
-  const narrowWindow = useNarrow();
-  const narrow = p.narrow ?? narrowWindow;
+  const narrow = useNarrow();
   return (
     <header className={narrow ? 'kf-topbar kf-topbar--narrow' : 'kf-topbar'}>
       <div className="kf-brand">

@@ -18,8 +18,11 @@ export function PresentEditor({ step, number }: { step: ConstructionStep | undef
   const setMeta = (patch: Partial<typeof meta>, label: string) =>
     store.dispatch({ type: 'set-meta', meta: { ...store.getState().doc.meta, ...patch } }, label);
   const setNote = (nodeId: string, text: string) => {
-    const { [nodeId]: _old, ...rest } = store.getState().doc.meta.stepNotes ?? {};
-    const stepNotes = text.trim() ? { ...rest, [nodeId]: text } : rest;
+    const { meta: now, nodes } = store.getState().doc;
+    // Notes of nodes deleted since are dropped here, so they never count against NOTES_MAX.
+    const ids = new Set(nodes.map((n) => n.id));
+    const rest = Object.entries(now.stepNotes ?? {}).filter(([id]) => id !== nodeId && ids.has(id));
+    const stepNotes = Object.fromEntries(text.trim() ? [...rest, [nodeId, text]] : rest);
     setMeta({ stepNotes }, `edit the note of step ${number}`);
   };
   return (

@@ -174,6 +174,17 @@ describe.each([
     await page.getByTestId('render-pane').waitFor();
   });
 
+  it("fits the first visit's welcome card, every choice inside the window", async () => {
+    const first = await (await app.newContext({ width, height }, { firstVisit: true })).newPage();
+    await first.goto(app.url);
+    const card = first.getByRole('region', { name: 'Welcome to Kleinflow' });
+    await card.waitFor();
+    const buttons = card.getByRole('button');
+    for (let i = 0; i < (await buttons.count()); i++)
+      expect(await inView(first, buttons.nth(i)), await buttons.nth(i).textContent()).toBe(true);
+    await first.close();
+  });
+
   it('no console errors', () => {
     expect(problems).toEqual([]);
   });

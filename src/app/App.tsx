@@ -1,6 +1,7 @@
 /**
- * The app shell: top bar, graph editor | live render (resizable), status line. Owns the
- * evaluation (memoised per document change), global shortcuts, files and export.
+ * The app shell: top bar, graph editor | live render (resizable; tabs on a phone), status line,
+ * or the presentation in their place. Owns the evaluation (memoised per document change), global
+ * shortcuts, files and export.
  */
 import { ReactFlowProvider } from '@xyflow/react';
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';

@@ -181,7 +181,7 @@ describe.each([
     await card.waitFor();
     const buttons = card.getByRole('button');
     for (let i = 0; i < (await buttons.count()); i++)
-      expect(await inView(first, buttons.nth(i)), await buttons.nth(i).textContent()).toBe(true);
+      expect(await inView(first, buttons.nth(i)), (await buttons.nth(i).textContent()) ?? '').toBe(true);
     await first.close();
   });
 

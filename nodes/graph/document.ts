@@ -34,10 +34,24 @@ export const viewSchema = z.strictObject({
   scale: finite.positive('expected a positive number'),
 }) satisfies z.ZodType<View>;
 
+/** Limits on the presentation text (docs: README "Presentation"): generous for a lesson, bounded for a URL. */
+export const NOTE_MAX_CHARS = 5_000;
+export const NOTES_MAX = 500;
+
+/**
+ * The presenter's note for each construction step, keyed by node id (plain text or the small
+ * Markdown subset the presentation renders as text, never HTML). Notes of deleted nodes are ignored.
+ */
+export const stepNotesSchema = z
+  .record(id, z.string().max(NOTE_MAX_CHARS, `notes are at most ${NOTE_MAX_CHARS} characters`))
+  .refine((notes) => Object.keys(notes).length <= NOTES_MAX, `at most ${NOTES_MAX} step notes`)
+  .meta({ maxProperties: NOTES_MAX });
+
 export const metaSchema = z
   .object({
     title: z.string().max(500).optional(),
     description: z.string().max(20_000).optional(),
+    stepNotes: stepNotesSchema.optional(),
   })
   .catchall(z.unknown());
 

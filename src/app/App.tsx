@@ -1,6 +1,7 @@
 /**
- * The app shell: top bar, graph editor | live render (resizable), status line. Owns the
- * evaluation (memoised per document change), global shortcuts, files and export.
+ * The app shell: top bar, graph editor | live render (resizable; tabs on a phone), status line,
+ * or the presentation in their place. Owns the evaluation (memoised per document change), global
+ * shortcuts, files and export.
  */
 import { ReactFlowProvider } from '@xyflow/react';
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
@@ -19,6 +20,7 @@ import { EXAMPLES } from './examples.ts';
 import { ExamplesGallery } from './gallery/ExamplesGallery.tsx';
 import { HelpDialog } from './help/HelpDialog.tsx';
 import { loadedMessage, useDocumentIo } from './io/use-document-io.tsx';
+import { Presentation } from './present/Presentation.tsx';
 import { type RenderInfo, RenderPane } from './RenderPane.tsx';
 import { SplitPane } from './SplitPane.tsx';
 import { StatusBar } from './StatusBar.tsx';
@@ -62,6 +64,7 @@ export function App({ initialMessages }: Props) {
   const [welcome, setWelcome] = useState(() => !welcomeSeen(storage()));
   const [walkthrough, setWalkthrough] = useState(false);
   const [gallery, setGallery] = useState(false);
+  const [presenting, setPresenting] = useState(false);
   const [frameKey, setFrameKey] = useState(0);
   const viewport = useRef<Viewport | null>(null);
   const fileInput = useRef<HTMLInputElement>(null);
@@ -119,13 +122,13 @@ export function App({ initialMessages }: Props) {
       else if (mod && (key === 'y' || (key === 'z' && e.shiftKey))) store.redo();
       else if (mod && key === 's') save();
       else if (mod && key === 'o') open();
-      else if (!mod && e.key === '?') setHelp(true);
+      else if (!mod && e.key === '?' && !presenting) setHelp(true);
       else return;
       e.preventDefault();
     };
     window.addEventListener('keydown', onKey);
     return () => window.removeEventListener('keydown', onKey);
-  }, [store, save, open]);
+  }, [store, save, open, presenting]);
 
   const onViewport = useCallback((v: Viewport | null) => {
     viewport.current = v;
@@ -135,6 +138,20 @@ export function App({ initialMessages }: Props) {
     [evaluation, renderDiagnostics],
   );
 
+  const graphEditor = (inspectorTab: boolean) => (
+    <ReactFlowProvider>
+      <GraphEditor
+        evaluation={evaluation}
+        extraDiagnostics={renderDiagnostics}
+        hoveredNodeId={hovered}
+        frameKey={frameKey}
+        onHoverNode={setHovered}
+        inspectorTab={inspectorTab}
+      />
+    </ReactFlowProvider>
+  );
+
+  if (presenting) return <Presentation onExit={() => setPresenting(false)} />;
   return (
     <div className="kf-app">
       <TopBar
@@ -154,20 +171,12 @@ export function App({ initialMessages }: Props) {
         onRedo={store.redo}
         onPlay={() => store.setPlaying(!playing)}
         onHelp={() => setHelp(true)}
+        onPresent={() => setPresenting(true)}
       />
       <Banner messages={messages} onDismiss={(id) => setMessages((ms) => ms.filter((m) => m.id !== id))} />
       <SplitPane
-        left={
-          <ReactFlowProvider>
-            <GraphEditor
-              evaluation={evaluation}
-              extraDiagnostics={renderDiagnostics}
-              hoveredNodeId={hovered}
-              frameKey={frameKey}
-              onHoverNode={setHovered}
-            />
-          </ReactFlowProvider>
-        }
+        left={graphEditor(false)}
+        inspector={graphEditor(true)}
         right={
           <RenderPane
             evaluation={evaluation}

@@ -1,6 +1,10 @@
-/** The top bar: document title, examples, file actions, export, undo/redo, play and help. */
+/**
+ * The top bar: document title, examples, file actions, export, present, undo/redo, play and help.
+ * On a phone-narrow window every command but Present moves into one ☰ menu (commandGroups).
+ */
 import { useEffect, useState } from 'react';
-import { Menu, type MenuItem } from './Menu.tsx';
+import { Menu, type MenuGroup, type MenuItem } from './Menu.tsx';
+import { useNarrow } from './use-narrow.ts';
 
 interface Props {
   readonly title: string;
@@ -17,13 +21,58 @@ interface Props {
   onRedo(): void;
   onPlay(): void;
   onHelp(): void;
+  onPresent(): void;
+}
+
+/** Every toolbar command but Present, in groups, for the phone's menu. */
+function commandGroups(p: Props): MenuGroup[] {
+  return [
+    {
+      label: 'File',
+      items: [
+        { label: 'Examples…', hint: 'gallery', onSelect: p.onExamples },
+        { label: 'New', hint: 'empty graph', onSelect: p.onNew },
+        { label: 'Open…', hint: 'Ctrl O', onSelect: p.onOpen },
+        { label: 'Save', hint: 'Ctrl S', onSelect: p.onSave },
+      ],
+    },
+    {
+      label: 'Edit',
+      items: [
+        { label: 'Undo', hint: p.undoLabel ?? undefined, disabled: !p.undoLabel, onSelect: p.onUndo },
+        { label: 'Redo', hint: p.redoLabel ?? undefined, disabled: !p.redoLabel, onSelect: p.onRedo },
+      ],
+    },
+    {
+      label: 'View',
+      items: [
+        { label: p.playing ? 'Pause animation' : 'Play animation', onSelect: p.onPlay },
+        { label: 'Help', hint: '?', onSelect: p.onHelp },
+      ],
+    },
+    { label: 'Export', items: p.exportItems },
+  ];
+}
+
+function PresentButton({ onPresent }: Pick<Props, 'onPresent'>) {
+  return (
+    <button
+      type="button"
+      className="kf-button kf-button--present"
+      onClick={onPresent}
+      title="Present the construction step by step (Esc leaves)"
+    >
+      Present
+    </button>
+  );
 }
 
 export function TopBar(p: Props) {
   const [title, setTitle] = useState(p.title);
   useEffect(() => setTitle(p.title), [p.title]);
+  const narrow = useNarrow();
   return (
-    <header className="kf-topbar">
+    <header className={narrow ? 'kf-topbar kf-topbar--narrow' : 'kf-topbar'}>
       <div className="kf-brand">
         <svg viewBox="0 0 24 24" width="20" height="20" aria-hidden="true">
           <circle cx="12" cy="12" r="9.5" fill="none" stroke="currentColor" strokeWidth="1.5" />
@@ -41,76 +90,84 @@ export function TopBar(p: Props) {
         onBlur={() => title !== p.title && p.onTitle(title)}
         onKeyDown={(e) => e.key === 'Enter' && (e.target as HTMLInputElement).blur()}
       />
-      <nav className="kf-toolbar" aria-label="Document">
-        <button
-          type="button"
-          className="kf-button"
-          onClick={p.onExamples}
-          aria-haspopup="dialog"
-          title="Open an example graph (a gallery you can search)"
-        >
-          Examples
-        </button>
-        <button type="button" className="kf-button" onClick={p.onNew} title="Start an empty graph">
-          New
-        </button>
-        <button
-          type="button"
-          className="kf-button"
-          onClick={p.onOpen}
-          title="Open a .kleinflow.json file or a Kleinflow PNG (Ctrl O)"
-        >
-          Open…
-        </button>
-        <button
-          type="button"
-          className="kf-button"
-          onClick={p.onSave}
-          title="Download the graph as .kleinflow.json (Ctrl S)"
-        >
-          Save
-        </button>
-        <Menu label="Export" title="Export a picture or the shader" items={p.exportItems} />
-        <span className="kf-toolbar__gap" />
-        <button
-          type="button"
-          className="kf-button kf-button--icon"
-          onClick={p.onUndo}
-          disabled={!p.undoLabel}
-          aria-label="Undo"
-          title={p.undoLabel ? `Undo ${p.undoLabel} (Ctrl Z)` : 'Nothing to undo'}
-        >
-          ↶
-        </button>
-        <button
-          type="button"
-          className="kf-button kf-button--icon"
-          onClick={p.onRedo}
-          disabled={!p.redoLabel}
-          aria-label="Redo"
-          title={p.redoLabel ? `Redo ${p.redoLabel} (Ctrl Y)` : 'Nothing to redo'}
-        >
-          ↷
-        </button>
-        <button
-          type="button"
-          className={`kf-button kf-button--icon${p.playing ? ' kf-button--active' : ''}`}
-          onClick={p.onPlay}
-          aria-label={p.playing ? 'Pause animation' : 'Play animation'}
-          title={p.playing ? 'Pause animation time' : 'Play animation time (nodes may read time)'}
-        >
-          {p.playing ? '❚❚' : '▶'}
-        </button>
-        <button
-          type="button"
-          className="kf-button kf-button--icon"
-          onClick={p.onHelp}
-          aria-label="Help"
-          title="Help and shortcuts (?)"
-        >
-          ?
-        </button>
-      </nav>
+      {narrow ? (
+        <nav className="kf-toolbar" aria-label="Document">
+          <PresentButton onPresent={p.onPresent} />
+          <Menu label="☰" ariaLabel="Menu" title="Every command" groups={commandGroups(p)} alignEnd />
+        </nav>
+      ) : (
+        <nav className="kf-toolbar" aria-label="Document">
+          <button
+            type="button"
+            className="kf-button"
+            onClick={p.onExamples}
+            aria-haspopup="dialog"
+            title="Open an example graph (a gallery you can search)"
+          >
+            Examples
+          </button>
+          <button type="button" className="kf-button" onClick={p.onNew} title="Start an empty graph">
+            New
+          </button>
+          <button
+            type="button"
+            className="kf-button"
+            onClick={p.onOpen}
+            title="Open a .kleinflow.json file or a Kleinflow PNG (Ctrl O)"
+          >
+            Open…
+          </button>
+          <button
+            type="button"
+            className="kf-button"
+            onClick={p.onSave}
+            title="Download the graph as .kleinflow.json (Ctrl S)"
+          >
+            Save
+          </button>
+          <Menu label="Export" title="Export a picture or the shader" items={p.exportItems} />
+          <PresentButton onPresent={p.onPresent} />
+          <span className="kf-toolbar__gap" />
+          <button
+            type="button"
+            className="kf-button kf-button--icon"
+            onClick={p.onUndo}
+            disabled={!p.undoLabel}
+            aria-label="Undo"
+            title={p.undoLabel ? `Undo ${p.undoLabel} (Ctrl Z)` : 'Nothing to undo'}
+          >
+            ↶
+          </button>
+          <button
+            type="button"
+            className="kf-button kf-button--icon"
+            onClick={p.onRedo}
+            disabled={!p.redoLabel}
+            aria-label="Redo"
+            title={p.redoLabel ? `Redo ${p.redoLabel} (Ctrl Y)` : 'Nothing to redo'}
+          >
+            ↷
+          </button>
+          <button
+            type="button"
+            className={`kf-button kf-button--icon${p.playing ? ' kf-button--active' : ''}`}
+            onClick={p.onPlay}
+            aria-label={p.playing ? 'Pause animation' : 'Play animation'}
+            title={p.playing ? 'Pause animation time' : 'Play animation time (nodes may read time)'}
+          >
+            {p.playing ? '❚❚' : '▶'}
+          </button>
+          <button
+            type="button"
+            className="kf-button kf-button--icon"
+            onClick={p.onHelp}
+            aria-label="Help"
+            title="Help and shortcuts (?)"
+          >
+            ?
+          </button>
+        </nav>
+      )}
     </header>
   );
 }

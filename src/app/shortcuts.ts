@@ -45,8 +45,21 @@ export const SHORTCUTS: readonly { group: string; items: readonly Shortcut[] }[]
       { keys: ['Ctrl O'], action: 'Open a file (.json or a Kleinflow PNG)' },
       { keys: ['Drop a file'], action: 'Open it (.json, Flower graph, Kleinflow PNG)' },
       { keys: ['Ctrl V'], action: 'Paste a whole graph or share link: opens it' },
-      { keys: ['?mode=present'], action: 'Classroom: full-screen render, ← → step through' },
       { keys: ['?'], action: 'This help' },
+    ],
+  },
+  {
+    group: 'Presentation',
+    items: [
+      {
+        keys: ['Present button'],
+        action: 'Present the construction from step 1 (Edit text: title, description, notes)',
+      },
+      { keys: ['→', 'PageDown'], action: 'Next step' },
+      { keys: ['←', 'PageUp'], action: 'Previous step' },
+      { keys: ['Home', 'End'], action: 'Back to the start, or the whole construction' },
+      { keys: ['Esc'], action: 'Leave the presentation (first leaves a text field)' },
+      { keys: ['?mode=present'], action: 'A present link: read-only, for the class (Copy present link)' },
     ],
   },
 ];

@@ -47,9 +47,18 @@ interface Props {
   /** Changes when a document is loaded: the graph is framed again. */
   readonly frameKey: number;
   onHoverNode(id: string | null): void;
+  /** The phone's Inspector tab: the inspector is open and covers the pane. */
+  readonly inspectorTab?: boolean;
 }
 
-export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, frameKey, onHoverNode }: Props) {
+export function GraphEditor({
+  evaluation,
+  extraDiagnostics,
+  hoveredNodeId,
+  frameKey,
+  onHoverNode,
+  inspectorTab = false,
+}: Props) {
   const store = useStore();
   const doc = useEditorState((s) => s.doc);
   const selection = useEditorState((s) => s.selection);
@@ -57,7 +66,8 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, frame
   const [nodes, setNodes] = useState<KfNode[]>([]);
   const [selectedEdges, setSelectedEdges] = useState<ReadonlySet<string>>(new Set());
   const [palette, setPalette] = useState<PaletteState | null>(null);
-  const [inspectorOpen, setInspectorOpen] = useRememberedFlag('kleinflow.inspector', false);
+  const [inspectorRemembered, setInspectorOpen] = useRememberedFlag('kleinflow.inspector', false);
+  const inspectorOpen = inspectorRemembered || inspectorTab;
   const pointer = useRef<{ x: number; y: number } | null>(null);
   const wrapper = useRef<HTMLDivElement>(null);
 
@@ -225,7 +235,7 @@ export function GraphEditor({ evaluation, extraDiagnostics, hoveredNodeId, frame
     <EditorContext.Provider value={actions}>
       {/* biome-ignore lint/a11y/noStaticElementInteractions: tracks the pointer (where new nodes land); React Flow is the interactive canvas */}
       <div
-        className="kf-graph"
+        className={inspectorTab ? 'kf-graph kf-graph--inspector-tab' : 'kf-graph'}
         ref={wrapper}
         onPointerMove={(e) => {
           pointer.current = { x: e.clientX, y: e.clientY };

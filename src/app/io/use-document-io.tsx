@@ -51,7 +51,7 @@ function renderSize(): Size {
   return { width: pane?.clientWidth || 1280, height: pane?.clientHeight || 720 };
 }
 
-async function copyText(text: string): Promise<boolean> {
+export async function copyText(text: string): Promise<boolean> {
   try {
     await navigator.clipboard.writeText(text);
     return true;

@@ -145,7 +145,7 @@ describe('source comments cite docs/ that exist', () => {
   it('the README links every page in docs/', () => {
     const readme = readFileSync(join(ROOT, 'README.md'), 'utf8');
     const pages = readdirSync(join(ROOT, 'docs')).filter((n) => n.endsWith('.md'));
-    expect(pages.sort()).toEqual(['architecture.md', 'math.md', 'testing.md']);
+    expect(pages.length).toBeGreaterThanOrEqual(3);
     for (const page of pages) expect(readme).toContain(`(docs/${page})`);
   });
 });

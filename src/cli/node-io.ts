@@ -17,6 +17,8 @@ function output(stream: NodeJS.WriteStream): CliOutput {
 }
 
 async function openFile(path: string): Promise<InputFile> {
+  // "-" is standard input (a pipe, socket or terminal: /dev/stdin cannot open a socket).
+  if (path === '-') return { size: null, chunks: process.stdin };
   const handle = await open(path, 'r');
   let size: number | null;
   try {

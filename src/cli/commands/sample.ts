@@ -35,7 +35,7 @@ export const sampleCommand: CliCommand = {
     'max iterations, on or near the limit set). The clip disk and colours do not apply.',
     '',
     'The points are read and the results written as a stream: any number of points works in',
-    'bounded memory, and output starts at once (--points /dev/stdin reads a pipe). One entry may',
+    'bounded memory, and output starts at once (--points - reads standard input). One entry may',
     `be at most ${formatBytes(INPUT_LIMITS.pointEntryChars)}; GRAPH at most ${formatBytes(INPUT_LIMITS.documentBytes)} (a PNG ${formatBytes(INPUT_LIMITS.pngBytes)}). A points file of`,
     `${formatBytes(PROGRESS_BYTES)} or more shows progress on stderr. A bad entry ends the command with exit`,
     '1 and one line naming it; the results before it may already have been printed.',

@@ -11,6 +11,7 @@ import { useEditorState, useStore } from '../state/use-store.ts';
 import { type NodePatch, RenderOverlay } from '../viewport/overlay/RenderOverlay.tsx';
 import { attachPanZoom } from '../viewport/pan-zoom.ts';
 import { Viewport } from '../viewport/viewport.ts';
+import { renderHint } from './render-hint.ts';
 import { exposeForTests } from './test-hooks.ts';
 
 /** Pan/zoom settles into the document this long after the last wheel tick or drag. */
@@ -126,6 +127,7 @@ export function RenderPane({
     viewport.current?.setView(view);
   }, [view]);
 
+  const hint = renderHint(doc, evaluation);
   const patchChange = (patches: NodePatch[]) => ({ type: 'set-params' as const, patches });
   return (
     <div className="kf-render" ref={pane} data-testid="render-pane">
@@ -144,9 +146,7 @@ export function RenderPane({
         />
       )}
       {failure && <div className="kf-render__failure">{failure}</div>}
-      {evaluation.scene.renderNodeId === null && doc.nodes.length > 0 && (
-        <div className="kf-render__hint">Wire elements into a Render node to see a picture.</div>
-      )}
+      {hint && <div className="kf-render__hint">{hint}</div>}
     </div>
   );
 }

@@ -14,11 +14,18 @@ import { defaultExample } from './app/examples.ts';
 import { download } from './app/files.ts';
 import { appMode } from './app/present/app-mode.ts';
 import { PresentApp } from './app/present/PresentApp.tsx';
-import { AUTOSAVE_BACKUP_KEY, type Restored, restore } from './state/autosave.ts';
+import {
+  AUTOSAVE_BACKUP_KEY,
+  AUTOSAVE_KEY,
+  type AutosaveHold,
+  createAutosaveHold,
+  type Restored,
+  restore,
+} from './state/autosave.ts';
 import { createEditorStore } from './state/store.ts';
 import { StoreContext } from './state/use-store.ts';
 
-function start(): { doc: GraphDoc; messages: Message[] } {
+function start(): { doc: GraphDoc; messages: Message[]; hold: AutosaveHold } {
   let restored: Restored = { kind: 'none' };
   try {
     restored = restore(window.localStorage);
@@ -26,35 +33,59 @@ function start(): { doc: GraphDoc; messages: Message[] } {
     // storage unavailable: start fresh (the autosave hook reports it)
   }
   const fallback = defaultExample()?.doc ?? emptyDocument();
-  if (restored.kind === 'ok') return { doc: restored.doc, messages: [] };
-  if (restored.kind === 'none') return { doc: fallback, messages: [] };
-  const { text, problems } = restored;
+  const free = createAutosaveHold(false);
+  if (restored.kind === 'ok') return { doc: restored.doc, messages: [], hold: free };
+  if (restored.kind === 'none') return { doc: fallback, messages: [], hold: free };
+  const { text, problems, backedUp } = restored;
+  // Without a backup the broken save is the only copy: autosave waits until it is taken care of.
+  const hold = createAutosaveHold(!backedUp);
+  const downloadIt = () => {
+    download('kleinflow-unreadable-autosave.json', text, 'application/json');
+    hold.release();
+  };
+  const discardIt = () => {
+    try {
+      window.localStorage.removeItem(AUTOSAVE_KEY);
+    } catch {
+      // storage unavailable: nothing left to discard
+    }
+    hold.release();
+  };
+  // The banner says only what is true: where the text is kept, and whether autosave is paused.
+  const where = backedUp
+    ? `it is kept under “${AUTOSAVE_BACKUP_KEY}” in this browser`
+    : 'the browser storage has no room for a backup copy, so autosave is paused until you download or discard it';
   return {
     doc: fallback,
+    hold,
     messages: [
       {
         id: 'restore',
         kind: 'error',
-        text: `Your last session could not be restored (it is kept under “${AUTOSAVE_BACKUP_KEY}” in this browser). Download it to repair it by hand:`,
+        text: `Your last session could not be restored (${where}). Download it to repair it by hand:`,
         details: problems.map((d) => `${d.code} ${d.message}`),
-        actions: [
-          {
-            label: 'Download it',
-            run: () => download('kleinflow-unreadable-autosave.json', text, 'application/json'),
-          },
-        ],
+        actions: backedUp
+          ? [{ label: 'Download it', run: downloadIt }]
+          : [
+              { label: 'Download it', run: downloadIt },
+              { label: 'Discard it', run: discardIt },
+            ],
       },
     ],
   };
 }
 
-const { doc, messages } = start();
+const { doc, messages, hold } = start();
 const mode = appMode(window.location.search);
 const store = createEditorStore(doc, registry);
 createRoot(document.getElementById('root')!).render(
   <StrictMode>
     <StoreContext.Provider value={store}>
-      {mode === 'editor' ? <App initialMessages={messages} /> : <PresentApp mode={mode} />}
+      {mode === 'editor' ? (
+        <App initialMessages={messages} autosaveHold={hold} />
+      ) : (
+        <PresentApp mode={mode} />
+      )}
     </StoreContext.Provider>
   </StrictMode>,
 );

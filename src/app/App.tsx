@@ -10,6 +10,7 @@ import { emptyDocument, type GraphDoc } from '../../nodes/graph/document.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { GraphEditor } from '../editor/GraphEditor.tsx';
 import { isTyping } from '../editor/typing.ts';
+import type { AutosaveHold } from '../state/autosave.ts';
 import { createEvaluator } from '../state/evaluation.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
 import { fitSquareView } from '../viewport/fit-view.ts';
@@ -46,9 +47,11 @@ const storage = (): Storage | undefined => {
 
 interface Props {
   readonly initialMessages: readonly Message[];
+  /** Held while an unreadable autosave without a backup must not be overwritten (see main.tsx). */
+  readonly autosaveHold?: AutosaveHold;
 }
 
-export function App({ initialMessages }: Props) {
+export function App({ initialMessages, autosaveHold }: Props) {
   const store = useStore();
   const doc = useEditorState((s) => s.doc);
   const time = useEditorState((s) => s.time);
@@ -70,7 +73,7 @@ export function App({ initialMessages }: Props) {
   const fileInput = useRef<HTMLInputElement>(null);
   useAnimationClock(store, playing);
   const say = useCallback((m: Message) => setMessages((ms) => [...ms.filter((x) => x.id !== m.id), m]), []);
-  const saveState = useAutosave(store, say);
+  const saveState = useAutosave(store, say, autosaveHold);
 
   const load = useCallback(
     (next: GraphDoc, label: string) => {

@@ -4,6 +4,8 @@
  */
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { type OpenResult, openBytes, serializeDocument } from '../io/document-io.ts';
+import { fileLimit, tooLargeMessage } from '../io/input-limits.ts';
+import { openProblem } from '../io/open-result.ts';
 
 export function download(name: string, data: BlobPart, type: string): void {
   const url = URL.createObjectURL(new Blob([data], { type }));
@@ -30,7 +32,12 @@ export function saveDocument(doc: GraphDoc): void {
   download(`${fileStem(doc)}.kleinflow.json`, serializeDocument(doc), 'application/json');
 }
 
-/** Reads a chosen or dropped file: Kleinflow JSON, a Flower graph or a Kleinflow PNG. */
+/**
+ * Reads a chosen or dropped file: Kleinflow JSON, a Flower graph or a Kleinflow PNG. A file past
+ * its limit (src/io/input-limits.ts) is refused from its size, before anything is read.
+ */
 export async function readDocumentFile(file: File): Promise<OpenResult> {
+  const limit = fileLimit(new Uint8Array(await file.slice(0, 8).arrayBuffer()));
+  if (file.size > limit.bytes) return openProblem(tooLargeMessage(limit, file.size));
   return openBytes(new Uint8Array(await file.arrayBuffer()));
 }

@@ -3,11 +3,11 @@
  * storage or a refused write is shown as a message, and the status line says "Saved"/"Not saved".
  */
 import { useEffect, useState } from 'react';
-import { createAutosaver } from '../state/autosave.ts';
+import { type AutosaveHold, createAutosaver } from '../state/autosave.ts';
 import type { EditorStore } from '../state/store.ts';
 import type { Message } from './Banner.tsx';
 
-export function useAutosave(store: EditorStore, say: (m: Message) => void): string {
+export function useAutosave(store: EditorStore, say: (m: Message) => void, hold?: AutosaveHold): string {
   const [state, setState] = useState('Saved in this browser');
   useEffect(() => {
     let storage: Storage;
@@ -17,12 +17,25 @@ export function useAutosave(store: EditorStore, say: (m: Message) => void): stri
       setState('Not saved: browser storage is disabled');
       return;
     }
-    const saver = createAutosaver(storage, (outcome) => {
-      if (outcome.ok) setState('Saved in this browser');
-      else {
-        setState('Not saved');
-        say({ id: 'autosave', kind: 'error', text: outcome.message });
-      }
+    const saver = createAutosaver(
+      storage,
+      (outcome) => {
+        if (outcome.ok) setState('Saved in this browser');
+        else if (outcome.reason === 'held') setState('Not saved: autosave paused');
+        else {
+          setState('Not saved');
+          say({ id: 'autosave', kind: 'error', text: outcome.message });
+        }
+      },
+      undefined,
+      undefined,
+      hold,
+    );
+    if (hold?.held) setState('Not saved: autosave paused');
+    // Released (the unreadable save was downloaded or discarded): save the graph as it is now.
+    const unhold = hold?.onRelease(() => {
+      saver.schedule(store.getState().doc);
+      saver.flush();
     });
     let last = store.getState().doc;
     const unsubscribe = store.subscribe(() => {
@@ -37,9 +50,10 @@ export function useAutosave(store: EditorStore, say: (m: Message) => void): stri
     return () => {
       window.removeEventListener('pagehide', flush);
       unsubscribe();
+      unhold?.();
       saver.flush();
       saver.dispose();
     };
-  }, [store, say]);
+  }, [store, say, hold]);
   return state;
 }

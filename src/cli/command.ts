@@ -8,13 +8,29 @@ export interface CliOutput {
   write(text: string): void;
   /** True when a person watches (a terminal): commands may draw live progress then. */
   readonly isTTY?: boolean;
+  /**
+   * Resolves once what was written has gone out (a pipe's reader caught up). Commands that write a
+   * lot await it between pieces, so their memory stays bounded however slow the reader is.
+   */
+  drain?(): Promise<void>;
+}
+
+/** A file opened for reading in pieces. */
+export interface InputFile {
+  /** Its length in bytes when it is a regular file; null for a pipe or a device (length unknown). */
+  readonly size: number | null;
+  /** Its bytes, a piece at a time; the file is closed when the iteration ends or stops early. */
+  readonly chunks: AsyncIterable<Uint8Array>;
 }
 
 export interface CliIo {
   readonly stdout: CliOutput;
   readonly stderr: CliOutput;
-  /** Reads a whole file as bytes; rejects with a Node-style error (code ENOENT, EISDIR, …). */
-  readFile(path: string): Promise<Uint8Array>;
+  /**
+   * Opens a file for reading; rejects with a Node-style error (code ENOENT, EISDIR, …). Nothing
+   * is read until `chunks` is iterated, so callers decide how much they take (src/io/input-limits.ts).
+   */
+  open(path: string): Promise<InputFile>;
   writeFile(path: string, data: Uint8Array | string): Promise<void>;
 }
 

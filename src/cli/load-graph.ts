@@ -11,6 +11,7 @@ import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { type Evaluation, evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { openDocumentText, serializeDocument } from '../io/document-io.ts';
+import { fileLimit, tooLargeMessage } from '../io/input-limits.ts';
 import { readPngText } from '../io/png.ts';
 import { PNG_GRAPH_KEY } from '../io/png-graph.ts';
 import { CliError, type CliIo } from './command.ts';
@@ -45,12 +46,42 @@ export function fileErrorMessage(verb: 'read' | 'write', path: string, error: un
   return `cannot ${verb} "${path}": ${why}`;
 }
 
+/**
+ * Reads a whole graph file (JSON, Flower or PNG), refusing it as soon as it passes its limit
+ * (src/io/input-limits.ts): a file whose size says so before reading, an endless one such as
+ * /dev/zero after reading just past the limit.
+ */
 export async function readInput(io: CliIo, path: string): Promise<Uint8Array> {
+  const parts: Uint8Array[] = [];
+  let total = 0;
+  let limit: ReturnType<typeof fileLimit> | undefined;
   try {
-    return await io.readFile(path);
+    const file = await io.open(path);
+    for await (const piece of file.chunks) {
+      parts.push(piece);
+      total += piece.length;
+      // The limit depends on the kind of file, known from its first 8 bytes.
+      limit ??= total >= 8 ? fileLimit(concat(parts, total)) : undefined;
+      if (!limit) continue;
+      if (file.size !== null && file.size > limit.bytes)
+        throw new CliError(`cannot read "${path}": ${tooLargeMessage(limit, file.size)}`);
+      if (total > limit.bytes) throw new CliError(`cannot read "${path}": ${tooLargeMessage(limit)}`);
+    }
   } catch (e) {
-    throw new CliError(fileErrorMessage('read', path, e));
+    throw e instanceof CliError ? e : new CliError(fileErrorMessage('read', path, e));
   }
+  return concat(parts, total);
+}
+
+function concat(parts: readonly Uint8Array[], total: number): Uint8Array {
+  if (parts.length === 1) return parts[0];
+  const out = new Uint8Array(total);
+  let at = 0;
+  for (const p of parts) {
+    out.set(p, at);
+    at += p.length;
+  }
+  return out;
 }
 
 /** The document text inside the bytes: UTF-8 JSON, or the graph embedded in a Kleinflow PNG. */
@@ -64,7 +95,7 @@ export function documentText(path: string, bytes: Uint8Array): string {
   try {
     return new TextDecoder('utf-8', { fatal: true, ignoreBOM: false }).decode(bytes);
   } catch {
-    throw new CliError(`"${path}" is not a text file (not valid UTF-8): expected a Kleinflow JSON document`);
+    throw new CliError(`"${path}" is not UTF-8 text: expected a Kleinflow JSON document or PNG`);
   }
 }
 

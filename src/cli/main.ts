@@ -3,6 +3,7 @@
  * readable text and an exit status, never a stack trace: CliErrors print their one line (plus
  * the command's usage for usage errors), anything unexpected prints `kleinflow: internal error: …`.
  */
+import { formatBytes, INPUT_LIMITS } from '../io/input-limits.ts';
 import { type CliCommand, CliError, type CliIo, EXIT } from './command.ts';
 import { COMMANDS } from './commands/index.ts';
 
@@ -20,6 +21,9 @@ export function generalUsage(commands: readonly CliCommand[] = COMMANDS): string
     `  ${'help'.padEnd(width)}  show this text, or "kleinflow help COMMAND" for one command`,
     '',
     'Run "kleinflow COMMAND --help" for the options of a command.',
+    '',
+    `Limits: a graph file (JSON) at most ${formatBytes(INPUT_LIMITS.documentBytes)}, a PNG at most ${formatBytes(INPUT_LIMITS.pngBytes)};`,
+    `points files are streamed (any number of points, ${formatBytes(INPUT_LIMITS.pointEntryChars)} per entry).`,
   ].join('\n');
 }
 

@@ -18,8 +18,12 @@ export type StorageLike = Pick<Storage, 'getItem' | 'setItem' | 'removeItem'>;
 export type Restored =
   | { kind: 'none' }
   | { kind: 'ok'; doc: GraphDoc }
-  /** `text` is what was stored; `problems` say why it could not be loaded. */
-  | { kind: 'unreadable'; text: string; problems: readonly Diagnostic[] };
+  /**
+   * `text` is what was stored; `problems` say why it could not be loaded. `backedUp`: a copy is
+   * under AUTOSAVE_BACKUP_KEY; when false (storage full) the only copy is still under
+   * AUTOSAVE_KEY, and autosave must be held (createAutosaveHold) so that it is not overwritten.
+   */
+  | { kind: 'unreadable'; text: string; problems: readonly Diagnostic[]; backedUp: boolean };
 
 /** The saved document, migrated to `registry`'s node types like any other document that is opened. */
 export function restore(storage: StorageLike, registry: NodeRegistry = appRegistry): Restored {
@@ -32,16 +36,54 @@ export function restore(storage: StorageLike, registry: NodeRegistry = appRegist
   if (text === null) return { kind: 'none' };
   const loaded = parseDocumentText(text, registry);
   if (loaded.ok) return { kind: 'ok', doc: loaded.doc };
+  let backedUp = true;
   try {
     // Keep the unreadable text out of the way of the next save, so it is not overwritten.
     storage.setItem(AUTOSAVE_BACKUP_KEY, text);
   } catch {
-    // the backup failed (storage full): the caller still holds `text` and offers it for download
+    // The backup failed (storage full): the text stays under AUTOSAVE_KEY, which autosave must
+    // leave alone until the user has downloaded or discarded it.
+    backedUp = false;
   }
-  return { kind: 'unreadable', text, problems: loaded.diagnostics };
+  return { kind: 'unreadable', text, problems: loaded.diagnostics, backedUp };
 }
 
-export type SaveOutcome = { ok: true } | { ok: false; reason: 'quota' | 'unavailable'; message: string };
+export type SaveOutcome =
+  | { ok: true }
+  | { ok: false; reason: 'quota' | 'unavailable' | 'held'; message: string };
+
+/**
+ * Autosave paused while an unreadable autosave that could not be backed up is the only copy of
+ * the user's last session; released once they downloaded or discarded it.
+ */
+export interface AutosaveHold {
+  readonly held: boolean;
+  release(): void;
+  /** Calls `fn` once, when released; returns an unsubscribe. */
+  onRelease(fn: () => void): () => void;
+}
+
+export function createAutosaveHold(held: boolean): AutosaveHold {
+  const listeners = new Set<() => void>();
+  return {
+    get held() {
+      return held;
+    },
+    release() {
+      if (!held) return;
+      held = false;
+      for (const fn of listeners) fn();
+      listeners.clear();
+    },
+    onRelease(fn) {
+      listeners.add(fn);
+      return () => void listeners.delete(fn);
+    },
+  };
+}
+
+const HELD_MESSAGE =
+  'Autosave is paused: your last session could not be restored and there is no room to back it up. Download or discard it to resume.';
 
 export function isQuotaError(e: unknown): boolean {
   const err = e as { name?: string; code?: number } | null;
@@ -76,6 +118,7 @@ export function createAutosaver(
   onOutcome: (outcome: SaveOutcome) => void,
   delayMs = AUTOSAVE_DELAY_MS,
   timers: Pick<typeof globalThis, 'setTimeout' | 'clearTimeout'> = globalThis,
+  hold?: AutosaveHold,
 ): Autosaver {
   let pending: GraphDoc | null = null;
   let timer: ReturnType<typeof setTimeout> | undefined;
@@ -83,6 +126,11 @@ export function createAutosaver(
     if (timer !== undefined) timers.clearTimeout(timer);
     timer = undefined;
     if (!pending) return;
+    if (hold?.held) {
+      // Kept pending: written by the first flush after the hold is released.
+      onOutcome({ ok: false, reason: 'held', message: HELD_MESSAGE });
+      return;
+    }
     const doc = pending;
     pending = null;
     onOutcome(saveNow(storage, doc));

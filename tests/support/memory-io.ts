@@ -4,6 +4,9 @@
  */
 import type { CliIo } from '../../src/cli/command.ts';
 
+/** Bytes per piece of a file read through `open`. */
+const PIECE = 1000;
+
 export function memoryIo(
   files: Record<string, Uint8Array | string>,
   options: { stdoutWrite?: (text: string) => void } = {},
@@ -25,10 +28,14 @@ export function memoryIo(
         out.stderr += t;
       },
     },
-    readFile: async (path) => {
+    open: async (path) => {
       const data = table.get(path);
       if (!data) throw Object.assign(new Error('missing'), { code: 'ENOENT' });
-      return data;
+      async function* chunks() {
+        // Small pieces, so readers meet entries and characters split across pieces.
+        for (let o = 0; o < data!.length; o += PIECE) yield data!.subarray(o, o + PIECE);
+      }
+      return { size: data.length, chunks: chunks() };
     },
     writeFile: async (path, data) =>
       void table.set(path, typeof data === 'string' ? new TextEncoder().encode(data) : data),

@@ -4,6 +4,8 @@
  */
 import { type OpenResult, openDocumentText } from '../../io/document-io.ts';
 import { isFlowerDocument } from '../../io/flower/import.ts';
+import { formatBytes, INPUT_LIMITS } from '../../io/input-limits.ts';
+import { openProblem } from '../../io/open-result.ts';
 import { sharePayload } from '../../io/share-url.ts';
 
 function looksLikeDocument(text: string): boolean {
@@ -20,6 +22,15 @@ function looksLikeDocument(text: string): boolean {
 
 /** The opened document (or its problems) when `text` is meant as one; null when it is not ours. */
 export function openPastedText(text: string): OpenResult | null {
+  // Past the limit it is not parsed at all; a graph-like start says it was meant as one.
+  if (text.length > INPUT_LIMITS.documentBytes) {
+    const start = text.trimStart();
+    return start.startsWith('{') || sharePayload(start.slice(0, 64)) !== null
+      ? openProblem(
+          `the pasted text is ${formatBytes(text.length)}, more than ${formatBytes(INPUT_LIMITS.documentBytes)}, the limit for a graph`,
+        )
+      : null;
+  }
   const trimmed = text.trim();
   return looksLikeDocument(trimmed) ? openDocumentText(trimmed) : null;
 }

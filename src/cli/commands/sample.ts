@@ -3,43 +3,25 @@
  * colour) and prints `{"points":[{"depth":…,"x":…,"y":…,"escaped":…},…]}` in input order, where
  * (x, y) is the final point. For scripts, plots and checking other implementations.
  */
-import type { Vec2 } from '../../../nodes/core/values.ts';
 import { interpret } from '../../../shader-gen/interpret.ts';
+import { formatBytes, INPUT_LIMITS } from '../../io/input-limits.ts';
 import { expectPositionals, formatOptions, type OptionSpec, parseArgs, stringOption } from '../args.ts';
-import { type CliCommand, CliError, EXIT, usageError } from '../command.ts';
-import { documentText, loadScene, readInput } from '../load-graph.ts';
+import { type CliCommand, CliError, EXIT, type InputFile, usageError } from '../command.ts';
+import { fileErrorMessage, loadScene } from '../load-graph.ts';
+import { streamPoints } from '../points-stream.ts';
+import { progressLine } from '../progress.ts';
 
 const OPTIONS: readonly OptionSpec[] = [
   { long: 'points', short: 'p', value: 'FILE', doc: 'JSON array of [x, y] world points (required)' },
 ];
 
-const describe = (v: unknown): string => {
-  if (Array.isArray(v)) return `an array of ${v.length}`;
-  if (v === null) return 'null';
-  if (typeof v === 'object') return 'an object';
-  const s = JSON.stringify(v) ?? String(v);
-  return s.length > 40 ? `${s.slice(0, 37)}...` : s;
-};
+/** Output is written in pieces of about this many characters (then the reader may catch up). */
+const OUT_PIECE = 1 << 16;
+/** Points files at least this big (about a million points) show progress on stderr. */
+const PROGRESS_BYTES = 16 * 1024 * 1024;
 
-/** Parses `[[x, y], …]`; any problem is one message naming the file and the first bad entry. */
-export function parsePoints(path: string, text: string): Vec2[] {
-  let value: unknown;
-  try {
-    value = JSON.parse(text);
-  } catch (e) {
-    throw new CliError(`"${path}" is not valid JSON: ${(e as Error).message}`);
-  }
-  if (!Array.isArray(value)) {
-    throw new CliError(`"${path}": expected an array of [x, y] points, got ${describe(value)}`);
-  }
-  value.forEach((p, i) => {
-    const ok =
-      Array.isArray(p) && p.length === 2 && p.every((c) => typeof c === 'number' && Number.isFinite(c));
-    if (!ok)
-      throw new CliError(`"${path}"[${i}]: expected [x, y] with two finite numbers, got ${describe(p)}`);
-  });
-  return value as Vec2[];
-}
+/** A JSON number as JSON.stringify writes it (−0 as 0, non-finite as null). */
+const num = (v: number): string => (Number.isFinite(v) ? String(v) : 'null');
 
 export const sampleCommand: CliCommand = {
   name: 'sample',
@@ -52,6 +34,12 @@ export const sampleCommand: CliCommand = {
     'IIS loop, D the number of steps and E whether it reached the tile (false: still moving at',
     'max iterations, on or near the limit set). The clip disk and colours do not apply.',
     '',
+    'The points are read and the results written as a stream: any number of points works in',
+    'bounded memory, and output starts at once (--points - reads standard input). One entry may',
+    `be at most ${formatBytes(INPUT_LIMITS.pointEntryChars)}; GRAPH at most ${formatBytes(INPUT_LIMITS.documentBytes)} (a PNG ${formatBytes(INPUT_LIMITS.pngBytes)}). A points file of`,
+    `${formatBytes(PROGRESS_BYTES)} or more shows progress on stderr. A bad entry ends the command with exit`,
+    '1 and one line naming it; the results before it may already have been printed.',
+    '',
     formatOptions(OPTIONS),
   ].join('\n'),
   async run(args, io) {
@@ -59,13 +47,50 @@ export const sampleCommand: CliCommand = {
     const [graphPath] = expectPositionals(parsed, ['GRAPH']);
     const pointsPath = stringOption(parsed, 'points');
     if (!pointsPath) throw usageError('missing --points POINTS.json');
-    const points = parsePoints(pointsPath, documentText(pointsPath, await readInput(io, pointsPath)));
     const { scene } = await loadScene(io, graphPath);
-    const results = points.map((p) => {
-      const r = interpret(scene, p);
-      return { depth: r.depth, x: r.final[0], y: r.final[1], escaped: r.escaped };
-    });
-    io.stdout.write(`${JSON.stringify({ points: results })}\n`);
+    let file: InputFile;
+    try {
+      file = await io.open(pointsPath);
+    } catch (e) {
+      throw new CliError(fileErrorMessage('read', pointsPath, e));
+    }
+    const size = file.size;
+    const progress =
+      size !== null && size >= PROGRESS_BYTES
+        ? progressLine(io.stderr, `sampling ${pointsPath} (${formatBytes(size)})`)
+        : undefined;
+    // The result streams out as the points stream in: nothing grows with the number of points.
+    let out = '{"points":[';
+    let count = 0;
+    let written = false;
+    const flush = async () => {
+      io.stdout.write(out);
+      written = true;
+      out = '';
+      await io.stdout.drain?.();
+    };
+    try {
+      const batches = streamPoints(pointsPath, file.chunks, {
+        onBytes: progress && ((b) => progress.update(b / size!)),
+      });
+      for await (const batch of batches) {
+        for (const p of batch) {
+          const r = interpret(scene, p);
+          out += `${count === 0 ? '' : ','}{"depth":${r.depth},"x":${num(r.final[0])},"y":${num(r.final[1])},"escaped":${r.escaped}}`;
+          count++;
+          if (out.length >= OUT_PIECE) await flush();
+        }
+      }
+    } catch (e) {
+      progress?.finish();
+      // Points already written stay written (they are right); say that the output stops early.
+      if (e instanceof CliError && written)
+        throw new CliError(`${e.message} (the output is incomplete: it stops after ${count} points)`);
+      throw e;
+    }
+    out += ']}\n';
+    await flush();
+    progress?.finish();
     return EXIT.ok;
   },
 };

@@ -28,6 +28,16 @@ describe('renderHint', () => {
     expect(hint?.text).toContain(first?.message);
   });
 
+  it('names the Render node’s own field error although elements are wired (not "wire a mirror")', () => {
+    const d = doc(
+      [node('c', 'circle', { radius: 1 }), node('i', 'inversion'), node('r', 'render', { samples: -3 })],
+      [edge('e1', 'c.circle', 'i.circle'), edge('e2', 'i.element', 'r.elements')],
+    );
+    const hint = hintOf(d);
+    expect(hint).toMatchObject({ tone: 'error', nodeId: 'r' });
+    expect(hint?.text).toMatch(/^No picture: Render — .*samples/);
+  });
+
   it('says nothing when the picture is there', () => {
     const d = doc(
       [node('c', 'circle', { radius: 1 }), node('i', 'inversion'), node('r', 'render')],

@@ -3,6 +3,7 @@ import { emptyDocument } from '../../../nodes/graph/document.ts';
 import {
   AUTOSAVE_BACKUP_KEY,
   AUTOSAVE_KEY,
+  createAutosaveHold,
   createAutosaver,
   restore,
   type SaveOutcome,
@@ -81,6 +82,7 @@ describe('autosave', () => {
     expect(r.text).toBe('{"format":"kleinflow","version":1,"nodes":[');
     expect(r.problems[0].code).toBe('KF101');
     expect(storage.getItem(AUTOSAVE_BACKUP_KEY)).toBe(r.text);
+    expect(r.backedUp).toBe(true);
 
     storage.setItem(
       AUTOSAVE_KEY,
@@ -88,6 +90,32 @@ describe('autosave', () => {
     );
     const bad = restore(storage);
     expect(bad.kind === 'unreadable' && bad.problems[0].message).toMatch(/view\.scale/);
+  });
+
+  it('an unreadable save that cannot be backed up is never overwritten until released', () => {
+    const storage = new MemoryStorage();
+    const broken = `{"format":"kleinflow","nodes":[${'x'.repeat(5_000)}`;
+    storage.data.set(AUTOSAVE_KEY, broken); // stored before the storage filled up
+    storage.quota = 1_000; // no room for the backup copy
+    const r = restore(storage);
+    expect(r.kind === 'unreadable' && r.backedUp).toBe(false);
+    expect(storage.getItem(AUTOSAVE_BACKUP_KEY)).toBeNull();
+
+    storage.quota = Number.POSITIVE_INFINITY; // an edit's save would fit now: it must still wait
+    const hold = createAutosaveHold(true);
+    const timers = fakeTimers();
+    const outcomes: SaveOutcome[] = [];
+    const saver = createAutosaver(storage, (o) => outcomes.push(o), 400, timers, hold);
+    saver.schedule(emptyDocument('edited'));
+    timers.run();
+    saver.flush();
+    expect(storage.getItem(AUTOSAVE_KEY)).toBe(broken);
+    expect(outcomes[0]).toMatchObject({ ok: false, reason: 'held' });
+
+    // Downloaded or discarded: the next flush writes the pending document.
+    hold.release();
+    saver.flush();
+    expect(storage.getItem(AUTOSAVE_KEY)).toContain('"edited"');
   });
 
   it('a full storage is reported as such', () => {

@@ -1,0 +1,92 @@
+/**
+ * Input limits and streaming of the real `kleinflow` executable: endless input (/dev/zero) is
+ * refused in one line naming the limit, and `sample` answers points while they are still
+ * arriving (so memory cannot grow with the number of points).
+ */
+import { spawn } from 'node:child_process';
+import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { afterAll, describe, expect, it } from 'vitest';
+import { ROOT, runCli } from './run-cli.ts';
+
+const BIN = fileURLToPath(new URL('../../src/cli/kleinflow.mjs', import.meta.url));
+const dir = mkdtempSync(join(tmpdir(), 'kleinflow-limits-'));
+afterAll(() => rmSync(dir, { recursive: true, force: true }));
+
+/** One inversion in the unit circle: the cheapest graph that samples (the test is about I/O). */
+const GRAPH = join(dir, 'one-mirror.json');
+writeFileSync(
+  GRAPH,
+  JSON.stringify({
+    format: 'kleinflow',
+    version: 1,
+    meta: {},
+    nodes: [
+      { id: 'c', type: 'circle', position: [0, 0], params: { center: [0, 0], radius: 1 } },
+      { id: 'i', type: 'inversion', position: [0, 0], params: {} },
+      { id: 'out', type: 'render', position: [0, 0], params: {} },
+    ],
+    edges: [
+      { id: 'e1', from: { node: 'c', port: 'circle' }, to: { node: 'i', port: 'circle' } },
+      { id: 'e2', from: { node: 'i', port: 'element' }, to: { node: 'out', port: 'elements' } },
+    ],
+    view: { center: [0, 0], scale: 4 },
+  }),
+);
+
+describe('endless and oversized input', () => {
+  it.each([
+    [
+      ['check', '/dev/zero'],
+      /cannot read "\/dev\/zero": it is larger than 64 MB, the limit for a graph file/,
+    ],
+    [['sample', GRAPH, '--points', '/dev/zero'], /"\/dev\/zero" is not valid JSON/],
+  ])('%j stops at once with one line', (args, message) => {
+    const r = runCli(args); // runCli kills the child after 60 s: a hang fails here
+    expect(r.status).toBe(1);
+    expect(r.stderr).toMatch(message);
+    expect(r.stderr.trim().split('\n')).toHaveLength(1);
+  });
+
+  it('says a points file is not UTF-8 (not "expected a Kleinflow document")', () => {
+    const p = join(dir, 'latin1.json');
+    writeFileSync(p, Buffer.from([0x5b, 0x5b, 0x30, 0xe9, 0x5d, 0x5d]));
+    const r = runCli(['sample', GRAPH, '--points', p]);
+    expect(r.status).toBe(1);
+    expect(r.stderr).toMatch(/is not UTF-8 text: expected a JSON array of \[x, y\] points/);
+  });
+});
+
+describe('kleinflow sample streams', () => {
+  it('prints results while the points are still arriving, and all of them in order', async () => {
+    const child = spawn(process.execPath, [BIN, 'sample', GRAPH, '--points', '-'], { cwd: ROOT });
+    let stdout = '';
+    let stderr = '';
+    child.stdout.on('data', (d) => {
+      stdout += d;
+    });
+    child.stderr.on('data', (d) => {
+      stderr += d;
+    });
+    child.stdin.on('error', () => {}); // a failed child closes its input: the assertions say why
+    const exited = new Promise<number | null>((r) => child.on('close', r));
+    // 20,000 points, then wait with the array still open: a reader that needs the whole input
+    // first prints nothing until the end and this wait times out.
+    const n = 20_000;
+    const point = (i: number) => `[${(i % 400) / 100 - 2},0]`;
+    child.stdin.write(`[${Array.from({ length: n }, (_, i) => point(i)).join(',')}`);
+    const started = Date.now();
+    while (stdout.length === 0 && Date.now() - started < 15_000) await new Promise((r) => setTimeout(r, 50));
+    expect(stdout.length, `nothing printed before the input ended; stderr: ${stderr}`).toBeGreaterThan(0);
+    child.stdin.end(`,${point(n)}]`);
+    expect(await exited).toBe(0);
+    const out = JSON.parse(stdout) as { points: { depth: number; x: number; y: number }[] };
+    expect(out.points).toHaveLength(n + 1);
+    // Spot checks: (0.5, 0) is inside the unit circle and inverts to (2, 0); (-2, 0) escapes at once.
+    const inside = out.points[250];
+    expect([inside.depth, inside.x, inside.y]).toEqual([1, 2, 0]);
+    expect(out.points[0]).toEqual({ depth: 0, x: -2, y: 0, escaped: true });
+  }, 30_000);
+});

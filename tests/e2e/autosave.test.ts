@@ -1,0 +1,78 @@
+/**
+ * A large corrupt autosave in a full browser storage (Chromium, the built app): the banner must not
+ * claim a backup that does not exist, edits must not overwrite the only copy, and after a reload
+ * it is still there; "Discard it" resumes autosaving.
+ */
+import type { BrowserContext, Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { type ServedApp, serveApp } from './app-server.ts';
+
+let app: ServedApp;
+let context: BrowserContext;
+let page: Page;
+
+/** About 4.5 M characters of broken JSON (the rest of the storage is filled up before reload). */
+const BROKEN_CHARS = 4_500_000;
+
+beforeAll(async () => {
+  app = await serveApp();
+  context = await app.newContext({ width: 1280, height: 720 });
+  page = await context.newPage();
+  await page.goto(`${app.url}?test`);
+  await page.waitForSelector('.react-flow__node');
+}, 180_000);
+
+afterAll(async () => {
+  await app?.close();
+});
+
+const stored = () =>
+  page.evaluate(() => {
+    const text = localStorage.getItem('kleinflow.autosave');
+    return { length: text?.length ?? 0, start: text?.slice(0, 30) ?? '' };
+  });
+
+describe('autosave in a full storage', () => {
+  it('keeps a corrupt autosave that cannot be backed up, and says so truthfully', async () => {
+    // Fill the storage with the broken save (and nothing may write the backup beside it).
+    await page.evaluate((n) => {
+      localStorage.clear();
+      localStorage.setItem('kleinflow.autosave', `{"format":"kleinflow","nodes":[${'x'.repeat(n)}`);
+      // Then whatever room is left, to within 1 KB.
+      let size = 1 << 22;
+      for (let i = 0; size >= 1024; ) {
+        try {
+          localStorage.setItem(`filler${i}`, 'y'.repeat(size));
+          i++;
+        } catch {
+          size >>= 1;
+        }
+      }
+    }, BROKEN_CHARS);
+    expect((await stored()).length).toBeGreaterThan(BROKEN_CHARS);
+    await page.reload();
+    const banner = page.getByRole('alert').filter({ hasText: 'could not be restored' });
+    await banner.waitFor();
+    const text = await banner.textContent();
+    expect(text).not.toMatch(/kept under/);
+    expect(text).toMatch(/autosave is paused/);
+    expect(await page.evaluate(() => localStorage.getItem('kleinflow.autosave.unreadable'))).toBeNull();
+    expect(await page.getByTestId('save-state').textContent()).toMatch(/paused/);
+
+    // An edit, then time for its autosave: the only copy of the broken session is untouched.
+    await page.evaluate(() =>
+      window.__kleinflow!.store.dispatch({ type: 'set-view', view: { center: [0.1, 0], scale: 3 } }, 'edit'),
+    );
+    await page.waitForTimeout(1_500);
+    expect((await stored()).length).toBeGreaterThan(BROKEN_CHARS);
+    await page.reload();
+    await page.getByRole('alert').filter({ hasText: 'could not be restored' }).waitFor();
+    expect((await stored()).length).toBeGreaterThan(BROKEN_CHARS);
+
+    // Discarding it resumes autosaving: the graph on screen is saved.
+    await page.getByRole('button', { name: 'Discard it' }).click();
+    await expect.poll(async () => (await stored()).length).toBeLessThan(BROKEN_CHARS);
+    expect((await stored()).start).toMatch(/^\{"format":"kleinflow"/);
+    expect(await page.getByTestId('save-state').textContent()).toMatch(/Saved/);
+  }, 120_000);
+});

@@ -5,6 +5,7 @@ import { toHex } from '../core/port-values.ts';
 import { type Coloring, DEFAULT_COLORING, DEFAULT_TILE, type TileSpec } from '../core/tile-spec.ts';
 import { BUILTIN_PICTURE, type Color, type Vec2 } from '../core/values.ts';
 import { dist } from '../geometry/vec.ts';
+import { PALETTES } from './colour.ts';
 import { fmt } from './shared.ts';
 
 const d = DEFAULT_TILE;
@@ -32,6 +33,12 @@ const hsv = (value: number, lowest: number, label: string, step = 0.01) =>
     label,
     when: inMode('depth-hsv'),
   }) as const satisfies ParamSpec;
+/**
+ * The four palette colours are the "custom" palette's; a named preset replaces all four in one
+ * choice (the palette field itself shows only in cosine mode, so they do too).
+ */
+const CUSTOM: FieldCondition = { param: 'palette', is: ['custom'] };
+const PALETTE_CHOICES = [...Object.keys(PALETTES), 'custom'] as const;
 const rad = (deg: number) => (deg * Math.PI) / 180;
 
 /** The picture's turn handle: centre + R(θ)(0, size/2), the middle of its top edge. */
@@ -48,10 +55,10 @@ export const tileNode = defineNode({
   color: '#b07cf0',
   doc: 'How points are coloured: by depth (HSV, cosine palette, two tones), a picture seen through the kaleidoscope, or only the limit set; plus tile fill, orbit seeds, an inner area, limit-set colour, background and edges.',
   inputs: {
-    a: colour(cos.a, 'palette a', { when: inMode('cosine') }),
-    b: colour(cos.b, 'palette b', { when: inMode('cosine') }),
-    c: colour(cos.c, 'palette c', { when: inMode('cosine') }),
-    d: colour(cos.d, 'palette d', { when: inMode('cosine') }),
+    a: colour(cos.a, 'palette a', { when: CUSTOM }),
+    b: colour(cos.b, 'palette b', { when: CUSTOM }),
+    c: colour(cos.c, 'palette c', { when: CUSTOM }),
+    d: colour(cos.d, 'palette d', { when: CUSTOM }),
     even: colour([0.93, 0.91, 0.85], 'even', { when: inMode('parity') }),
     odd: colour([0.13, 0.16, 0.24], 'odd', { when: inMode('parity') }),
     // The two colours of limit-set mode; in the other modes they are rarely changed.
@@ -99,6 +106,15 @@ export const tileNode = defineNode({
   outputs: { tile: { type: 'tile', label: 'tile' } },
   params: {
     mode: { kind: 'enum', default: 'cosine', options: MODES, label: 'colouring' },
+    palette: {
+      kind: 'enum',
+      // "custom" by default: documents saved before presets keep their own a, b, c, d.
+      default: 'custom',
+      options: PALETTE_CHOICES,
+      label: 'palette',
+      doc: 'a named cosine palette, or "custom" to set a, b, c, d yourself',
+      when: inMode('cosine'),
+    },
     step: {
       kind: 'number',
       default: cos.step,
@@ -169,9 +185,10 @@ export const tileNode = defineNode({
           diag('degenerate', { port: 'imageSize' }, `picture height must be positive, got ${fmt(size)}`),
         ],
       };
+    const palette = params.palette === 'custom' ? c : (PALETTES[params.palette] ?? c);
     const coloring: Coloring =
       mode === 'cosine'
-        ? { mode, a: c.a, b: c.b, c: c.c, d: c.d, step: params.step }
+        ? { mode, a: palette.a, b: palette.b, c: palette.c, d: palette.d, step: params.step }
         : mode === 'parity'
           ? { mode, even: c.even, odd: c.odd }
           : mode === 'image'
@@ -214,7 +231,8 @@ export const tileNode = defineNode({
       seeds.length > 0 ? `${seeds.length} seed${seeds.length === 1 ? '' : 's'}` : '',
       tile.inner ? 'inner area' : '',
     ].filter(Boolean);
-    return { outputs: { tile }, diagnostics, readout: [mode, ...extras].join(', ') };
+    const shown = mode === 'cosine' && params.palette !== 'custom' ? `${mode} · ${params.palette}` : mode;
+    return { outputs: { tile }, diagnostics, readout: [shown, ...extras].join(', ') };
   },
   overlay: ({ params, inputs }) =>
     params.mode === 'image'

@@ -132,6 +132,7 @@ export function AnimationExportDialog({ viewSize, view, defaultSamples, loop, ru
         <label htmlFor="kf-anim-format">Format</label>
         <select
           id="kf-anim-format"
+          data-checked={supported !== null}
           value={format}
           disabled={busy}
           onChange={(e) => {

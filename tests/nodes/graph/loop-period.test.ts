@@ -1,4 +1,5 @@
 import { readFileSync } from 'node:fs';
+import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { docSchema, type GraphDoc } from '../../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
@@ -24,6 +25,23 @@ describe('asFraction / commonPeriod', () => {
     expect(commonPeriod([1 / 3, 0.5])).toBeCloseTo(1, 12);
     expect(commonPeriod([4, Math.PI])).toBeNull();
     expect(commonPeriod([997, 991])).toBeNull(); // 988027 s: no loop worth recording
+  });
+
+  it('is a whole number of every period, and the least such (property)', () => {
+    const period = fc
+      .tuple(fc.integer({ min: 1, max: 60 }), fc.constantFrom(1, 2, 3, 4, 5, 10))
+      .map(([n, d]) => n / d);
+    fc.assert(
+      fc.property(fc.array(period, { minLength: 1, maxLength: 3 }), (ps) => {
+        const L = commonPeriod(ps);
+        if (L === null) return; // beyond MAX_LOOP_SECONDS
+        const whole = (x: number) => Math.abs(x - Math.round(x)) < 1e-9;
+        expect(ps.every((p) => whole(L / p))).toBe(true);
+        // L/k for a prime k is never a common multiple too (else L would not be the least).
+        for (const k of [2, 3, 5, 7]) expect(ps.every((p) => whole(L / k / p))).toBe(false);
+      }),
+      { seed: 42, numRuns: 300 },
+    );
   });
 });
 

@@ -49,8 +49,12 @@ export function gifWriter(fps: number): GifWriter {
   };
 }
 
-/** The number of image frames in GIF bytes (counts Image Descriptor blocks, skipping the data). */
-export function countGifFrames(bytes: Uint8Array): number {
+/**
+ * The image frames of GIF bytes, each as its raw bytes (image descriptor, local colour table and
+ * compressed data): equal slices mean equal frames, so tests can tell frames apart without an LZW
+ * decoder. Walks the block structure, skipping extensions.
+ */
+export function gifFrameBlocks(bytes: Uint8Array): Uint8Array[] {
   const header = String.fromCharCode(...bytes.subarray(0, 6));
   if (header !== 'GIF89a' && header !== 'GIF87a') throw new Error('not a GIF');
   let p = 13;
@@ -60,7 +64,7 @@ export function countGifFrames(bytes: Uint8Array): number {
     while (bytes[p] !== 0) p += bytes[p] + 1;
     p++;
   };
-  let frames = 0;
+  const frames: Uint8Array[] = [];
   while (p < bytes.length) {
     const block = bytes[p++];
     if (block === 0x3b) return frames; // trailer
@@ -68,13 +72,17 @@ export function countGifFrames(bytes: Uint8Array): number {
       p++; // extension label
       skipSubBlocks();
     } else if (block === 0x2c) {
-      frames++;
+      const start = p;
       const local = bytes[p + 8];
       p += 9;
       if (local & 0x80) p += 3 * (1 << ((local & 7) + 1));
       p++; // LZW minimum code size
       skipSubBlocks();
+      frames.push(bytes.subarray(start, p));
     } else throw new Error(`bad GIF block 0x${block.toString(16)} at ${p - 1}`);
   }
   throw new Error('GIF ends without its trailer');
 }
+
+/** The number of image frames in GIF bytes. */
+export const countGifFrames = (bytes: Uint8Array): number => gifFrameBlocks(bytes).length;

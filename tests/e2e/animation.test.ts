@@ -8,7 +8,7 @@ import { join } from 'node:path';
 import { ALL_FORMATS, BufferSource, Input } from 'mediabunny';
 import type { BrowserContext, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { countGifFrames } from '../../src/io/gif.ts';
+import { countGifFrames, gifFrameBlocks } from '../../src/io/gif.ts';
 import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
 import { waitRendered } from './editor-page.ts';
 import { menu, openViaPicker } from './io-page.ts';
@@ -80,6 +80,9 @@ describe('Export animation', () => {
     const gif = await exportAs('gif');
     expect(gif.name).toMatch(/\.gif$/);
     expect(countGifFrames(gif.bytes)).toBe(10);
+    // Each frame is its own time (t = i s): the spiral breathes, so the frames differ.
+    const distinct = new Set(gifFrameBlocks(gif.bytes).map((b) => Buffer.from(b).toString('base64')));
+    expect(distinct.size).toBe(10);
     expect(problems).toEqual([]);
   }, 180_000);
 

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { countGifFrames, gifWriter } from '../../../src/io/gif.ts';
+import { countGifFrames, gifFrameBlocks, gifWriter } from '../../../src/io/gif.ts';
 
 const frame = (shade: number) => {
   const data = new Uint8Array(8 * 6 * 4);
@@ -17,6 +17,8 @@ describe('gif', () => {
     const a = write();
     expect(String.fromCharCode(...a.subarray(0, 6))).toBe('GIF89a');
     expect(countGifFrames(a)).toBe(3);
+    const [f0, f1] = gifFrameBlocks(a);
+    expect(f0).not.toEqual(f1);
     expect(a).toEqual(write());
     expect(new TextDecoder().decode(a)).toContain('NETSCAPE2.0'); // the looping extension
   });

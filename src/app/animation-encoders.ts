@@ -3,7 +3,8 @@
  * browser's WebCodecs and muxed by mediabunny, or a GIF (gifenc, src/io/gif.ts) that needs no
  * codec. Which video codecs a browser has varies (headless Chromium builds often lack H.264):
  * `supportedFormats` asks the encoder itself (VideoEncoder.isConfigSupported, through
- * mediabunny's canEncodeVideo) before the dialog offers a format.
+ * mediabunny's canEncodeVideo) before the dialog offers a format. Loaded on demand (import()),
+ * so the encoders stay out of the editor's start-up bundle.
  */
 import {
   BufferTarget,
@@ -11,33 +12,12 @@ import {
   Mp4OutputFormat,
   Output,
   QUALITY_HIGH,
-  type VideoCodec,
   VideoSample,
   VideoSampleSource,
   WebMOutputFormat,
 } from 'mediabunny';
 import { gifWriter } from '../io/gif.ts';
-
-export const ANIMATION_FORMATS = {
-  'webm-vp9': { label: 'WebM (VP9)', extension: 'webm', mime: 'video/webm', codec: 'vp9' },
-  'webm-vp8': { label: 'WebM (VP8)', extension: 'webm', mime: 'video/webm', codec: 'vp8' },
-  'mp4-avc': { label: 'MP4 (H.264)', extension: 'mp4', mime: 'video/mp4', codec: 'avc' },
-  gif: { label: 'GIF (256 colours per frame)', extension: 'gif', mime: 'image/gif', codec: null },
-} as const satisfies Record<
-  string,
-  { label: string; extension: string; mime: string; codec: VideoCodec | null }
->;
-
-export type AnimationFormat = keyof typeof ANIMATION_FORMATS;
-
-export interface FrameSize {
-  readonly width: number;
-  readonly height: number;
-  readonly fps: number;
-}
-
-/** Video encoders want even sides (4:2:0 chroma is subsampled 2×2): the nearest even size below. */
-export const evenSize = (n: number): number => Math.max(2, n - (n % 2));
+import { ANIMATION_FORMATS, type AnimationFormat, evenSize, type FrameSize } from './animation-formats.ts';
 
 /** Which formats this browser can write at this size (GIF always; videos when WebCodecs says so). */
 export async function supportedFormats(size: FrameSize): Promise<Record<AnimationFormat, boolean>> {

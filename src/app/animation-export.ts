@@ -10,7 +10,7 @@ import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { frameTime } from '../../nodes/graph/frame-times.ts';
 import { registry } from '../../nodes/types/index.ts';
 import type { Viewport } from '../viewport/viewport.ts';
-import { ANIMATION_FORMATS, type AnimationFormat, createSink } from './animation-encoders.ts';
+import { ANIMATION_FORMATS, type AnimationFormat } from './animation-formats.ts';
 import { scaleEdges } from './export.ts';
 import { download, fileStem } from './files.ts';
 
@@ -33,6 +33,7 @@ export async function recordAnimation(
   o: AnimationExportOptions,
   onProgress: (fraction: number) => boolean,
 ): Promise<Uint8Array | null> {
+  const { createSink } = await import('./animation-encoders.ts');
   const sink = await createSink(o.format, o);
   let finished = false;
   try {

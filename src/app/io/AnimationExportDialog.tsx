@@ -8,13 +8,8 @@ import { useEffect, useRef, useState } from 'react';
 import { LIMITS, type View } from '../../../nodes/core/scene.ts';
 import { loopFrameCount, loopIsFrameExact } from '../../../nodes/graph/frame-times.ts';
 import type { LoopPeriod } from '../../../nodes/graph/loop-period.ts';
-import {
-  ANIMATION_FORMATS,
-  type AnimationFormat,
-  evenSize,
-  supportedFormats,
-} from '../animation-encoders.ts';
 import type { AnimationExportOptions } from '../animation-export.ts';
+import { ANIMATION_FORMATS, type AnimationFormat, evenSize } from '../animation-formats.ts';
 import { useModalDialog } from '../use-modal-dialog.ts';
 import type { Size } from './ExportDialog.tsx';
 
@@ -67,12 +62,14 @@ export function AnimationExportDialog({ viewSize, view, defaultSamples, loop, ru
   // Ask the browser's encoders what they can do at this size; pick the first that works.
   useEffect(() => {
     let live = true;
-    void supportedFormats({ width, height, fps }).then((s) => {
-      if (!live) return;
-      setSupported(s);
-      if (!chosen.current) setFormat(FORMAT_ORDER.find((f) => s[f]) ?? 'gif');
-      else setFormat((f) => (s[f] ? f : 'gif'));
-    });
+    void import('../animation-encoders.ts')
+      .then((m) => m.supportedFormats({ width, height, fps }))
+      .then((s) => {
+        if (!live) return;
+        setSupported(s);
+        if (!chosen.current) setFormat(FORMAT_ORDER.find((f) => s[f]) ?? 'gif');
+        else setFormat((f) => (s[f] ? f : 'gif'));
+      });
     return () => {
       live = false;
     };

@@ -74,7 +74,13 @@ export async function runAnimationCommand(parsed: ParsedArgs, graphPath: string,
   const samples = samplesText
     ? parseIntegerOption('samples', samplesText, 1, LIMITS.maxSamples)
     : load.scene.samples;
-  const frames = resolveFrameCount(stringOption(parsed, 'frames')!, fps, load.doc!, load.evaluation!);
+  const frames = resolveFrameCount(
+    stringOption(parsed, 'frames')!,
+    fps,
+    load.doc!,
+    load.evaluation!,
+    (line) => io.stderr.write(`${line}\n`),
+  );
   const rangeText = stringOption(parsed, 'frame-range');
   const range = rangeText ? parseFrameRange(rangeText, frames) : { start: 0, end: frames };
   const started = performance.now();

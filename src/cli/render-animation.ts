@@ -9,7 +9,7 @@ import { availableParallelism } from 'node:os';
 import { join } from 'node:path';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import type { Evaluation } from '../../nodes/graph/evaluate.ts';
-import { loopFrameCount } from '../../nodes/graph/frame-times.ts';
+import { loopFrameCount, loopIsFrameExact } from '../../nodes/graph/frame-times.ts';
 import { loopPeriod } from '../../nodes/graph/loop-period.ts';
 import { gifWriter } from '../io/gif.ts';
 import { parseIntegerOption } from './args.ts';
@@ -37,13 +37,29 @@ export function frameFileName(index: number, frames: number): string {
   return `frame-${String(index).padStart(Math.max(5, String(frames - 1).length), '0')}.png`;
 }
 
-/** --frames N, or "loop": the graph's loop period (nodes/graph/loop-period.ts) × fps. */
-export function resolveFrameCount(text: string, fps: number, doc: GraphDoc, evaluation: Evaluation): number {
+/**
+ * --frames N, or "loop": the graph's loop period (nodes/graph/loop-period.ts) × fps; a loop that
+ * is not a whole number of frames at this fps gets a warning on `warn` (it cannot close exactly).
+ */
+export function resolveFrameCount(
+  text: string,
+  fps: number,
+  doc: GraphDoc,
+  evaluation: Evaluation,
+  warn: (line: string) => void,
+): number {
   if (text !== 'loop') return parseIntegerOption('frames', text, 1, MAX_FRAMES);
   const period = loopPeriod(doc, evaluation);
   if (period.kind === 'none') throw new CliError(`--frames loop: ${period.reason}`);
   if (period.kind === 'static') throw new CliError('--frames loop: nothing in the graph changes with time');
-  return Math.min(MAX_FRAMES, loopFrameCount(period.seconds, fps));
+  const frames = loopFrameCount(period.seconds, fps);
+  if (frames > MAX_FRAMES)
+    throw new CliError(`--frames loop: one loop is ${frames} frames at ${fps} fps, over ${MAX_FRAMES}`);
+  if (!loopIsFrameExact(period.seconds, fps))
+    warn(
+      `warning: one loop is ${+period.seconds.toFixed(6)} s, not a whole number of frames at ${fps} fps: ${frames} frames close it to within half a frame`,
+    );
+  return frames;
 }
 
 export interface AnimationRequest {

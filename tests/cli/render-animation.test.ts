@@ -1,5 +1,5 @@
 /** `kleinflow render --time / --frames`: the real executable on the animated example. */
-import { mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
+import { mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -81,6 +81,25 @@ describe('kleinflow render --frames', () => {
     const again = join(dir, 'again.gif');
     runCli(['render', ANIMATED, '--frames', 'loop', '--fps', '1', '--out', again, ...SMALL]);
     expect(bytes(again)).toEqual(bytes(gif));
+    // A loop that is not a whole number of frames is warned about: speed 3 → 10/3 s, at 2 fps 6.67.
+    const fast = join(dir, 'fast.kleinflow.json');
+    writeFileSync(fast, readFileSync(ANIMATED, 'utf8').replace('"speed": 1', '"speed": 3'));
+    const w = runCli([
+      'render',
+      fast,
+      '--frames',
+      'loop',
+      '--fps',
+      '2',
+      '--out',
+      join(dir, 'fast.gif'),
+      ...SMALL,
+    ]);
+    expect(w.status).toBe(0);
+    expect(w.stderr).toMatch(
+      /warning: one loop is 3\.333333 s, not a whole number of frames at 2 fps: 7 frames/,
+    );
+    expect(countGifFrames(bytes(join(dir, 'fast.gif')))).toBe(7);
   }, 120_000);
 
   it('says why a graph has no loop, and what a bad range is', () => {

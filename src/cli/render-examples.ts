@@ -10,7 +10,6 @@ import { mkdir, readFile, writeFile } from 'node:fs/promises';
 import { availableParallelism } from 'node:os';
 import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { Worker } from 'node:worker_threads';
 import { LIMITS } from '../../nodes/core/scene.ts';
 import { parseArgs, parseSizeOption, stringOption } from './args.ts';
 import { CliError } from './command.ts';
@@ -23,38 +22,11 @@ import {
   THUMB_SOURCES,
 } from './examples.ts';
 import type { RenderJob, RenderJobResult } from './render-job.ts';
+import { runPool } from './worker-pool.ts';
 
 const DEFAULT_SIZE = { width: 800, height: 800 };
 /** Gallery thumbnails: small, square, enough samples to look smooth at that size. */
 export const THUMB = { width: 192, height: 192, samples: 4 } as const;
-
-/** Workers start without tsx: register it there first, then load the TypeScript job module. */
-const WORKER_BOOTSTRAP = `import(${JSON.stringify(import.meta.resolve('tsx/esm/api'))})
-  .then((tsx) => { tsx.register(); return import(${JSON.stringify(new URL('./render-job.ts', import.meta.url).href)}); });`;
-
-function runPool(
-  jobs: readonly RenderJob[],
-  size: number,
-  report: (r: RenderJobResult) => void,
-): Promise<void> {
-  const queue = [...jobs];
-  const worker = () =>
-    new Promise<void>((done, fail) => {
-      const w = new Worker(WORKER_BOOTSTRAP, { eval: true });
-      const next = () => {
-        const job = queue.shift();
-        if (job) w.postMessage(job);
-        else void w.terminate().then(() => done());
-      };
-      w.on('message', (r: RenderJobResult) => {
-        report(r);
-        next();
-      });
-      w.on('error', fail);
-      next();
-    });
-  return Promise.all(Array.from({ length: Math.min(size, jobs.length) }, worker)).then(() => undefined);
-}
 
 async function main(argv: readonly string[]): Promise<number> {
   const parsed = parseArgs(argv, [
@@ -86,7 +58,8 @@ async function main(argv: readonly string[]): Promise<number> {
   const rendered: string[] = [];
   const started = performance.now();
   let failed = 0;
-  await runPool(jobs, Math.min(2, availableParallelism()), (r) => {
+  const jobModule = new URL('./render-job.ts', import.meta.url);
+  await runPool<RenderJob, RenderJobResult>(jobModule, jobs, Math.min(2, availableParallelism()), (r) => {
     if (r.error !== undefined) {
       failed++;
       process.stderr.write(`${r.name.padEnd(28)} FAILED: ${r.error}\n`);

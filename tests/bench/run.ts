@@ -15,6 +15,7 @@ const BENCHES = [
   './scale.ts',
   './source.ts',
   './editor.ts',
+  './animation.ts',
 ] as const;
 
 async function main(): Promise<void> {

@@ -23,6 +23,7 @@ import { type OpenReport, openReport } from './open-report.ts';
 import { openPastedText } from './pasted-document.ts';
 import { clearFragment, readStartupLink, shareLinkFor } from './share-link.ts';
 import { Toast, type ToastMessage } from './Toast.tsx';
+import { useAnimationExport } from './use-animation-export.tsx';
 
 interface Options {
   readonly store: EditorStore;
@@ -181,8 +182,16 @@ export function useDocumentIo({ store, scene, load, viewport }: Options): Docume
   currentScene.current = scene;
   const glsl = (flavour: 'webgl2' | 'shadertoy') =>
     exportGlsl(store.getState().doc, currentScene.current, flavour);
+  const animation = useAnimationExport({
+    store,
+    samples: scene.samples,
+    viewport,
+    viewSize: renderSize,
+    say,
+  });
   const exportItems: MenuItem[] = [
     { label: 'PNG image…', hint: 'any size, graph inside', onSelect: () => setExporting(true) },
+    animation.item,
     { label: 'Copy share link', hint: 'graph in the URL', onSelect: () => void copyLink() },
     { label: 'GLSL shader (.frag)', hint: 'WebGL2, values baked', onSelect: () => glsl('webgl2') },
     { label: 'Shadertoy (.shadertoy.glsl)', hint: 'paste into Shadertoy', onSelect: () => glsl('shadertoy') },
@@ -211,6 +220,7 @@ export function useDocumentIo({ store, scene, load, viewport }: Options): Docume
           onClose={() => setExporting(false)}
         />
       )}
+      {animation.ui}
     </>
   );
   const notify = useCallback((text: string) => say('ok', text), [say]);

@@ -1,0 +1,108 @@
+/**
+ * The animation options of `kleinflow render` (--time, --frames, --fps, --out, --frame-range,
+ * --threads): parsing and the run of a sequence. Kept apart from commands/render.ts so the still
+ * render stays short.
+ */
+import { LIMITS } from '../../nodes/core/scene.ts';
+import {
+  type OptionSpec,
+  type ParsedArgs,
+  parseIntegerOption,
+  parseSizeOption,
+  stringOption,
+} from './args.ts';
+import { type CliIo, EXIT, usageError } from './command.ts';
+import { loadScene } from './load-graph.ts';
+import {
+  frameFileName,
+  isGifPath,
+  parseFrameRange,
+  renderAnimation,
+  resolveFrameCount,
+} from './render-animation.ts';
+
+export const DEFAULT_FPS = 24;
+/** Default frame size of a sequence: smaller than a still's, frames are many. */
+const DEFAULT_FRAME_SIZE = { width: 512, height: 512 };
+/** Sample count × pixels × frames above which a progress line is worth showing. */
+const PROGRESS_WORK = 1 << 22;
+
+export const ANIMATION_OPTIONS: readonly OptionSpec[] = [
+  { long: 'time', short: 't', value: 'T', doc: 'render the graph at animation time T seconds (default 0)' },
+  { long: 'frames', value: 'N|loop', doc: 'render N frames at t = i/fps, or "loop": one exact loop' },
+  { long: 'fps', value: 'F', doc: `frames per second of --frames (default ${DEFAULT_FPS})` },
+  { long: 'out', value: 'DIR/|X.gif', doc: 'with --frames: a folder of frame-NNNNN.png, or a looping GIF' },
+  {
+    long: 'frame-range',
+    value: 'A:B',
+    doc: 'with --frames: only frames A to B−1 (split work across machines)',
+  },
+  { long: 'threads', value: 'N', doc: 'with --frames: worker threads (default: every core)' },
+];
+
+export const ANIMATION_USAGE = [
+  'Animations: --time T renders one frame; --frames renders frame i at t = i/fps on every core.',
+  'The same input gives the same bytes, and frames are independent: --frame-range 0:120 on one',
+  'machine and 120:240 on another write the files of one sequence.',
+];
+
+/** --time T: a finite number of seconds (decimal, may be negative). */
+export function parseTimeOption(parsed: ParsedArgs): number {
+  const text = stringOption(parsed, 'time');
+  if (text === undefined) return 0;
+  const t = Number(text);
+  if (!/^-?\d+(\.\d+)?$/.test(text) || !Number.isFinite(t))
+    throw usageError(`--time expects seconds such as 2.5, got "${text}"`);
+  return t;
+}
+
+export async function runAnimationCommand(parsed: ParsedArgs, graphPath: string, io: CliIo): Promise<number> {
+  const out = stringOption(parsed, 'out') ?? stringOption(parsed, 'output');
+  if (!out) throw usageError('missing --out DIR/ or --out OUT.gif (where to write the frames)');
+  if (stringOption(parsed, 'time') !== undefined)
+    throw usageError('--time renders one frame; with --frames the times are i/fps');
+  const fpsText = stringOption(parsed, 'fps');
+  const fps = fpsText ? parseIntegerOption('fps', fpsText, 1, 240) : DEFAULT_FPS;
+  const sizeText = stringOption(parsed, 'size');
+  const { width, height } = sizeText
+    ? parseSizeOption('size', sizeText, LIMITS.maxImageSide)
+    : DEFAULT_FRAME_SIZE;
+  const samplesText = stringOption(parsed, 'samples');
+  const threadsText = stringOption(parsed, 'threads');
+  const threads = threadsText ? parseIntegerOption('threads', threadsText, 1, 1024) : undefined;
+  const load = await loadScene(io, graphPath);
+  const samples = samplesText
+    ? parseIntegerOption('samples', samplesText, 1, LIMITS.maxSamples)
+    : load.scene.samples;
+  const frames = resolveFrameCount(
+    stringOption(parsed, 'frames')!,
+    fps,
+    load.doc!,
+    load.evaluation!,
+    (line) => io.stderr.write(`${line}\n`),
+  );
+  const rangeText = stringOption(parsed, 'frame-range');
+  const range = rangeText ? parseFrameRange(rangeText, frames) : { start: 0, end: frames };
+  const started = performance.now();
+  const count = range.end - range.start;
+  await renderAnimation(io, {
+    text: load.text,
+    frames,
+    fps,
+    range,
+    out,
+    width,
+    height,
+    samples,
+    threads,
+    progress: width * height * samples * count >= PROGRESS_WORK,
+  });
+  const seconds = ((performance.now() - started) / 1000).toFixed(2);
+  const what = isGifPath(out)
+    ? out
+    : `${out} (${frameFileName(range.start, frames)} … ${frameFileName(range.end - 1, frames)})`;
+  io.stdout.write(
+    `wrote ${count} frame${count === 1 ? '' : 's'} of ${frames} at ${fps} fps → ${what} (${width}×${height}, ${samples} samples/px, ${seconds} s)\n`,
+  );
+  return EXIT.ok;
+}

@@ -22,6 +22,7 @@ import {
   parseTimeOption,
   runAnimationCommand,
 } from '../render-animation-command.ts';
+import { announceEstimate, estimateRenderSeconds } from '../render-estimate.ts';
 import { renderScenePng } from '../render-png.ts';
 
 export const DEFAULT_RENDER_SIZE = { width: 1024, height: 1024 } as const;
@@ -75,11 +76,11 @@ export const renderCommand: CliCommand = {
     // --time T: the same graph, its time-driven values at T (nodes/graph/evaluate.ts).
     const load = time === 0 ? loaded : { ...loaded, scene: sceneAt(loaded.doc!, time) };
     const used = samples ?? load.scene.samples;
+    const label = `rendering ${output} (${width}×${height}, ${used} samples/px)`;
+    const long = width * height * used >= PROGRESS_WORK;
+    if (long) announceEstimate(io.stderr, label, estimateRenderSeconds(load.scene, width, height, used));
     const started = performance.now();
-    const progress =
-      width * height * used >= PROGRESS_WORK
-        ? progressLine(io.stderr, `rendering ${output} (${width}×${height}, ${used} samples/px)`)
-        : undefined;
+    const progress = long ? progressLine(io.stderr, label) : undefined;
     const png = renderScenePng(load.scene, load.text, {
       width,
       height,

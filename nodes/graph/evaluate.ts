@@ -17,6 +17,7 @@ import {
 import { type Analysis, analyzeGraph } from './analyze.ts';
 import type { GraphDoc } from './document.ts';
 import { migrateNodeParams } from './migrate.ts';
+import { mirrorDiagnostics } from './mirror-check.ts';
 import { checkNumber, resolveParams } from './params.ts';
 
 export interface NodeEvaluation {
@@ -113,6 +114,8 @@ export function evaluateGraph(
     handles,
     renderNodeId: chosen?.id ?? null,
   };
+  // The mirrors' kept sides and corner angles: a wrong picture never comes without a message.
+  if (chosen) diagnostics.push(...mirrorDiagnostics(scene.elements, chosen.id, { analysis, nodes: results }));
   return { scene, nodes: results, diagnostics, analysis };
 }
 

@@ -1,0 +1,64 @@
+/** Draws kept-side-shapes.ts: each mirror's hatched back, and the hovered mirror's discarded side. */
+
+import { BAND_PX, type KeptSideShape } from './kept-side-shapes.ts';
+
+const points = (ps: readonly (readonly number[])[]) => ps.map((p) => `${p[0]},${p[1]}`).join(' ');
+
+export function KeptSides(props: {
+  shapes: readonly KeptSideShape[];
+  colorOf(nodeId: string): string;
+  hoveredNodeId: string | null;
+}) {
+  const colors = [...new Set(props.shapes.map((s) => props.colorOf(s.nodeId)))];
+  const hatch = (color: string) => `url(#kf-hatch-${colors.indexOf(color)})`;
+  return (
+    <g className="kf-kept-sides" pointerEvents="none" data-testid="kept-sides">
+      <defs>
+        {colors.map((color, i) => (
+          <pattern
+            key={color}
+            id={`kf-hatch-${i}`}
+            width={6}
+            height={6}
+            patternUnits="userSpaceOnUse"
+            patternTransform="rotate(45)"
+          >
+            <line x1={0} y1={0} x2={0} y2={6} stroke={color} strokeWidth={2} opacity={0.7} />
+          </pattern>
+        ))}
+      </defs>
+      {props.shapes.map((s, i) => {
+        const color = props.colorOf(s.nodeId);
+        const hot = s.nodeId === props.hoveredNodeId;
+        if (s.kind === 'circle') {
+          // The back of a circle mirror is its inside: a hatched ring just within the rim.
+          return (
+            // biome-ignore lint/suspicious/noArrayIndexKey: one node may make several mirrors
+            <g key={i} data-kept-side={s.nodeId}>
+              {hot && <circle cx={s.c[0]} cy={s.c[1]} r={s.r} fill={color} opacity={0.15} />}
+              {s.r > BAND_PX && (
+                <circle
+                  cx={s.c[0]}
+                  cy={s.c[1]}
+                  r={s.r - BAND_PX / 2}
+                  fill="none"
+                  stroke={hatch(color)}
+                  strokeWidth={BAND_PX}
+                />
+              )}
+            </g>
+          );
+        }
+        return (
+          // biome-ignore lint/suspicious/noArrayIndexKey: one node may make several mirrors
+          <g key={i} data-kept-side={s.nodeId}>
+            {hot && s.discarded.length >= 3 && (
+              <polygon points={points(s.discarded)} fill={color} opacity={0.15} />
+            )}
+            <polygon points={points(s.band)} fill={hatch(color)} />
+          </g>
+        );
+      })}
+    </g>
+  );
+}

@@ -30,7 +30,8 @@ export function flipSide(s: KeptSide): KeptSide {
 
 /** Signed distance of p into the kept side: > 0 inside it, 0 on the mirror, < 0 on the other side. */
 export function depthInSide(s: KeptSide, p: Vec2): number {
-  if (s.kind === 'half-plane') return dot(sub(p, s.q), s.n);
+  // No allocation: this runs O(m³) times per check (see commonInteriorPoint).
+  if (s.kind === 'half-plane') return (p[0] - s.q[0]) * s.n[0] + (p[1] - s.q[1]) * s.n[1];
   const d = Math.hypot(p[0] - s.c[0], p[1] - s.c[1]) - s.r;
   return s.keepInside ? -d : d;
 }

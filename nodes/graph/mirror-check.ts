@@ -29,6 +29,14 @@ import type { NodeEvaluation } from './evaluate.ts';
 export const ANGLE_TOLERANCE = 1e-4;
 /** The most flips tried together when looking for the fix. */
 const MAX_FLIPS = 3;
+/** Flip sets tried at most, and the most mirrors a flip search runs for (see findFlips). */
+const FLIP_TRIES = 64;
+const FLIP_SEARCH_MIRRORS = 12;
+/**
+ * Scenes with more mirrors than this are not checked: the test is O(m³) and runs on every frame of
+ * a drag (a few ms at 32); such scenes are built from the tiling nodes, which are right by design.
+ */
+export const MAX_CHECKED_MIRRORS = 32;
 
 interface Mirror {
   readonly nodeId: string;
@@ -88,12 +96,19 @@ function* subsets(pool: readonly number[], k: number, from = 0): Generator<numbe
     for (const rest of subsets(pool, k - 1, i + 1)) yield [pool[i], ...rest];
 }
 
-/** The fewest flips among `pool` after which the sides have a common interior (bounded, if asked). */
+/**
+ * The fewest flips among `pool` after which the sides have a common interior (bounded, if asked).
+ * Each try costs O(m³) for m mirrors, and this runs on every evaluation (every drag frame), so the
+ * search stops after FLIP_TRIES tries and is skipped above FLIP_SEARCH_MIRRORS mirrors.
+ */
 function findFlips(sides: readonly KeptSide[], pool: readonly number[], mustBound: boolean): number[] | null {
+  if (sides.length > FLIP_SEARCH_MIRRORS) return null;
+  let tries = 0;
   for (let k = 1; k <= Math.min(MAX_FLIPS, pool.length); k++) {
     for (const set of subsets(pool, k)) {
       const flipped = sides.map((s, i) => (set.includes(i) ? flipSide(s) : s));
       if (mustBound && !isBounded(flipped)) continue;
+      if (++tries > FLIP_TRIES) return null;
       if (commonInteriorPoint(flipped)) return set;
     }
   }
@@ -256,7 +271,7 @@ export function mirrorDiagnostics(
   graph: MirrorGraph,
 ): Diagnostic[] {
   const mirrors = mirrorsOf(elements, graph);
-  if (mirrors.length === 0) return [];
+  if (mirrors.length === 0 || mirrors.length > MAX_CHECKED_MIRRORS) return [];
   const sides = keptSideDiagnostics(mirrors, renderNodeId);
   return sides.length > 0 ? sides : angleDiagnostics(mirrors, graph);
 }

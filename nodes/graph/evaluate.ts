@@ -115,7 +115,13 @@ export function evaluateGraph(
     renderNodeId: chosen?.id ?? null,
   };
   // The mirrors' kept sides and corner angles: a wrong picture never comes without a message.
-  if (chosen) diagnostics.push(...mirrorDiagnostics(scene.elements, chosen.id, { analysis, nodes: results }));
+  if (chosen) {
+    try {
+      diagnostics.push(...mirrorDiagnostics(scene.elements, chosen.id, { analysis, nodes: results }));
+    } catch {
+      // A check, not the picture: a geometry corner case here must never withhold the render.
+    }
+  }
   return { scene, nodes: results, diagnostics, analysis };
 }
 

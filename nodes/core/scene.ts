@@ -24,6 +24,16 @@ export interface InversionElement extends ElementBase {
   readonly r: number;
 }
 
+/**
+ * The circle mirror that keeps its inside (an `inversion` node with `flip`): inversion in (c, r)
+ * applied OUTSIDE the circle, inside |p−c| > r, σ as for InversionElement.
+ */
+export interface OuterInversionElement extends ElementBase {
+  readonly kind: 'outer-inversion';
+  readonly c: Vec2;
+  readonly r: number;
+}
+
 /** Reflection in the line through q with unit normal n: inside (p−q)·n < 0. */
 export interface ReflectionElement extends ElementBase {
   readonly kind: 'reflection';
@@ -123,6 +133,7 @@ export interface SpiralSimilarityElement extends ElementBase {
 
 export type SceneElement =
   | InversionElement
+  | OuterInversionElement
   | ReflectionElement
   | MobiusElement
   | LoxodromicElement

@@ -56,6 +56,7 @@ export interface MirrorGraph {
 export function keptSideOf(e: SceneElement): KeptSide | null {
   if (e.kind === 'reflection') return { kind: 'half-plane', q: e.q, n: e.n };
   if (e.kind === 'inversion') return { kind: 'disk', c: e.c, r: e.r, keepInside: false };
+  if (e.kind === 'outer-inversion') return { kind: 'disk', c: e.c, r: e.r, keepInside: true };
   return null;
 }
 

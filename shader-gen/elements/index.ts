@@ -6,6 +6,7 @@ import { inversion } from './inversion.ts';
 import { loxodromic } from './loxodromic.ts';
 import { mobius } from './mobius.ts';
 import { mobiusMatrix } from './mobius-matrix.ts';
+import { outerInversion } from './outer-inversion.ts';
 import { parallelMirrors } from './parallel-mirrors.ts';
 import { reflection } from './reflection.ts';
 import { rotation } from './rotation.ts';
@@ -16,6 +17,7 @@ type KindTable = { readonly [K in SceneElement['kind']]: ElementKind<Extract<Sce
 
 export const ELEMENT_KINDS: KindTable = {
   inversion,
+  'outer-inversion': outerInversion,
   reflection,
   mobius,
   loxodromic,

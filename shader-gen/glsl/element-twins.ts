@@ -9,6 +9,7 @@ import { inversionGlsl } from '../elements/inversion.glsl.ts';
 import { loxodromicGlsl } from '../elements/loxodromic.glsl.ts';
 import { mobiusGlsl } from '../elements/mobius.glsl.ts';
 import { mobiusMatrixGlsl } from '../elements/mobius-matrix.glsl.ts';
+import { outerInversionGlsl } from '../elements/outer-inversion.glsl.ts';
 import { parallelMirrorsGlsl } from '../elements/parallel-mirrors.glsl.ts';
 import { reflectionGlsl } from '../elements/reflection.glsl.ts';
 import { rotationGlsl } from '../elements/rotation.glsl.ts';
@@ -22,6 +23,7 @@ type TwinTable = {
 
 export const GLSL_TWINS: TwinTable = {
   inversion: inversionGlsl,
+  'outer-inversion': outerInversionGlsl,
   reflection: reflectionGlsl,
   mobius: mobiusGlsl,
   loxodromic: loxodromicGlsl,

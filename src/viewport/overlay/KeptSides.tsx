@@ -31,16 +31,21 @@ export function KeptSides(props: {
         const color = props.colorOf(s.nodeId);
         const hot = s.nodeId === props.hoveredNodeId;
         if (s.kind === 'circle') {
-          // The back of a circle mirror is its inside: a hatched ring just within the rim.
+          // The back of a circle mirror is its inside (its outside when it keeps the inside): a
+          // hatched ring just within (beyond) the rim. The hovered one shades its back: the disk,
+          // or everything but the disk (an even-odd path: the pane with the disk cut out).
+          const ring = s.keepInside ? s.r + BAND_PX / 2 : s.r - BAND_PX / 2;
+          const disk = `M${s.c[0] - s.r},${s.c[1]}a${s.r},${s.r} 0 1,0 ${2 * s.r},0a${s.r},${s.r} 0 1,0 ${-2 * s.r},0`;
+          const back = s.keepInside ? `M-1e5,-1e5H1e5V1e5H-1e5Z${disk}` : disk;
           return (
             // biome-ignore lint/suspicious/noArrayIndexKey: one node may make several mirrors
             <g key={i} data-kept-side={s.nodeId}>
-              {hot && <circle cx={s.c[0]} cy={s.c[1]} r={s.r} fill={color} opacity={0.15} />}
-              {s.r > BAND_PX && (
+              {hot && <path d={back} fillRule="evenodd" fill={color} opacity={0.15} />}
+              {ring > BAND_PX / 2 && (
                 <circle
                   cx={s.c[0]}
                   cy={s.c[1]}
-                  r={s.r - BAND_PX / 2}
+                  r={ring}
                   fill="none"
                   stroke={hatch(color)}
                   strokeWidth={BAND_PX}

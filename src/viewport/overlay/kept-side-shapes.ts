@@ -22,7 +22,14 @@ export type KeptSideShape =
       /** The discarded half-plane clipped to the pane. */
       readonly discarded: readonly Vec2[];
     }
-  | { readonly kind: 'circle'; readonly nodeId: string; readonly c: Vec2; readonly r: number };
+  | {
+      readonly kind: 'circle';
+      readonly nodeId: string;
+      readonly c: Vec2;
+      readonly r: number;
+      /** A circle mirror with `flip`: its back is the outside. */
+      readonly keepInside: boolean;
+    };
 
 /** The pane's corners, clockwise from the top-left, cut to where `inside` ≥ 0 (one clip plane). */
 function clipPane(s: Screen, inside: (p: Vec2) => number): Vec2[] {
@@ -55,7 +62,7 @@ export function keptSideShapes(elements: readonly SceneElement[], s: Screen): Ke
     if (!side) continue;
     if (side.kind === 'disk') {
       const c = toCss(s, side.c);
-      shapes.push({ kind: 'circle', nodeId: e.nodeId, c, r: side.r * k });
+      shapes.push({ kind: 'circle', nodeId: e.nodeId, c, r: side.r * k, keepInside: side.keepInside });
       continue;
     }
     const a = toCss(s, side.q);

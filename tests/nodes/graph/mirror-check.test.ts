@@ -110,3 +110,46 @@ describe('mirror check (KF406 kept sides, KF407 angles)', () => {
     );
   });
 });
+
+describe('circle mirrors (inversion with flip, node version 2)', () => {
+  const wedge = (flip: boolean | undefined, version?: number): GraphDoc => ({
+    ...triangleDoc(EQUILATERAL, []),
+    nodes: [
+      { id: 'w1', type: 'reflection', position: [0, 0], params: { line: { a: [0, 0], b: [1, 0] } } },
+      {
+        id: 'w2',
+        type: 'reflection',
+        position: [0, 0],
+        params: { line: { a: [Math.cos(Math.PI / 3), Math.sin(Math.PI / 3)], b: [0, 0] } },
+      },
+      {
+        id: 'disk',
+        type: 'inversion',
+        position: [0, 0],
+        params: { circle: { c: [0, 0], r: 1 }, ...(flip === undefined ? {} : { flip }) },
+        ...(version ? { version } : {}),
+      },
+      { id: 'out', type: 'render', position: [0, 0], params: {} },
+    ],
+    edges: ['w1', 'w2', 'disk'].map((id) => ({
+      id: `e${id}`,
+      from: { node: id, port: 'element' },
+      to: { node: 'out', port: 'elements' },
+    })),
+  });
+
+  it('a version-1 inversion migrates to keep the outside; flip keeps the inside (outer inversion)', () => {
+    const old = evaluateGraph(wedge(undefined, 1), registry);
+    expect(old.scene.elements.map((e) => e.kind).sort()).toEqual(['inversion', 'reflection', 'reflection']);
+    const flipped = evaluateGraph(wedge(true), registry);
+    expect(flipped.scene.elements.map((e) => e.kind).sort()).toEqual([
+      'outer-inversion',
+      'reflection',
+      'reflection',
+    ]);
+  });
+
+  it('a wedge of two lines at π/3 and the unit circle kept from inside is a clean spherical kaleidoscope', () => {
+    expect(mirrorWarnings(wedge(true))).toEqual([]);
+  });
+});

@@ -35,6 +35,8 @@ describe('kept-side shapes', () => {
       ],
       screen,
     );
-    expect(shapes).toEqual([{ kind: 'circle', nodeId: 'c', c: [200, 200], r: 100 }]);
+    expect(shapes).toEqual([{ kind: 'circle', nodeId: 'c', c: [200, 200], r: 100, keepInside: false }]);
+    const [flipped] = keptSideShapes([{ kind: 'outer-inversion', nodeId: 'c', c: [0, 0], r: 1 }], screen);
+    expect(flipped).toEqual({ kind: 'circle', nodeId: 'c', c: [200, 200], r: 100, keepInside: true });
   });
 });

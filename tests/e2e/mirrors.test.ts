@@ -4,9 +4,12 @@
  * warning naming it, clicks its fix and gets the tiling; a corner that is not π/n shows its angle as
  * π/x and "Snap to π/n" fixes it.
  */
+
+import { mkdirSync } from 'node:fs';
+import { join } from 'node:path';
 import type { BrowserContext, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { type ServedApp, serveApp } from './app-server.ts';
+import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
 import {
   addNode,
   connect,
@@ -101,6 +104,8 @@ describe('mirrors', () => {
     await page.mouse.move(pane.x + pane.width / 2, pane.y + pane.height / 2);
     for (let i = 0; i < 4; i++) await page.mouse.wheel(0, 300);
     const wrong = await zoomedOutPixels();
+    mkdirSync(join(repoRoot, 'test-artifacts'), { recursive: true });
+    await page.screenshot({ path: join(repoRoot, 'test-artifacts', 'mirrors-wrong-side.png') });
 
     // One click on the node's fix: the flip toggle turns on, the warning goes, the tiling appears.
     await nodeEl(page, mirrors[1])
@@ -109,6 +114,7 @@ describe('mirrors', () => {
     await expect.poll(() => status().textContent()).toMatch(/No problems/);
     expect(await nodeEl(page, mirrors[1]).getByRole('checkbox', { name: 'flip' }).isChecked()).toBe(true);
     const tiling = await zoomedOutPixels();
+    await page.screenshot({ path: join(repoRoot, 'test-artifacts', 'mirrors-flipped.png') });
     console.log(
       'wrong',
       wrong.sd,

@@ -23,7 +23,9 @@ export function KeptSides(props: {
             patternUnits="userSpaceOnUse"
             patternTransform="rotate(45)"
           >
-            <line x1={0} y1={0} x2={0} y2={6} stroke={color} strokeWidth={2} opacity={0.7} />
+            {/* A dark stroke under the colour: the hatching shows on any picture, pink on pink too. */}
+            <line x1={1.5} y1={0} x2={1.5} y2={6} stroke="#000000" strokeWidth={3} opacity={0.55} />
+            <line x1={1.5} y1={0} x2={1.5} y2={6} stroke={color} strokeWidth={1.5} />
           </pattern>
         ))}
       </defs>

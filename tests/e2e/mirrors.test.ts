@@ -156,7 +156,8 @@ describe('mirrors', () => {
     // That corner is exact now: its warning is gone (others may remain or change), and the fix
     // moved an upstream point node — the node that owns the value, as a drag in the render does.
     await expect.poll(listedDiagnostics).not.toContain(corner);
-    expect(await coords()).not.toEqual(before);
+    // (The graph's nodes redraw a frame after the status list: poll.)
+    await expect.poll(coords).not.toEqual(before);
     expect(problems).toEqual([]);
   }, 120_000);
 });

@@ -3,7 +3,21 @@
  * search for them): KF1xx document, KF2xx graph structure, KF3xx node evaluation, KF4xx
  * scene/compile/render, KF5xx import/export.
  */
+import type { Vec2 } from './values.ts';
+
 export type Severity = 'error' | 'warning' | 'info';
+
+/**
+ * A one-click repair offered with a diagnostic, as data (the UI runs it as ONE undo step):
+ * new stored values for some nodes, and/or handle moves applied exactly like a drag in the render
+ * (a move aimed at a wired point moves the upstream node that owns it).
+ */
+export interface DiagnosticFix {
+  /** The button's text, e.g. `Flip “AC”`. */
+  readonly label: string;
+  readonly params?: readonly { readonly nodeId: string; readonly params: Record<string, unknown> }[];
+  readonly moves?: readonly { readonly nodeId: string; readonly handle: string; readonly to: Vec2 }[];
+}
 
 export interface Diagnostic {
   readonly code: string;
@@ -13,6 +27,7 @@ export interface Diagnostic {
   readonly path?: string;
   readonly nodeId?: string;
   readonly port?: string;
+  readonly fix?: DiagnosticFix;
 }
 
 type Entry = {
@@ -156,6 +171,8 @@ export const DIAGNOSTICS = table({
     text: (value: number, max: number) =>
       `a value of ${value} is beyond what the GPU computes with (±${max.toExponential()}): the shader overflows to ∞ there, so this element does not draw as the CPU preview does`,
   },
+  keptSides: { code: 'KF406', severity: 'warning', text: (detail: string) => detail },
+  mirrorAngle: { code: 'KF407', severity: 'warning', text: (detail: string) => detail },
   importProblem: { code: 'KF501', severity: 'error', text: (detail: string) => detail },
   importNote: { code: 'KF502', severity: 'warning', text: (detail: string) => detail },
   migrated: {

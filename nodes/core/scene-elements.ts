@@ -22,6 +22,16 @@ export interface InversionElement extends ElementBase {
   readonly r: number;
 }
 
+/**
+ * Inversion in the circle (c, r) that keeps the inside (a flipped circle mirror): it acts where
+ * |p−c| > r, σ(p) = c + r²(p−c)/|p−c|².
+ */
+export interface OuterInversionElement extends ElementBase {
+  readonly kind: 'outer-inversion';
+  readonly c: Vec2;
+  readonly r: number;
+}
+
 /** Reflection in the line through q with unit normal n: inside (p−q)·n < 0. */
 export interface ReflectionElement extends ElementBase {
   readonly kind: 'reflection';
@@ -121,6 +131,7 @@ export interface SpiralSimilarityElement extends ElementBase {
 
 export type SceneElement =
   | InversionElement
+  | OuterInversionElement
   | ReflectionElement
   | MobiusElement
   | LoxodromicElement

@@ -13,6 +13,7 @@ import { DEFAULT_TILE } from '../core/tile-spec.ts';
 import { type Analysis, analyzeGraph } from './analyze.ts';
 import type { GraphDoc } from './document.ts';
 import { nodeVersion, nodeVersionProblem } from './migrate.ts';
+import { mirrorDiagnostics } from './mirror-check.ts';
 import { checkNumber, resolveParams } from './params.ts';
 
 export interface NodeEvaluation {
@@ -111,6 +112,14 @@ export function evaluateGraph(
     handles,
     renderNodeId: chosen?.id ?? null,
   };
+  // The mirrors' kept sides and corner angles: a wrong picture never comes without a message.
+  if (chosen) {
+    try {
+      diagnostics.push(...mirrorDiagnostics(scene.elements, chosen.id, { analysis, nodes: results }));
+    } catch {
+      // A check, not the picture: a geometry corner case here must never withhold the render.
+    }
+  }
   return { scene, nodes: results, diagnostics, analysis };
 }
 

@@ -11,6 +11,7 @@ import { inversion } from './inversion.ts';
 import { loxodromic } from './loxodromic.ts';
 import { mobius } from './mobius.ts';
 import { mobiusMatrix } from './mobius-matrix.ts';
+import { outerInversion } from './outer-inversion.ts';
 import { parallelMirrors } from './parallel-mirrors.ts';
 import { reflection } from './reflection.ts';
 import { rotation } from './rotation.ts';
@@ -27,6 +28,7 @@ export type ElementRegistry = {
 
 export const ELEMENTS: ElementRegistry = {
   inversion,
+  'outer-inversion': outerInversion,
   reflection,
   mobius,
   loxodromic,

@@ -8,6 +8,7 @@ import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import { emptyDocument, type GraphDoc } from '../../nodes/graph/document.ts';
 import { registry } from '../../nodes/types/index.ts';
+import { fixPatches } from '../editor/diagnostic-fix.ts';
 import { GraphEditor } from '../editor/GraphEditor.tsx';
 import { isTyping } from '../editor/typing.ts';
 import type { AutosaveHold } from '../state/autosave.ts';
@@ -198,6 +199,9 @@ export function App({ initialMessages, autosaveHold }: Props) {
         edges={doc.edges.length}
         saveState={saveState}
         onSelectNode={(id) => store.setSelection([id])}
+        onFix={(fix) =>
+          store.dispatch({ type: 'set-params', patches: fixPatches(evaluation, fix) }, fix.label)
+        }
       />
       <input
         ref={fileInput}

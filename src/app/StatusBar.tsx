@@ -1,6 +1,7 @@
 /** The status line: diagnostics (click for the list), render progress and autosave state. */
 import { useState } from 'react';
-import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import type { Diagnostic, DiagnosticFix } from '../../nodes/core/diagnostics.ts';
+import { FixButton } from '../editor/FixButton.tsx';
 import type { RenderInfo } from './RenderPane.tsx';
 
 interface Props {
@@ -10,9 +11,11 @@ interface Props {
   readonly edges: number;
   readonly saveState: string;
   onSelectNode(id: string): void;
+  /** Runs a diagnostic's one-click fix. */
+  onFix(fix: DiagnosticFix): void;
 }
 
-export function StatusBar({ diagnostics, render, nodes, edges, saveState, onSelectNode }: Props) {
+export function StatusBar({ diagnostics, render, nodes, edges, saveState, onSelectNode, onFix }: Props) {
   const [open, setOpen] = useState(false);
   const errors = diagnostics.filter((d) => d.severity === 'error').length;
   const warnings = diagnostics.filter((d) => d.severity === 'warning').length;
@@ -63,6 +66,12 @@ export function StatusBar({ diagnostics, render, nodes, edges, saveState, onSele
                 d.path && <code>{d.path}</code>
               )}{' '}
               {d.message}
+              {d.fix && (
+                <>
+                  {' '}
+                  <FixButton fix={d.fix} onFix={onFix} />
+                </>
+              )}
             </li>
           ))}
         </ul>

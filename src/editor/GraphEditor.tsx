@@ -26,6 +26,7 @@ import type { Change } from '../state/changes.ts';
 import { idAllocator } from '../state/ids.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
 import { checkConnection, portOfHandle } from './connection.ts';
+import { fixPatches } from './diagnostic-fix.ts';
 import { type EditorActions, EditorContext } from './editor-context.ts';
 import { diagnosticsByNode, type KfNode, type KfNodeData, toFlowEdges, toFlowNodes } from './flow-model.ts';
 import { GraphPanels } from './GraphPanels.tsx';
@@ -91,6 +92,9 @@ export function GraphEditor({
   }, [doc, evaluation, diagnostics, selection, hoveredNodeId]);
   const edges = useMemo(() => toFlowEdges(doc, registry, selectedEdges), [doc, selectedEdges]);
 
+  // The fix maps handle moves with the evaluation current at the click, not the one at mount.
+  const latestEvaluation = useRef(evaluation);
+  latestEvaluation.current = evaluation;
   const actions = useMemo<EditorActions>(
     () => ({
       registry,
@@ -100,6 +104,8 @@ export function GraphEditor({
         else store.preview(change);
       },
       setHoveredNode: onHoverNode,
+      runFix: (fix) =>
+        store.dispatch({ type: 'set-params', patches: fixPatches(latestEvaluation.current, fix) }, fix.label),
     }),
     [store, onHoverNode],
   );

@@ -10,6 +10,7 @@ import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
 import type { GraphNode } from '../../nodes/graph/document.ts';
 import type { NodeEvaluation } from '../../nodes/graph/evaluate.ts';
 import { useEditorActions } from './editor-context.ts';
+import { FixButton } from './FixButton.tsx';
 import { hasInlineEditor } from './widgets/inline-editor.ts';
 import { InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
 
@@ -23,7 +24,7 @@ interface Props {
 }
 
 export function Inspector({ node, connected, evaluation, diagnostics, onLabel, onClose }: Props) {
-  const { registry, editParam } = useEditorActions();
+  const { registry, editParam, runFix } = useEditorActions();
   const def = registry.get(node.type);
   const [label, setLabel] = useState(node.label ?? '');
   useEffect(() => setLabel(node.label ?? ''), [node.label]);
@@ -108,6 +109,12 @@ export function Inspector({ node, connected, evaluation, diagnostics, onLabel, o
             {diagnostics.map((d) => (
               <li key={`${d.code}-${d.port ?? ''}-${d.message}`} className={`kf-diag kf-diag--${d.severity}`}>
                 <code>{d.code}</code> {d.message}
+                {d.fix && (
+                  <>
+                    {' '}
+                    <FixButton fix={d.fix} onFix={runFix} />
+                  </>
+                )}
               </li>
             ))}
           </ul>

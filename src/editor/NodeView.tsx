@@ -11,6 +11,7 @@ import { portSpec } from '../../nodes/core/port-lookup.ts';
 import { canConnect, PORT_TYPE_INFO, type PortType } from '../../nodes/core/ports.ts';
 import { inHandle, outHandle, portOfHandle } from './connection.ts';
 import { useEditorActions } from './editor-context.ts';
+import { distinctFixes, FixButton } from './FixButton.tsx';
 import type { KfNode, KfNodeData } from './flow-model.ts';
 import { MoreSection } from './MoreSection.tsx';
 import { type NodeField, nodeFields } from './node-fields.ts';
@@ -82,7 +83,7 @@ function Port({
 }
 
 function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
-  const { editParam, setHoveredNode } = useEditorActions();
+  const { editParam, setHoveredNode, runFix } = useEditorActions();
   const wire = useWireInProgress();
   const { node, def, connected, evaluation, diagnostics } = data;
   const portDiag = (port: string) => diagnostics.filter((d) => d.port === port);
@@ -197,6 +198,11 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
         )}
       </div>
       {evaluation?.readout && <div className="kf-node__readout">{evaluation.readout}</div>}
+      {distinctFixes(diagnostics).map((fix) => (
+        <div key={fix.label} className="kf-node__fix">
+          <FixButton fix={fix} onFix={runFix} />
+        </div>
+      ))}
     </div>
   );
 }

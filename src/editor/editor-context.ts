@@ -1,5 +1,6 @@
 /** What every node component needs besides its own data: the registry and the edit callbacks. */
 import { createContext, useContext } from 'react';
+import type { DiagnosticFix } from '../../nodes/core/diagnostics.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { OnEdit } from './widgets/edit.ts';
 
@@ -9,6 +10,8 @@ export interface EditorActions {
   editParam(nodeId: string, key: string): OnEdit<unknown>;
   /** The node under the pointer (shared with the render overlay). */
   setHoveredNode(id: string | null): void;
+  /** Runs a diagnostic's fix as one undo step. */
+  runFix(fix: DiagnosticFix): void;
 }
 
 export const EditorContext = createContext<EditorActions | null>(null);

@@ -57,6 +57,7 @@ describe('one sample, nothing blended: no conversion at all', () => {
         'schottky-picture-fill',
         'schottky-seeds-fill-edges',
         'schottky-seeds-only', // seeds fading with depth
+        'spherical-wedge-parity-edges',
         'strips-hsv-edges',
         'triangle-333-picture',
       ].sort(),

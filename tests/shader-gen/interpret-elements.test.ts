@@ -1,7 +1,12 @@
 /** The element steps of shader-gen/elements against nodes/geometry (the math they must share). */
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import type { InversionElement, MobiusElement, ReflectionElement } from '../../nodes/core/scene.ts';
+import type {
+  InversionElement,
+  MobiusElement,
+  OuterInversionElement,
+  ReflectionElement,
+} from '../../nodes/core/scene.ts';
 import type { Circle, Vec2 } from '../../nodes/core/values.ts';
 import { invertPoint, reflectPoint } from '../../nodes/geometry/circle.ts';
 import { twoCircleRegions } from '../../nodes/geometry/mobius.ts';
@@ -67,6 +72,38 @@ describe('inversion element', () => {
   it('boundaryDistance is the distance to the circle', () => {
     const e: InversionElement = { kind: 'inversion', nodeId: 'i', c: [1, 0], r: 2 };
     expect(kind.boundaryDistance(e, 1, 0)).toBe(2);
+    expect(kind.boundaryDistance(e, 4, 0)).toBe(1);
+  });
+});
+
+describe('outer-inversion element (a circle mirror that keeps its inside)', () => {
+  const kind = ELEMENTS['outer-inversion'].cpu;
+
+  it('steps exactly the points outside, like invertPoint, and lands them inside', () => {
+    fc.assert(
+      fc.property(circle, point, (C, p) => {
+        const e: OuterInversionElement = { kind: 'outer-inversion', nodeId: 'o', c: C.c, r: C.r };
+        fc.pre(Math.abs(dist(p, C.c) - C.r) > 1e-9);
+        const st = state(p);
+        const outside = dist(p, C.c) > C.r;
+        expect(kind.inside(e, p[0], p[1])).toBe(outside);
+        expect(kind.step(e, st)).toBe(outside);
+        if (!outside) {
+          expect(st).toEqual(state(p));
+          return;
+        }
+        close([st.x, st.y], invertPoint(C, p)!);
+        expect(st.depth).toBe(1);
+        expect(st.s).toBeCloseTo(C.r ** 2 / dist(p, C.c) ** 2, 9);
+        expect(kind.inside(e, st.x, st.y)).toBe(false);
+      }),
+      SEED,
+    );
+  });
+
+  it('lets NaN fall through and measures the distance to the circle', () => {
+    const e: OuterInversionElement = { kind: 'outer-inversion', nodeId: 'o', c: [1, 0], r: 2 };
+    expect(kind.step(e, state([Number.NaN, 0]))).toBe(false);
     expect(kind.boundaryDistance(e, 4, 0)).toBe(1);
   });
 });

@@ -4,9 +4,11 @@
  * and its evaluation, so the walkthrough ticks a step off the moment the user has done it, in any
  * order and by any means (palette, paste, undo).
  */
-import type { ReflectionElement } from '../../../nodes/core/scene.ts';
+
+import { depthInSide } from '../../../nodes/geometry/kept-region.ts';
 import type { GraphDoc } from '../../../nodes/graph/document.ts';
 import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
+import { keptSideOf } from '../../../nodes/graph/mirror-check.ts';
 
 export interface WalkthroughStep {
   readonly id: string;
@@ -98,6 +100,8 @@ export function walkthroughStatus(doc: GraphDoc, evaluation: Evaluation): readon
  * The rendered line mirrors whose kept side (p − q)·n ≥ 0 does not contain the centroid of the
  * document's points (the triangle's inside when the points are its corners), named as the user
  * sees them: the node's label, or "Line reflection N" counting those nodes in document order.
+ * The Render's KF406 warning (nodes/graph/mirror-check.ts) says the same with a fix; this names
+ * them per step.
  */
 function mirrorsKeepingOutside(doc: GraphDoc, evaluation: Evaluation): { id: string; name: string }[] {
   const corners = doc.nodes
@@ -108,8 +112,8 @@ function mirrorsKeepingOutside(doc: GraphDoc, evaluation: Evaluation): { id: str
   const cx = corners.reduce((s, p) => s + p[0], 0) / corners.length;
   const cy = corners.reduce((s, p) => s + p[1], 0) / corners.length;
   return evaluation.scene.elements
-    .filter((e): e is ReflectionElement => e.kind === 'reflection')
-    .filter((e) => (cx - e.q[0]) * e.n[0] + (cy - e.q[1]) * e.n[1] < 0)
+    .filter((e) => e.kind === 'reflection')
+    .filter((e) => depthInSide(keptSideOf(e)!, [cx, cy]) < 0)
     .map((e) => {
       const reflections = doc.nodes.filter((n) => n.type === 'reflection');
       const i = reflections.findIndex((n) => n.id === e.nodeId);

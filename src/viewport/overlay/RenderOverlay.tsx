@@ -10,14 +10,16 @@
 import { type JSX, useMemo, useRef } from 'react';
 import type { View } from '../../../nodes/core/scene.ts';
 import type { GraphDoc } from '../../../nodes/graph/document.ts';
+import type { NodePatch } from '../../../nodes/graph/drag-patches.ts';
 import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
-import type { NodePatch } from './drag-patches.ts';
+import { KeptSides } from './KeptSides.tsx';
+import { keptSideShapes } from './kept-side-shapes.ts';
 import { OverlayShapes } from './OverlayShapes.tsx';
 import { SnapGuides } from './SnapGuides.tsx';
 import { placeHandles, placeOverlays, type Screen } from './screen.ts';
 import { useOverlayPointer } from './use-overlay-pointer.ts';
 
-export type { NodePatch } from './drag-patches.ts';
+export type { NodePatch } from '../../../nodes/graph/drag-patches.ts';
 
 export interface RenderOverlayProps {
   doc: GraphDoc;
@@ -55,6 +57,10 @@ export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
       ),
     [sized, evaluation, screen],
   );
+  const keptSides = useMemo(
+    () => (sized ? keptSideShapes(evaluation.scene.elements, screen) : []),
+    [sized, evaluation, screen],
+  );
   const { drag, hoverHandle } = useOverlayPointer(ref, {
     evaluation,
     screen,
@@ -83,6 +89,11 @@ export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
         cursor,
       }}
     >
+      <KeptSides
+        shapes={keptSides}
+        colorOf={(id) => evaluation.analysis.nodes.get(id)?.def?.color ?? FALLBACK_COLOR}
+        hoveredNodeId={drag ? null : hoveredNodeId}
+      />
       <OverlayShapes
         items={items}
         handles={handles}

@@ -63,10 +63,16 @@ export function SnapGuides({
     case 'angle': {
       const pivot = toCss(screen, guide.pivot);
       const seg = clipLineToRect(pivot, p, screen.width, screen.height, 0);
+      // The line it meets at π/n, drawn as a guide too, so the user sees which one.
+      const ref = guide.piOver?.line;
+      const other = ref
+        ? clipLineToRect(toCss(screen, ref.a), toCss(screen, ref.b), screen.width, screen.height, 0)
+        : null;
       return (
         <g data-snap="angle">
           {seg && <path d={`M${seg[0][0]},${seg[0][1]}L${seg[1][0]},${seg[1][1]}`} {...dash} />}
-          <Caption at={pivot} text={`${guide.degrees}°`} />
+          {other && <path d={`M${other[0][0]},${other[0][1]}L${other[1][0]},${other[1][1]}`} {...dash} />}
+          <Caption at={pivot} text={guide.piOver ? `π/${guide.piOver.n}` : `${guide.degrees}°`} />
         </g>
       );
     }

@@ -31,5 +31,5 @@ export const OVERLAY_PX = {
 /** Angle snapping steps in multiples of π / ANGLE_SNAP_DIVISIONS (15°). */
 export const ANGLE_SNAP_DIVISIONS = 12;
 
-/** How many wired point inputs a drag follows upstream (point → circle centre → …). */
-export const MAX_FORWARD_DEPTH = 4;
+/** Shift-dragging a line end also snaps its angle with every other drawn line to π/n, n ≤ this. */
+export const MIRROR_SNAP_MAX_N = 12;

@@ -43,6 +43,31 @@ export function snapAngle(p: Vec2, pivot: Vec2, divisions: number): Vec2 {
 }
 
 /**
+ * Turns p about `pivot` so the line pivot → p meets a line of direction angle `ref` at π/n, for the
+ * n in 2..maxN (mirrors meeting at π/n tile): the candidate directions are ref ± π/n and
+ * ref + π ± π/n; the one nearest p's direction wins, |p − pivot| is kept. Returns the point and n.
+ */
+export function snapAngleToLine(p: Vec2, pivot: Vec2, ref: number, maxN: number): { at: Vec2; n: number } {
+  const length = Math.hypot(p[0] - pivot[0], p[1] - pivot[1]);
+  if (length === 0) return { at: p, n: 2 };
+  const theta = Math.atan2(p[1] - pivot[1], p[0] - pivot[0]);
+  /** |a − b| as angles, in [0, π]. */
+  const gap = (a: number, b: number) => Math.abs(Math.atan2(Math.sin(a - b), Math.cos(a - b)));
+  let best = { dir: ref + Math.PI / 2, n: 2 };
+  for (let n = 2; n <= maxN; n++) {
+    for (const dir of [
+      ref + Math.PI / n,
+      ref - Math.PI / n,
+      ref + Math.PI + Math.PI / n,
+      ref + Math.PI - Math.PI / n,
+    ]) {
+      if (gap(dir, theta) < gap(best.dir, theta)) best = { dir, n };
+    }
+  }
+  return { at: [pivot[0] + length * Math.cos(best.dir), pivot[1] + length * Math.sin(best.dir)], n: best.n };
+}
+
+/**
  * Radii r at which a circle centred at c touches `other` = (c2, r2), with d = |c − c2|:
  * externally when d = r + r2 (r = d − r2, needs d > r2), internally when d = |r − r2|
  * (r = r2 − d inside it, needs d < r2; or r = d + r2 around it). Concentric circles never touch.

@@ -8,9 +8,9 @@
 import { type RefObject, useEffect, useRef, useState } from 'react';
 import type { HandleItem } from '../../../nodes/core/scene.ts';
 import type { Vec2 } from '../../../nodes/core/values.ts';
+import { dragPatches, type NodePatch, originalParams } from '../../../nodes/graph/drag-patches.ts';
 import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
 import { OVERLAY_PX } from './constants.ts';
-import { dragPatches, type NodePatch, originalParams } from './drag-patches.ts';
 import { hitHandle, hitShape } from './hit-test.ts';
 import { pxPerWorld, type Screen, type ScreenHandle, type ScreenItem, toWorld } from './screen.ts';
 import { type SnapGuide, snapHandle } from './snap-rules.ts';

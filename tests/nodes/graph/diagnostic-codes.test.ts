@@ -14,6 +14,7 @@ import { loadDocument, parseDocumentText } from '../../../nodes/graph/load.ts';
 import { registry } from '../../../nodes/types/index.ts';
 import { doc, edge, node } from '../support/doc.ts';
 import { testRegistry } from './fixtures.ts';
+import { EQUILATERAL, triangleDoc } from './mirror-fixtures.ts';
 
 const GRAPH_DIR = join(import.meta.dirname, '../../../nodes/graph');
 
@@ -90,6 +91,19 @@ const SCENARIOS: Partial<Record<DiagnosticKey, () => readonly Diagnostic[]>> = {
       doc(
         [node('k', 'kaleidoscope', { p: 3, q: 3, r: 3 }), node('out', 'render')],
         [edge('e', 'k.boundary', 'out.clip')],
+      ),
+      registry,
+    ).diagnostics,
+  keptSides: () => evaluateGraph(triangleDoc(EQUILATERAL, ['AB', 'AC', 'BC']), registry).diagnostics,
+  mirrorAngle: () =>
+    evaluateGraph(
+      triangleDoc(
+        [
+          [0, 0],
+          [1, 0],
+          [0.3, 1],
+        ],
+        ['AB', 'BC', 'CA'],
       ),
       registry,
     ).diagnostics,

@@ -11,8 +11,8 @@ describe('tile palette presets', () => {
   it('a named preset replaces a, b, c, d, and the node says which', () => {
     for (const [name, p] of Object.entries(PALETTES)) {
       const r = evalNode('tile', { palette: name, a: '#ff0000' });
-      const coloring = (r.outputs?.tile as TileSpec).coloring;
-      expect(coloring).toMatchObject({ mode: 'cosine', a: p.a, b: p.b, c: p.c, d: p.d });
+      const tile = r.outputs?.tile as TileSpec | undefined;
+      expect(tile?.coloring).toMatchObject({ mode: 'cosine', a: p.a, b: p.b, c: p.c, d: p.d });
       expect(r.readout).toBe(`cosine · ${name}`);
     }
   });

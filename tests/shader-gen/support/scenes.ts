@@ -70,6 +70,17 @@ export const inversion = (nodeId: string, c: Vec2, r: number): SceneElement => (
   r,
 });
 
+/**
+ * A spherical kaleidoscope: two line mirrors through the origin at π/3 and the unit circle kept
+ * from inside (outer inversion), which meets both at π/2 — the (2,2,3) group, tile = the wedge's
+ * part of the unit disk.
+ */
+export const SPHERICAL_WEDGE: SceneElement[] = [
+  reflection('w1', [0, 0], [0, 1]),
+  reflection('w2', [0, 0], [Math.sin(Math.PI / 3), -Math.cos(Math.PI / 3)]),
+  { kind: 'outer-inversion', nodeId: 'disk', c: [0, 0], r: 1 },
+];
+
 /** The two-circle generator σ_C2∘σ_C1 with its regions from nodes/geometry (docs/math.md). */
 export function mobius(nodeId: string, c1: Circle, c2: Circle): SceneElement {
   const regions = twoCircleRegions(c1, c2);
@@ -148,6 +159,7 @@ export const EVERY_KIND: SceneElement[] = [
   ...ROSE,
   ...MATRIX,
   ...LOXODROMIC,
+  ...SPHERICAL_WEDGE,
 ];
 
 /** A disk seed and a picture seed outside the Schottky circles (both inside the tile). */
@@ -186,6 +198,11 @@ export const HAND_MADE_SCENES: Readonly<Record<string, Scene>> = {
     scale: 7,
   }),
   'loxodromic-parity-edges': makeScene(LOXODROMIC, { coloring: COLORINGS.parity, edgeWidth: 1 }),
+  'spherical-wedge-parity-edges': makeScene(SPHERICAL_WEDGE, {
+    coloring: COLORINGS.parity,
+    edgeWidth: 1.5,
+    scale: 3,
+  }),
   'every-kind-cosine-edges-clip': makeScene(EVERY_KIND, { edgeWidth: 1, clip: { c: [0, 0], r: 3 } }),
   empty: makeScene([]),
   // Tile options (colour.ts shade): fill, orbit seeds, seeds only, picture, limit set, inner area.

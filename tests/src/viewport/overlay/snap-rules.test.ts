@@ -40,6 +40,24 @@ describe('snapHandle', () => {
     expect(a.guide).toEqual({ kind: 'angle', pivot: [1, 0], degrees: -150 });
   });
 
+  it('turns a line end to meet another drawn line at π/n (n ≤ 12) when that is nearer than a 15° step', () => {
+    // Line l1 at 10° through the origin; l2 from (3, 0) is dragged near 10° + π/7 ≈ 35.71°.
+    const t = (10 * Math.PI) / 180;
+    const ev = evaluateGraph(
+      doc([
+        node('l1', 'line', { a: [0, 0], b: [Math.cos(t), Math.sin(t)] }),
+        node('l2', 'line', { a: [3, 0], b: [4, 0] }),
+      ]),
+      registry,
+    );
+    const want = [3 + Math.cos(t + Math.PI / 7 + 0.01), Math.sin(t + Math.PI / 7 + 0.01)] as [number, number];
+    const s = snapHandle(ev.scene.overlays, handleOf(ev, 'l2', 'b'), want, PX_PER_WORLD);
+    expect(s.guide.kind === 'angle' && s.guide.piOver?.n).toBe(7);
+    const dir = Math.atan2(s.at[1], s.at[0] - 3);
+    expect(dir - t).toBeCloseTo(Math.PI / 7, 12);
+    expect(dist(s.at, [3, 0])).toBeCloseTo(1, 12);
+  });
+
   it('makes a dragged rim tangent to a nearby circle, else rounds the radius to the grid', () => {
     const ev = evaluateGraph(
       doc([

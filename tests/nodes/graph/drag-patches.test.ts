@@ -1,11 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { defineNode } from '../../../../nodes/core/define-node.ts';
-import { createRegistry } from '../../../../nodes/core/registry.ts';
-import type { Vec2 } from '../../../../nodes/core/values.ts';
-import { evaluateGraph } from '../../../../nodes/graph/evaluate.ts';
-import { NODE_TYPES, registry } from '../../../../nodes/types/index.ts';
-import { dragPatches, firstHandle, originalParams } from '../../../../src/viewport/overlay/drag-patches.ts';
-import { doc, edge, node } from './fixtures.ts';
+import { defineNode } from '../../../nodes/core/define-node.ts';
+import { createRegistry } from '../../../nodes/core/registry.ts';
+import type { Vec2 } from '../../../nodes/core/values.ts';
+import { dragPatches, firstHandle, originalParams } from '../../../nodes/graph/drag-patches.ts';
+import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
+import { NODE_TYPES, registry } from '../../../nodes/types/index.ts';
+import { doc, edge, node } from '../../src/viewport/overlay/fixtures.ts';
 
 /** A point that passes its input through and offers it as a handle (like a "snap to" node). */
 const relayNode = defineNode({

@@ -5,13 +5,16 @@
  * Other wired keys are dropped: their value comes from the wire.
  */
 
-import { inputSpec, ownEntry } from '../../../nodes/core/port-lookup.ts';
-import { portValueToJson } from '../../../nodes/core/port-values.ts';
-import type { Vec2 } from '../../../nodes/core/values.ts';
-import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
-import { MAX_FORWARD_DEPTH } from './constants.ts';
+import { inputSpec, ownEntry } from '../core/port-lookup.ts';
+import { portValueToJson } from '../core/port-values.ts';
+import type { Vec2 } from '../core/values.ts';
+import type { Evaluation } from './evaluate.ts';
 
 /** New values (document form) for some of a node's params, as the editor applies them. */
+
+/** How many wired point inputs a drag follows upstream (point → circle centre → …). */
+export const MAX_FORWARD_DEPTH = 4;
+
 export interface NodePatch {
   nodeId: string;
   params: Record<string, unknown>;

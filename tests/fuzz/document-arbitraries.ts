@@ -87,9 +87,23 @@ export const skeletonDocument: fc.Arbitrary<Json> = fc
     ),
     view: fc.oneof({ weight: 9, arbitrary: fc.constant<Json>({ center: [0, 0], scale: 4 }) }, hostileValue),
     version: fc.oneof({ weight: 9, arbitrary: fc.constant<Json>(1) }, hostileValue),
+    // The presentation's step notes (meta.stepNotes, keyed by node id): text, or anything else.
+    stepNotes: fc.option(
+      fc.dictionary(nodeId, fc.oneof({ weight: 4, arbitrary: fc.string() }, hostileValue), { maxKeys: 4 }),
+      {
+        nil: undefined,
+      },
+    ),
   })
-  .map(({ nodes, edges, view, version }) =>
-    json({ format: 'kleinflow', version, meta: { title: 'fuzz' }, nodes, edges, view }),
+  .map(({ nodes, edges, view, version, stepNotes }) =>
+    json({
+      format: 'kleinflow',
+      version,
+      meta: stepNotes === undefined ? { title: 'fuzz' } : { title: 'fuzz', stepNotes },
+      nodes,
+      edges,
+      view,
+    }),
   );
 
 export interface Example {

@@ -5,7 +5,7 @@
  *
  * An edge of depth n bounds a tile reached in n steps: the tile at depth n inside element e is
  * step_e⁻¹(tile at depth n−1), so its edges are step_e⁻¹ of the edges one level up (docs/math.md,
- * "The IIS"). Every step here is a chain of mirrors (inversion / reflection), so step⁻¹ is the
+ * "The IIS loop"). Every step here is a chain of mirrors (inversion / reflection), so step⁻¹ is the
  * same chain reversed and maps circles and lines to circles and lines (curves.ts).
  */
 import type { Scene, SceneElement } from '../../nodes/core/scene.ts';

@@ -165,9 +165,10 @@ function curveDistance(k: Curve, p: readonly [number, number]): number {
 }
 
 /**
- * Breadth-first images of `start` under the generators, never undoing the last step, up to
- * maxDepth steps, dropping circles under minRadius world units (and their images: a mirror shrinks
- * what it maps inside it). Returns null when more than `cap` curves are found.
+ * Breadth-first images of `start` under the generators up to maxDepth steps. An image is followed
+ * only when it reaches into its generator's region (Generator.region: the word does not walk back)
+ * and is not a duplicate; circles under minRadius world units are dropped with their images (a
+ * mirror shrinks what it maps inside it). Returns null when more than `cap` curves are found.
  */
 function orbit(
   start: readonly Curve[],
@@ -244,7 +245,13 @@ export function vectorPicture(scene: Scene, options: VectorOptions): VectorPictu
   if (!edges) return tooMany;
   const seeds: VectorSeed[] = [];
   for (const s of scene.tile.seeds ?? []) {
-    if (s.kind !== 'disk') continue;
+    if (s.kind !== 'disk') {
+      return {
+        ok: false,
+        nodeId: s.nodeId,
+        message: `node "${s.nodeId}" is a seed picture: its images are pictures, not circles and lines, so the picture has no vector form (export a PNG instead)`,
+      };
+    }
     const images = orbit([{ kind: 'circle', c: [...s.c], r: s.r }], generators, bounds, cap);
     if (!images || edges.length + seeds.length + images.length > cap) return tooMany;
     for (const im of images) seeds.push({ ...im, color: s.color });

@@ -68,6 +68,15 @@ describe('exportSvg', () => {
     expect(result.message).toContain('glide-reflection');
   });
 
+  it('names a seed picture, which has no vector form', () => {
+    const { scene } = loadExample('seed-picture-orbit');
+    const seed = scene.tile.seeds?.find((s) => s.kind === 'image');
+    expect(seed).toBeDefined();
+    const result = exportSvg(scene, SIZE);
+    expect(result.ok).toBe(false);
+    if (!result.ok) expect(result.message).toContain(`"${seed?.nodeId}" is a seed picture`);
+  });
+
   it('refuses more elements than the cap with a message that says what to change', () => {
     const { scene } = loadExample('apollonian-gasket');
     const result = exportSvg(scene, { ...SIZE, maxElements: 500 });

@@ -23,6 +23,8 @@ const COMMANDS = [
   'Open…',
   'Save',
   'PNG image…',
+  'Animation…',
+  'SVG (circles and lines)',
   'Copy share link',
   'GLSL shader (.frag)',
   'Shadertoy (.shadertoy.glsl)',

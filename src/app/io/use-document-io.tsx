@@ -14,6 +14,7 @@ import type { OpenResult } from '../../io/document-io.ts';
 import type { EditorStore } from '../../state/store.ts';
 import type { Viewport } from '../../viewport/viewport.ts';
 import { exportGlsl, exportPng, type PngExportOptions } from '../export.ts';
+import { exportSvgFile } from '../export-svg.ts';
 import { readDocumentFile, saveDocument } from '../files.ts';
 import type { MenuItem } from '../Menu.tsx';
 import { DropOverlay } from './DropOverlay.tsx';
@@ -189,9 +190,15 @@ export function useDocumentIo({ store, scene, load, viewport }: Options): Docume
     viewSize: renderSize,
     say,
   });
+  const svg = () => {
+    const { doc } = store.getState();
+    const r = exportSvgFile(doc, currentScene.current, doc.view, renderSize());
+    say(r.ok ? 'ok' : 'error', r.message);
+  };
   const exportItems: MenuItem[] = [
     { label: 'PNG image…', hint: 'any size, graph inside', onSelect: () => setExporting(true) },
     animation.item,
+    { label: 'SVG (circles and lines)', hint: 'vector, mirrors only', onSelect: () => svg() },
     { label: 'Copy share link', hint: 'graph in the URL', onSelect: () => void copyLink() },
     { label: 'GLSL shader (.frag)', hint: 'WebGL2, values baked', onSelect: () => glsl('webgl2') },
     { label: 'Shadertoy (.shadertoy.glsl)', hint: 'paste into Shadertoy', onSelect: () => glsl('shadertoy') },

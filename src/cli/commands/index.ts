@@ -8,6 +8,7 @@ import { convertCommand } from './convert.ts';
 import { glslCommand } from './glsl.ts';
 import { renderCommand } from './render.ts';
 import { sampleCommand } from './sample.ts';
+import { svgCommand } from './svg.ts';
 
 export const COMMANDS: readonly CliCommand[] = [
   renderCommand,
@@ -15,4 +16,5 @@ export const COMMANDS: readonly CliCommand[] = [
   glslCommand,
   checkCommand,
   convertCommand,
+  svgCommand,
 ];

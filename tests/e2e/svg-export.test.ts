@@ -1,0 +1,65 @@
+/**
+ * Export → SVG in real Chromium: the Apollonian example downloads as a well-formed SVG full of
+ * circles, with the count in the toast; a graph with a fold names the node that has no vector form.
+ */
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import type { BrowserContext, Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { parseXml } from '../support/xml.ts';
+import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { waitRendered } from './editor-page.ts';
+import { currentDoc, menu, openViaPicker } from './io-page.ts';
+
+let app: ServedApp;
+let context: BrowserContext;
+let page: Page;
+
+const example = (id: string) => readFileSync(join(repoRoot, 'examples', `${id}.kleinflow.json`));
+
+beforeAll(async () => {
+  app = await serveApp();
+  context = await app.newContext();
+  page = await context.newPage();
+  await page.goto(app.url);
+  await waitRendered(page);
+}, 180_000);
+
+afterAll(async () => {
+  await app?.close();
+});
+
+async function openExample(id: string) {
+  const title = JSON.parse(example(id).toString('utf8')).meta.title as string;
+  await openViaPicker(page, `${id}.kleinflow.json`, example(id));
+  await expect
+    .poll(async () => ((await currentDoc(page)) as { meta: { title: string } }).meta.title)
+    .toBe(title);
+}
+
+describe('Export → SVG', () => {
+  it('downloads the Apollonian gasket as an SVG of many circles and says how many', async () => {
+    await openExample('apollonian-gasket');
+    const [download] = await Promise.all([page.waitForEvent('download'), menu(page, 'Export', 'SVG')]);
+    expect(download.suggestedFilename()).toMatch(/\.svg$/);
+    const doc = parseXml(readFileSync((await download.path())!, 'utf8'));
+    const circles = doc.documentElement.querySelectorAll(':scope > g circle').length;
+    expect(circles).toBeGreaterThan(1000);
+    const toast = await page.getByTestId('toast').textContent();
+    const said = /(\d+) circles and lines/.exec(toast ?? '');
+    expect(Number(said?.[1])).toBe(circles);
+  });
+
+  it('names the node that prevents a vector export, and downloads nothing', async () => {
+    await openExample('glide-reflection-frieze');
+    let downloaded = false;
+    page.on('download', () => {
+      downloaded = true;
+    });
+    await menu(page, 'Export', 'SVG');
+    await expect
+      .poll(() => page.getByTestId('toast').textContent())
+      .toMatch(/No SVG: node "[^"]+" is a glide-reflection fold/);
+    expect(downloaded).toBe(false);
+  });
+});

@@ -88,7 +88,11 @@ async function settle(): Promise<ViewportStats> {
 
 /** The picture as shown on screen (the canvas does not keep its drawing buffer to read back). */
 async function shown(): Promise<Uint8Array> {
+  // The WebGL picture alone: the construction overlay on top (its hatched kept-side bands are
+  // rasterised by the browser, not by us) is hidden for the screenshot and shown again after.
+  const hide = await page.addStyleTag({ content: '.kf-render-overlay{visibility:hidden}' });
   const png = await page.locator('canvas.kf-render__canvas').screenshot();
+  await hide.evaluate((el) => (el as Element).remove());
   // Decoded by the browser itself (the screenshot is RGB; src/io/png.ts reads RGBA only).
   const rgba = await page.evaluate(async (b64) => {
     const img = new Image();

@@ -12,6 +12,7 @@ import type { AnimationExportOptions } from '../animation-export.ts';
 import { ANIMATION_FORMATS, type AnimationFormat, evenSize } from '../animation-formats.ts';
 import { useModalDialog } from '../use-modal-dialog.ts';
 import type { Size } from './ExportDialog.tsx';
+import { useExportRun } from './use-export-run.ts';
 
 interface Props {
   readonly viewSize: Size;
@@ -54,9 +55,7 @@ export function AnimationExportDialog({ viewSize, view, defaultSamples, loop, ru
   const [samples, setSamples] = useState(clampInt(defaultSamples, 1, LIMITS.maxSamples));
   const [format, setFormat] = useState<AnimationFormat>('gif');
   const [supported, setSupported] = useState<Record<AnimationFormat, boolean> | null>(null);
-  const [progress, setProgress] = useState<number | null>(null);
-  const [error, setError] = useState<string | null>(null);
-  const cancelled = useRef(false);
+  const { progress, error, ...exportRun } = useExportRun(onClose);
   const chosen = useRef(false);
 
   // Ask the browser's encoders what they can do at this size; pick the first that works.
@@ -85,26 +84,12 @@ export function AnimationExportDialog({ viewSize, view, defaultSamples, loop, ru
   const noVideo = supported !== null && !FORMAT_ORDER.some((f) => f !== 'gif' && supported[f]);
 
   const start = async () => {
-    cancelled.current = false;
-    setError(null);
-    setProgress(0);
     const referenceHeight = viewSize.height * (window.devicePixelRatio || 1);
-    try {
-      const done = await run({ format, ...size, fps, frames, samples, view, referenceHeight }, (f) => {
-        setProgress(f);
-        return !cancelled.current;
-      });
-      setProgress(null);
-      if (done) onClose();
-    } catch (e) {
-      setProgress(null);
-      setError(`The export failed: ${(e as Error).message}`);
-    }
+    await exportRun.start((onProgress) =>
+      run({ format, ...size, fps, frames, samples, view, referenceHeight }, onProgress),
+    );
   };
-  const close = () => {
-    cancelled.current = true;
-    onClose();
-  };
+  const close = exportRun.close;
 
   return (
     <dialog
@@ -254,13 +239,7 @@ export function AnimationExportDialog({ viewSize, view, defaultSamples, loop, ru
       )}
       <footer className="kf-export__actions">
         {busy ? (
-          <button
-            type="button"
-            className="kf-button"
-            onClick={() => {
-              cancelled.current = true;
-            }}
-          >
+          <button type="button" className="kf-button" onClick={exportRun.cancel}>
             Cancel
           </button>
         ) : (

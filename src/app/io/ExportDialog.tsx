@@ -3,10 +3,11 @@
  * samples per pixel, solid or transparent background; a progress bar with Cancel while the tiled
  * GPU render runs. The downloaded PNG carries the graph, so dropping it back reopens the graph.
  */
-import { useRef, useState } from 'react';
+import { useState } from 'react';
 import { LIMITS, type View } from '../../../nodes/core/scene.ts';
 import type { PngExportOptions } from '../export.ts';
 import { useModalDialog } from '../use-modal-dialog.ts';
+import { useExportRun } from './use-export-run.ts';
 
 export interface Size {
   readonly width: number;
@@ -43,9 +44,7 @@ export function ExportDialog({ viewSize, view, defaultSamples, edgeWidth, run, o
   const [height, setHeight] = useState(Math.max(1, Math.round(viewSize.height)));
   const [samples, setSamples] = useState(clampInt(defaultSamples, 1, LIMITS.maxSamples));
   const [transparent, setTransparent] = useState(false);
-  const [progress, setProgress] = useState<number | null>(null);
-  const [error, setError] = useState<string | null>(null);
-  const cancelled = useRef(false);
+  const { progress, error, ...exportRun } = useExportRun(onClose);
 
   const preset = PRESETS.findIndex((p) => {
     const s = p.size ?? viewSize;
@@ -58,25 +57,11 @@ export function ExportDialog({ viewSize, view, defaultSamples, edgeWidth, run, o
   const edgeFactor = height / referenceHeight;
 
   const start = async () => {
-    cancelled.current = false;
-    setError(null);
-    setProgress(0);
-    try {
-      const done = await run({ width, height, samples, transparent, view, referenceHeight }, (f) => {
-        setProgress(f);
-        return !cancelled.current;
-      });
-      setProgress(null);
-      if (done) onClose();
-    } catch (e) {
-      setProgress(null);
-      setError(`The export failed: ${(e as Error).message}`);
-    }
+    await exportRun.start((onProgress) =>
+      run({ width, height, samples, transparent, view, referenceHeight }, onProgress),
+    );
   };
-  const close = () => {
-    cancelled.current = true;
-    onClose();
-  };
+  const close = exportRun.close;
 
   return (
     <dialog
@@ -197,13 +182,7 @@ export function ExportDialog({ viewSize, view, defaultSamples, edgeWidth, run, o
       )}
       <footer className="kf-export__actions">
         {busy ? (
-          <button
-            type="button"
-            className="kf-button"
-            onClick={() => {
-              cancelled.current = true;
-            }}
-          >
+          <button type="button" className="kf-button" onClick={exportRun.cancel}>
             Cancel
           </button>
         ) : (

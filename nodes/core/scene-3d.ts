@@ -1,0 +1,106 @@
+/**
+ * The 3D Scene: what a `render-3d` node resolves to, the contract between the 3D nodes (which build
+ * it), the CPU sphere tracer (the tested reference) and the GLSL sphere-tracing generator. Like the
+ * 2D Scene it holds only numbers: every construction (four-point spheres, compound generators,
+ * sphairahedra) is already done. Mathematics: docs/math-3d.md.
+ *
+ * A graph has at most one render node; when it is a `render-3d` node the evaluation's `scene3d`
+ * is this and the 2D `scene` is empty (no elements), so 2D code never sees 3D data.
+ */
+import type { Element3d } from '../geometry/space/iis-3d.ts';
+import type { Plane, Sphere } from '../geometry/space/sphere.ts';
+import type { Vec3 } from '../geometry/space/vec3.ts';
+import type { Color } from './values.ts';
+
+export type { Element3d } from '../geometry/space/iis-3d.ts';
+export type { Plane, Sphere } from '../geometry/space/sphere.ts';
+export type { Vec3 } from '../geometry/space/vec3.ts';
+
+/**
+ * An orbit seed in space (paper Figs. 11–12, 24): its images under the group are the surfaces the
+ * tracer draws. `nodeId` names the node that made it (messages, handles).
+ */
+export type Seed3d =
+  | { readonly kind: 'sphere'; readonly nodeId: string; readonly sphere: Sphere; readonly color: Color }
+  /** An axis-aligned box: centre and half-extents along x, y, z (Fig. 24, "orbit of a cube"). */
+  | {
+      readonly kind: 'box';
+      readonly nodeId: string;
+      readonly center: Vec3;
+      readonly halfSize: Vec3;
+      readonly color: Color;
+    };
+export type Seed3dKind = Seed3d['kind'];
+
+/** A pinhole camera looking from `position` at `target`; z is up; `fovDeg` is the vertical field of view. */
+export interface Camera3d {
+  readonly position: Vec3;
+  readonly target: Vec3;
+  readonly fovDeg: number;
+}
+
+export const DEFAULT_CAMERA_3D: Camera3d = { position: [6, -8, 5], target: [0, 0, 0], fovDeg: 40 };
+
+/** Blinn–Phong light from a direction plus ambient occlusion and a soft shadow, each 0..1 strength. */
+export interface Lighting3d {
+  /** Direction TOWARDS the light (need not be unit; normalised by the back ends). */
+  readonly direction: Vec3;
+  readonly ambient: number;
+  readonly diffuse: number;
+  readonly specular: number;
+  /** Phong exponent of the highlight. */
+  readonly shininess: number;
+  /** Ambient-occlusion strength (0 = off). */
+  readonly occlusion: number;
+  /** Soft-shadow strength (0 = off). */
+  readonly shadow: number;
+}
+
+export const DEFAULT_LIGHTING_3D: Lighting3d = {
+  direction: [0.4, -0.5, 0.8],
+  ambient: 0.25,
+  diffuse: 0.8,
+  specular: 0.35,
+  shininess: 32,
+  occlusion: 0.6,
+  shadow: 0.5,
+};
+
+/** How a hit point is coloured. */
+export type Coloring3d =
+  /** The seed's own colour, hue-rotated by `step` turns per inversion (colour wheel, Fig. 28 b/e). */
+  | { readonly mode: 'depth-wheel'; readonly step: number }
+  /** Cosine palette a + b·cos(2π(c·t + d)), t = depth·step. */
+  | {
+      readonly mode: 'cosine';
+      readonly a: Color;
+      readonly b: Color;
+      readonly c: Color;
+      readonly d: Color;
+      readonly step: number;
+    }
+  /** By the hit point's own coordinates (surface coordinates), `scale` world units per colour cycle. */
+  | { readonly mode: 'surface'; readonly scale: number }
+  /** By the final point of the IIS (Fig. 34), `scale` world units per colour cycle. */
+  | { readonly mode: 'final-point'; readonly scale: number };
+
+export interface Scene3d {
+  readonly kind: '3d';
+  /** Tested in this order at every step, like the 2D render's elements. */
+  readonly elements: readonly Element3d[];
+  /** The orbit seeds whose images are drawn (none: nothing to hit; the node says so). */
+  readonly seeds: readonly Seed3d[];
+  readonly camera: Camera3d;
+  readonly maxIterations: number;
+  /** Sphere-tracing steps per ray. */
+  readonly marchSteps: number;
+  /** The distance estimate is multiplied by this (≤ 1) before each march step (paper §4.2). */
+  readonly deScale: number;
+  readonly lighting: Lighting3d;
+  readonly coloring: Coloring3d;
+  readonly background: Color;
+  /** Progressive anti-aliasing samples per pixel when the view is still. */
+  readonly samples: number;
+  /** Id of the render-3d node. */
+  readonly renderNodeId: string;
+}

@@ -8,7 +8,7 @@
  * is this and the 2D `scene` is empty (no elements), so 2D code never sees 3D data.
  */
 import type { Element3d } from '../geometry/space/iis-3d.ts';
-import type { Plane, Sphere } from '../geometry/space/sphere.ts';
+import type { Sphere } from '../geometry/space/sphere.ts';
 import type { Vec3 } from '../geometry/space/vec3.ts';
 import type { Color } from './values.ts';
 

@@ -8,7 +8,7 @@
  * is this and the 2D `scene` is empty (no elements), so 2D code never sees 3D data.
  */
 import type { Element3d } from '../geometry/space/iis-3d.ts';
-import type { Sphere } from '../geometry/space/sphere.ts';
+import type { Plane, Sphere } from '../geometry/space/sphere.ts';
 import type { Vec3 } from '../geometry/space/vec3.ts';
 import type { Color } from './values.ts';
 
@@ -84,6 +84,32 @@ export type Coloring3d =
   /** By the final point of the IIS (Fig. 34), `scale` world units per colour cycle. */
   | { readonly mode: 'final-point'; readonly scale: number };
 
+/** What the 3D view draws for a node (wireframe, in the node's colour). */
+export type Overlay3dShape =
+  | { readonly shape: 'point'; readonly at: Vec3 }
+  | { readonly shape: 'sphere'; readonly sphere: Sphere }
+  | { readonly shape: 'plane'; readonly plane: Plane }
+  | { readonly shape: 'box'; readonly center: Vec3; readonly halfSize: Vec3 };
+
+export interface Overlay3dItem {
+  readonly nodeId: string;
+  readonly color: string;
+  readonly label?: string;
+  readonly shape: Overlay3dShape;
+}
+
+/**
+ * A draggable point of a node in space. The view moves it in the plane through `at` parallel to
+ * the screen and hands the new position to nodes/graph/drag-patches-3d.ts → dragPatches3d
+ * (a radius handle is a point on the sphere: the node turns it back into a radius).
+ */
+export interface Handle3dItem {
+  readonly nodeId: string;
+  /** Handle id, unique within the node, passed back to the node type's `drag3d`. */
+  readonly handle: string;
+  readonly at: Vec3;
+}
+
 export interface Scene3d {
   readonly kind: '3d';
   /** Tested in this order at every step, like the 2D render's elements. */
@@ -103,4 +129,6 @@ export interface Scene3d {
   readonly samples: number;
   /** Id of the render-3d node. */
   readonly renderNodeId: string;
+  readonly overlays: readonly Overlay3dItem[];
+  readonly handles: readonly Handle3dItem[];
 }

@@ -6,6 +6,7 @@
  */
 import type { Diagnostic, Severity } from '../../nodes/core/diagnostics.ts';
 import { hasErrors } from '../../nodes/core/diagnostics.ts';
+import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { Scene } from '../../nodes/core/scene.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { type Evaluation, evaluateGraph } from '../../nodes/graph/evaluate.ts';
@@ -21,7 +22,7 @@ export { PNG_GRAPH_KEY };
 
 export interface GraphLoad {
   readonly path: string;
-  /** The document text as read (for embedding into exports). */
+  /** The loaded document as text (for embedding into exports): migrated, so it never needs migrating again. */
   readonly text: string;
   /** Absent when the file could not be loaded as a document (see diagnostics). */
   readonly doc?: GraphDoc;
@@ -99,14 +100,16 @@ export function documentText(path: string, bytes: Uint8Array): string {
   }
 }
 
-export async function loadGraph(io: CliIo, path: string): Promise<GraphLoad> {
+/** `types` decides which node types load and migrate (tests use their own; default: every registered type). */
+export async function loadGraph(io: CliIo, path: string, types: NodeRegistry = registry): Promise<GraphLoad> {
   const read = documentText(path, await readInput(io, path));
   // A Kleinflow document, or a Flower graph imported on the fly (its notes come first).
-  const opened = openDocumentText(read, registry);
+  const opened = openDocumentText(read, types);
   if (!opened.ok) return { path, text: read, diagnostics: opened.diagnostics };
-  // Exports embed a Kleinflow document, never the Flower text it came from.
-  const text = opened.source === 'kleinflow' ? read : serializeDocument(opened.doc);
-  const evaluation = evaluateGraph(opened.doc, registry);
+  // Exports embed the loaded (migrated) Kleinflow document — never an older version's text, nor
+  // the Flower text it came from — as the editor's own PNG export does.
+  const text = serializeDocument(opened.doc);
+  const evaluation = evaluateGraph(opened.doc, types);
   return {
     path,
     text,

@@ -39,17 +39,27 @@ function start(): { doc: GraphDoc; messages: Message[]; hold: AutosaveHold } {
   const { text, problems, backedUp } = restored;
   // Without a backup the broken save is the only copy: autosave waits until it is taken care of.
   const hold = createAutosaveHold(!backedUp);
-  const downloadIt = () => {
-    download('kleinflow-unreadable-autosave.json', text, 'application/json');
+  const FILE = 'kleinflow-unreadable-autosave.json';
+  // After either action the banner says what is now true (autosave running again, where the copy is).
+  const downloadIt = (): Message => {
+    download(FILE, text, 'application/json');
     hold.release();
+    return {
+      id: 'restore',
+      kind: 'info',
+      text: backedUp
+        ? `Downloaded “${FILE}” (a copy is still kept under “${AUTOSAVE_BACKUP_KEY}” in this browser).`
+        : `Downloaded “${FILE}”. Autosave is on again.`,
+    };
   };
-  const discardIt = () => {
+  const discardIt = (): Message => {
     try {
       window.localStorage.removeItem(AUTOSAVE_KEY);
     } catch {
       // storage unavailable: nothing left to discard
     }
     hold.release();
+    return { id: 'restore', kind: 'info', text: 'Discarded the unreadable session. Autosave is on again.' };
   };
   // The banner says only what is true: where the text is kept, and whether autosave is paused.
   const where = backedUp

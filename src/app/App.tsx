@@ -177,7 +177,11 @@ export function App({ initialMessages, autosaveHold }: Props) {
         onHelp={() => setHelp(true)}
         onPresent={() => setPresenting(true)}
       />
-      <Banner messages={messages} onDismiss={(id) => setMessages((ms) => ms.filter((m) => m.id !== id))} />
+      <Banner
+        messages={messages}
+        onDismiss={(id) => setMessages((ms) => ms.filter((m) => m.id !== id))}
+        onReplace={(id, next) => setMessages((ms) => ms.map((m) => (m.id === id ? next : m)))}
+      />
       <SplitPane
         left={graphEditor(false)}
         inspector={graphEditor(true)}

@@ -4,15 +4,23 @@ export interface Message {
   readonly kind: 'error' | 'warning' | 'info';
   readonly text: string;
   readonly details?: readonly string[];
-  readonly actions?: readonly { label: string; run(): void }[];
+  /**
+   * Buttons on the message. What `run` returns says what the message becomes once the action is
+   * done, so it never goes on saying what is no longer true: a Message replaces it, null removes
+   * it, nothing (undefined) leaves it as it is.
+   */
+  readonly actions?: readonly { label: string; run(): Message | null | undefined }[];
 }
 
 export function Banner({
   messages,
   onDismiss,
+  onReplace,
 }: {
   messages: readonly Message[];
   onDismiss(id: string): void;
+  /** The message `id` became `next` after one of its actions ran. */
+  onReplace(id: string, next: Message): void;
 }) {
   // Always rendered (possibly empty) so the app's grid rows stay in place.
   return (
@@ -34,7 +42,16 @@ export function Banner({
             )}
           </div>
           {m.actions?.map((a) => (
-            <button key={a.label} type="button" className="kf-button" onClick={a.run}>
+            <button
+              key={a.label}
+              type="button"
+              className="kf-button"
+              onClick={() => {
+                const next = a.run();
+                if (next === null) onDismiss(m.id);
+                else if (next) onReplace(m.id, next);
+              }}
+            >
               {a.label}
             </button>
           ))}

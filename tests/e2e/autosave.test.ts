@@ -1,7 +1,7 @@
 /**
  * A large corrupt autosave in a full browser storage (Chromium, the built app): the banner must not
  * claim a backup that does not exist, edits must not overwrite the only copy, and after a reload
- * it is still there; "Discard it" resumes autosaving.
+ * it is still there; "Discard it" resumes autosaving and the banner then says so.
  */
 import type { BrowserContext, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -74,5 +74,10 @@ describe('autosave in a full storage', () => {
     await expect.poll(async () => (await stored()).length).toBeLessThan(BROKEN_CHARS);
     expect((await stored()).start).toMatch(/^\{"format":"kleinflow"/);
     expect(await page.getByTestId('save-state').textContent()).toMatch(/Saved/);
+    // The banner no longer says autosave is paused: it says what happened.
+    expect(await page.getByRole('alert').filter({ hasText: 'could not be restored' }).count()).toBe(0);
+    await expect
+      .poll(() => page.locator('.kf-banners').textContent())
+      .toMatch(/Discarded the unreadable session\. Autosave is on again\./);
   }, 120_000);
 });

@@ -7,11 +7,10 @@
 import type { SceneElement } from '../../nodes/core/scene.ts';
 import type { ElementRecord } from './element-kind.ts';
 import { glideReflection } from './glide-reflection.ts';
-import { inversion } from './inversion.ts';
+import { inversion, outerInversion } from './inversion.ts';
 import { loxodromic } from './loxodromic.ts';
 import { mobius } from './mobius.ts';
 import { mobiusMatrix } from './mobius-matrix.ts';
-import { outerInversion } from './outer-inversion.ts';
 import { parallelMirrors } from './parallel-mirrors.ts';
 import { reflection } from './reflection.ts';
 import { rotation } from './rotation.ts';

@@ -1,9 +1,11 @@
 /**
  * Circle inversion (c, r): inside |p−c| < r; σ(p) = c + r²(p−c)/|p−c|²; scale r²/|p−c|².
+ * Outer circle inversion: the circle mirror that keeps its inside; it acts on |p−c| > r with the
+ * same map (invertState: the centre is never reached, it lies on the kept side).
  * GLSL packing (1 vec4): d0 = (c.x, c.y, r, r²): r² computed once on the CPU
  * (in float64, then rounded like every uniform) rather than every pass of the loop.
  */
-import type { InversionElement } from '../../nodes/core/scene.ts';
+import type { InversionElement, OuterInversionElement } from '../../nodes/core/scene.ts';
 import { floatLiteral } from '../glsl/literal.ts';
 import { glslFunction } from '../glsl/snippet.ts';
 import { type ElementRecord, glslStepBlock, type IisState } from './element-kind.ts';
@@ -65,49 +67,74 @@ void invertState(inout vec2 p, inout float s, vec2 c, float r, float r2) {
   [invertOffsetGlsl],
 );
 
-export const inversion: ElementRecord<InversionElement> = {
-  kind: 'inversion',
-  cpu: {
-    step(e, st) {
-      const dx = st.x - e.c[0];
-      const dy = st.y - e.c[1];
-      if (dx * dx + dy * dy >= e.r * e.r) return false;
-      invertState(st, e.c[0], e.c[1], e.r);
-      st.depth += 1;
-      return true;
+/**
+ * A circle mirror's record, for both sides it can act on: `inner` inversion acts inside the
+ * circle (|p−c|² < r²), `outer` inversion outside it (|p−c|² > r²). The two differ only in that
+ * comparison and in how NaN falls: the inner test is written as "not outside" (NaN is inverted,
+ * as it always was), the outer one as "outside" (NaN falls through); CPU and GLSL do the same.
+ */
+function circleMirrorRecord<E extends InversionElement | OuterInversionElement>(
+  kind: E['kind'],
+  glslName: string,
+  acts: 'inside' | 'outside',
+): ElementRecord<E> {
+  const inner = acts === 'inside';
+  return {
+    kind,
+    cpu: {
+      step(e, st) {
+        const dx = st.x - e.c[0];
+        const dy = st.y - e.c[1];
+        const d2 = dx * dx + dy * dy;
+        const r2 = e.r * e.r;
+        if (inner ? d2 >= r2 : !(d2 > r2)) return false;
+        invertState(st, e.c[0], e.c[1], e.r);
+        st.depth += 1;
+        return true;
+      },
+      inside: (e, x, y) => {
+        const d2 = (x - e.c[0]) ** 2 + (y - e.c[1]) ** 2;
+        return inner ? d2 < e.r * e.r : d2 > e.r * e.r;
+      },
+      boundaryDistance: (e, x, y) => Math.abs(Math.hypot(x - e.c[0], y - e.c[1]) - e.r),
     },
-    inside: (e, x, y) => (x - e.c[0]) ** 2 + (y - e.c[1]) ** 2 < e.r * e.r,
-    boundaryDistance: (e, x, y) => Math.abs(Math.hypot(x - e.c[0], y - e.c[1]) - e.r),
-  },
-  glsl: {
-    vec4s: 1,
-    pack: (e) => [e.c[0], e.c[1], e.r, e.r * e.r],
-    step: glslStepBlock(
-      `
+    glsl: {
+      vec4s: 1,
+      pack: (e) => [e.c[0], e.c[1], e.r, e.r * e.r],
+      step: glslStepBlock(
+        `
 float dx = p.x - d0.x;
 float dy = p.y - d0.y;
 float d2 = dx * dx + dy * dy;
-if (!(d2 >= d0.w)) {
+if (${inner ? '!(d2 >= d0.w)' : 'd2 > d0.w'}) {
   invertOffset(p, s, d0.xy, d0.z, d0.w, dx, dy, d2);
   continue;
 }`,
-      [invertOffsetGlsl],
-    ),
-    inside: glslFunction(
-      'inversionInside',
-      `
-bool inversionInside(vec2 p, vec4 d0) {
+        [invertOffsetGlsl],
+      ),
+      inside: glslFunction(
+        `${glslName}Inside`,
+        `
+bool ${glslName}Inside(vec2 p, vec4 d0) {
   float dx = p.x - d0.x;
   float dy = p.y - d0.y;
-  return dx * dx + dy * dy < d0.w;
+  return dx * dx + dy * dy ${inner ? '<' : '>'} d0.w;
 }`,
-    ),
-    boundaryDistance: glslFunction(
-      'inversionBoundaryDistance',
-      `
-float inversionBoundaryDistance(vec2 p, vec4 d0) {
+      ),
+      boundaryDistance: glslFunction(
+        `${glslName}BoundaryDistance`,
+        `
+float ${glslName}BoundaryDistance(vec2 p, vec4 d0) {
   return abs(length(p - d0.xy) - d0.z);
 }`,
-    ),
-  },
-};
+      ),
+    },
+  };
+}
+
+export const inversion = circleMirrorRecord<InversionElement>('inversion', 'inversion', 'inside');
+export const outerInversion = circleMirrorRecord<OuterInversionElement>(
+  'outer-inversion',
+  'outerInversion',
+  'outside',
+);

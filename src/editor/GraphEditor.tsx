@@ -29,7 +29,8 @@ import { checkConnection, portOfHandle } from './connection.ts';
 import { fixPatches } from './diagnostic-fix.ts';
 import { type EditorActions, EditorContext } from './editor-context.ts';
 import { diagnosticsByNode, type KfNode, type KfNodeData, toFlowEdges, toFlowNodes } from './flow-model.ts';
-import { GraphPanels } from './GraphPanels.tsx';
+import { GraphToolbar } from './GraphToolbar.tsx';
+import { InspectorDock } from './InspectorDock.tsx';
 import { NodeView } from './NodeView.tsx';
 import { gridPosition } from './new-node.ts';
 import { Palette } from './Palette.tsx';
@@ -227,75 +228,110 @@ export function GraphEditor({
     () => setInspectorOpen(!inspectorOpen),
     [inspectorOpen, setInspectorOpen],
   );
+  /** Where a palette opened without a pointer position (keyboard, the Add node button) appears. */
+  const openPaletteCentred = useCallback(() => {
+    const rect = wrapper.current!.getBoundingClientRect();
+    openPalette({ x: rect.left + rect.width / 2, y: rect.top + rect.height / 3 });
+  }, [openPalette]);
+  const openPaletteAt = useCallback(
+    (at: { x: number; y: number } | null) => (at ? openPalette(at) : openPaletteCentred()),
+    [openPalette, openPaletteCentred],
+  );
   useGraphKeys({
     store,
     flow,
     pointer,
-    wrapper,
     paletteOpen: palette !== null,
-    openPalette,
+    openPalette: openPaletteAt,
     toggleInspector,
   });
 
+  const inspected = selection.size === 1 ? doc.nodes.find((n) => selection.has(n.id)) : undefined;
+  const inspectedData = inspected ? nodes.find((n) => n.id === inspected.id)?.data : undefined;
+
   return (
     <EditorContext.Provider value={actions}>
-      {/* biome-ignore lint/a11y/noStaticElementInteractions: tracks the pointer (where new nodes land); React Flow is the interactive canvas */}
-      <div
-        className={inspectorTab ? 'kf-graph kf-graph--inspector-tab' : 'kf-graph'}
-        ref={wrapper}
-        onPointerMove={(e) => {
-          pointer.current = { x: e.clientX, y: e.clientY };
-        }}
-        onPointerLeave={() => {
-          pointer.current = null;
-        }}
-        onDoubleClick={(e) => {
-          if ((e.target as Element).classList.contains('react-flow__pane'))
-            openPalette({ x: e.clientX, y: e.clientY });
-        }}
-      >
-        <ReactFlow<KfNode, Edge>
+      <div className={inspectorTab ? 'kf-graph-area kf-graph-area--inspector-tab' : 'kf-graph-area'}>
+        <GraphToolbar
           nodes={nodes}
-          edges={edges}
-          nodeTypes={nodeTypes}
-          onNodesChange={onNodesChange}
-          onEdgesChange={onEdgesChange}
-          onDelete={onDelete}
-          onNodeDragStop={onNodeDragStop}
-          onConnect={onConnect}
-          onConnectEnd={onConnectEnd}
-          isValidConnection={isValidConnection}
-          deleteKeyCode={['Delete', 'Backspace']}
-          selectionKeyCode="Shift"
-          panActivationKeyCode={null}
-          multiSelectionKeyCode={['Meta', 'Control']}
-          zoomOnDoubleClick={false}
-          colorMode="dark"
-          minZoom={0.15}
-          maxZoom={2.5}
-          attributionPosition="top-left"
-          defaultEdgeOptions={{ interactionWidth: 16 }}
-          connectionRadius={24}
-        >
-          <Background variant={BackgroundVariant.Dots} gap={22} size={1.2} color="#2c2f36" />
-          <MiniMap
-            style={{ width: 150, height: 100 }}
-            pannable
-            zoomable
-            nodeColor={(n) => (n.data as KfNodeData).def?.color ?? '#e5484d'}
-            nodeStrokeWidth={0}
-            maskColor="rgba(12, 13, 16, 0.7)"
-            ariaLabel="Graph overview"
-          />
-          <Controls showInteractive={false} />
-        </ReactFlow>
-        <GraphPanels
-          nodes={nodes}
-          evaluation={evaluation}
-          diagnostics={diagnostics}
           inspectorOpen={inspectorOpen}
           toggleInspector={toggleInspector}
+          onAddNode={openPaletteCentred}
         />
+        <div className="kf-graph-area__body">
+          {/* biome-ignore lint/a11y/noStaticElementInteractions: tracks the pointer (where new nodes land); React Flow is the interactive canvas */}
+          <div
+            className="kf-graph"
+            ref={wrapper}
+            onPointerMove={(e) => {
+              pointer.current = { x: e.clientX, y: e.clientY };
+            }}
+            onPointerLeave={() => {
+              pointer.current = null;
+            }}
+            onDoubleClick={(e) => {
+              if ((e.target as Element).classList.contains('react-flow__pane'))
+                openPalette({ x: e.clientX, y: e.clientY });
+            }}
+          >
+            <ReactFlow<KfNode, Edge>
+              nodes={nodes}
+              edges={edges}
+              nodeTypes={nodeTypes}
+              onNodesChange={onNodesChange}
+              onEdgesChange={onEdgesChange}
+              onDelete={onDelete}
+              onNodeDragStop={onNodeDragStop}
+              onConnect={onConnect}
+              onConnectEnd={onConnectEnd}
+              isValidConnection={isValidConnection}
+              deleteKeyCode={['Delete', 'Backspace']}
+              selectionKeyCode="Shift"
+              panActivationKeyCode={null}
+              multiSelectionKeyCode={['Meta', 'Control']}
+              zoomOnDoubleClick={false}
+              colorMode="dark"
+              minZoom={0.15}
+              maxZoom={2.5}
+              attributionPosition="top-left"
+              defaultEdgeOptions={{ interactionWidth: 16 }}
+              connectionRadius={24}
+            >
+              <Background variant={BackgroundVariant.Dots} gap={22} size={1.2} color="#2c2f36" />
+              <MiniMap
+                style={{ width: 150, height: 100 }}
+                pannable
+                zoomable
+                nodeColor={(n) => (n.data as KfNodeData).def?.color ?? '#e5484d'}
+                nodeStrokeWidth={0}
+                maskColor="rgba(12, 13, 16, 0.7)"
+                ariaLabel="Graph overview"
+              />
+              <Controls showInteractive={false} />
+            </ReactFlow>
+            {doc.nodes.length === 0 && (
+              <div className="kf-empty-hint">
+                <p>
+                  <kbd>Space</kbd>, double-click or <strong>Add node</strong> to add a node
+                </p>
+                <p>or open an example from the menu</p>
+              </div>
+            )}
+          </div>
+          {inspectorOpen && (
+            <InspectorDock
+              node={inspected}
+              fill={inspectorTab}
+              connected={inspectedData?.connected ?? new Set()}
+              evaluation={inspected && evaluation.nodes.get(inspected.id)}
+              diagnostics={(inspected && diagnostics.get(inspected.id)) ?? []}
+              onLabel={(label) =>
+                inspected && store.dispatch({ type: 'set-label', nodeId: inspected.id, label }, 'rename')
+              }
+              onClose={toggleInspector}
+            />
+          )}
+        </div>
       </div>
       {palette && (
         <Palette

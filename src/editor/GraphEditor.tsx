@@ -31,6 +31,7 @@ import { type EditorActions, EditorContext } from './editor-context.ts';
 import { diagnosticsByNode, type KfNode, type KfNodeData, toFlowEdges, toFlowNodes } from './flow-model.ts';
 import { GraphToolbar } from './GraphToolbar.tsx';
 import { InspectorDock } from './InspectorDock.tsx';
+import { useKeepInView } from './keep-in-view.ts';
 import { NodeView } from './NodeView.tsx';
 import { gridPosition } from './new-node.ts';
 import { Palette } from './Palette.tsx';
@@ -248,6 +249,7 @@ export function GraphEditor({
 
   const inspected = selection.size === 1 ? doc.nodes.find((n) => selection.has(n.id)) : undefined;
   const inspectedData = inspected ? nodes.find((n) => n.id === inspected.id)?.data : undefined;
+  useKeepInView(inspectorOpen && !inspectorTab ? inspected?.id : undefined, wrapper);
 
   return (
     <EditorContext.Provider value={actions}>

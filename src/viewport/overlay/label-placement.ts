@@ -3,8 +3,9 @@
  * anchor (eight compass positions around a point; a position just outside the rim at every 45°
  * for a circle), and labels are placed greedily, highest priority first, each in its first
  * candidate that lies inside the view and clears every label already placed. Candidates that also
- * keep off the drawn points are preferred. A label with no free candidate is left out: a missing
- * label is better than two unreadable ones. Pure: sizes in CSS pixels, no DOM.
+ * keep off the drawn points and handles are preferred, if need be a little farther out. A label
+ * with no free candidate is left out: a missing label is better than two unreadable ones. Pure:
+ * sizes in CSS pixels, no DOM.
  */
 
 export type Vec2 = readonly [number, number];
@@ -42,6 +43,8 @@ export interface LabelView {
 
 /** Labels keep this far from each other and from the view's edges. */
 export const LABEL_MARGIN = 3;
+/** When every near candidate covers a drawn point, the same candidates this much farther out. */
+export const FAR_RING_PX = 14;
 
 /** The eight compass directions in order of preference: up-right first (the usual place). */
 const COMPASS: readonly Vec2[] = [
@@ -111,14 +114,16 @@ export function placeLabels(
   const order = requests.map((r, i) => ({ r, i })).sort((a, b) => b.r.priority - a.r.priority || a.i - b.i);
   const placed = new Map<string, Box>();
   for (const { r } of order) {
-    const boxes = r.candidates
-      .filter((c) => anchorInView(c.anchor, view))
-      .map((c) => candidateBox(c, r.width, r.height, r.gap))
-      .filter(
-        (b) => insideView(b, view) && ![...placed.values()].some((p) => boxesIntersect(b, p, LABEL_MARGIN)),
-      );
-    const clear = boxes.find((b) => !obstacles.some((o) => boxesIntersect(b, o)));
-    const box = clear ?? boxes[0];
+    const free = (gap: number) =>
+      r.candidates
+        .filter((c) => anchorInView(c.anchor, view))
+        .map((c) => candidateBox(c, r.width, r.height, gap))
+        .filter(
+          (b) => insideView(b, view) && ![...placed.values()].some((p) => boxesIntersect(b, p, LABEL_MARGIN)),
+        );
+    const near = free(r.gap);
+    const clear = (boxes: Box[]) => boxes.find((b) => !obstacles.some((o) => boxesIntersect(b, o)));
+    const box = clear(near) ?? clear(free(r.gap + FAR_RING_PX)) ?? near[0];
     if (box) placed.set(r.id, box);
   }
   return placed;

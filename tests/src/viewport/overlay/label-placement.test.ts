@@ -89,6 +89,19 @@ describe('placeLabels', () => {
     expect(boxesIntersect(box, dot)).toBe(false);
   });
 
+  it('steps a little farther out when every near place covers a drawn point', () => {
+    // Dots hugging the point on all sides (a crowd of handles around a small circle).
+    const ring: Box[] = [-1, 0, 1].flatMap((i) =>
+      [-1, 0, 1].map((j) => ({ x: 100 + 30 * i - 20, y: 100 + 20 * j - 12, width: 40, height: 24 })),
+    );
+    const box = placeLabels([pointLabel('a', [100, 100])], view, ring).get('a')!;
+    expect(ring.some((o) => boxesIntersect(box, o))).toBe(true); // nothing clear: the usual place
+    const sparse: Box[] = pointCandidates([100, 100]).map((c) => candidateBox(c, 4, 4, 10));
+    const far = placeLabels([pointLabel('a', [100, 100])], view, sparse).get('a')!;
+    expect(sparse.some((o) => boxesIntersect(far, o))).toBe(false);
+    expect(far.x).toBe(100 + 8 + 14);
+  });
+
   it('never overlaps two labels nor leaves the view (random points, circles and sizes)', () => {
     const label = fc.record({
       at: fc.tuple(

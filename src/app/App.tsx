@@ -128,7 +128,7 @@ export function App({ initialMessages, autosaveHold }: Props) {
       if (isTyping(e.target)) return;
       const mod = e.ctrlKey || e.metaKey;
       const key = e.key.toLowerCase();
-      const edits = mod && ['z', 'y', 'o', 'x', 'v', 'd'].includes(key);
+      const edits = mod && ['z', 'y', 'o', 'x', 'v', 'd', 'a'].includes(key);
       if (presenting && (edits || e.key === 'Delete' || e.key === 'Backspace')) notify(PRESENTING_READ_ONLY);
       else if (mod && key === 'z' && !e.shiftKey) store.undo();
       else if (mod && (key === 'y' || (key === 'z' && e.shiftKey))) store.redo();

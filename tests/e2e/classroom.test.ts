@@ -77,9 +77,13 @@ describe('classroom', () => {
       await page.getByRole('button', { name: 'Inspector' }).click();
       const inspector = page.getByRole('complementary', { name: 'Inspector' });
       await inspector.waitFor();
-      await page.waitForTimeout(400); // the pan that brings the node back into view
+      // The graph pans (animated) to bring the node back into view beside the panel.
+      await expect
+        .poll(async () => intersects(await boxOf(inspector), await boxOf(nodes.nth(rightmost))), {
+          timeout: 5_000,
+        })
+        .toBe(false);
       const node = await boxOf(nodes.nth(rightmost));
-      expect(intersects(await boxOf(inspector), node)).toBe(false);
       const canvas = await boxOf(page.locator('.kf-graph'));
       expect(node.x + node.width).toBeLessThanOrEqual(canvas.x + canvas.width);
       expect(node.x).toBeGreaterThanOrEqual(canvas.x);
@@ -247,8 +251,13 @@ describe('classroom', () => {
           .isVisible(),
       ).toBe(false);
       await page.screenshot({ path: join(shots, 'classroom-phone-graph.png') });
-      await add.click();
       const palette = page.getByRole('dialog', { name: 'Add node' });
+      await add.click();
+      await palette.waitFor();
+      await page.keyboard.press('Escape'); // Esc closes it, nothing added
+      await palette.waitFor({ state: 'detached' });
+      expect(await page.locator('.react-flow__node').count()).toBe(count);
+      await add.click();
       await palette.waitFor();
       const pbox = await boxOf(palette);
       expect(pbox.x >= 0 && pbox.x + pbox.width <= 390).toBe(true);
@@ -269,6 +278,9 @@ describe('classroom', () => {
       const inspector = page.getByRole('complementary', { name: 'Inspector' });
       const box = await boxOf(inspector);
       expect(box.width).toBeGreaterThan(380);
+      expect(box.height).toBeGreaterThan(600);
+      await inspector.getByRole('heading', { name: 'Diagnostics' }).scrollIntoViewIfNeeded();
+      expect(await inspector.getByRole('heading', { name: 'Diagnostics' }).isVisible()).toBe(true);
       await page.screenshot({ path: join(shots, 'classroom-phone-inspector.png') });
     });
   });

@@ -10,16 +10,13 @@ import {
   Controls,
   type Edge,
   type EdgeChange,
-  type FinalConnectionState,
   MiniMap,
   type NodeChange,
   ReactFlow,
   useReactFlow,
 } from '@xyflow/react';
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
-import type { NodeDef } from '../../nodes/core/define-node.ts';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
-import { portSpec } from '../../nodes/core/port-lookup.ts';
 import type { Evaluation } from '../../nodes/graph/evaluate.ts';
 import { registry } from '../../nodes/types/index.ts';
 import type { Change } from '../state/changes.ts';
@@ -35,9 +32,9 @@ import { useKeepInView } from './keep-in-view.ts';
 import { NodeView } from './NodeView.tsx';
 import { gridPosition } from './new-node.ts';
 import { Palette } from './Palette.tsx';
-import { addNodeChange, type PaletteState } from './palette-actions.ts';
 import { useFrameGraph } from './use-frame-graph.ts';
 import { useGraphKeys } from './use-graph-keys.ts';
+import { usePalette } from './use-palette.ts';
 import { useRememberedFlag } from './use-remembered-flag.ts';
 
 const nodeTypes = { kf: NodeView };
@@ -68,11 +65,11 @@ export function GraphEditor({
   const flow = useReactFlow<KfNode, Edge>();
   const [nodes, setNodes] = useState<KfNode[]>([]);
   const [selectedEdges, setSelectedEdges] = useState<ReadonlySet<string>>(new Set());
-  const [palette, setPalette] = useState<PaletteState | null>(null);
   const [inspectorRemembered, setInspectorOpen] = useRememberedFlag('kleinflow.inspector', false);
   const inspectorOpen = inspectorRemembered || inspectorTab;
   const pointer = useRef<{ x: number; y: number } | null>(null);
   const wrapper = useRef<HTMLDivElement>(null);
+  const inspectorButton = useRef<HTMLButtonElement>(null);
 
   const diagnostics = useMemo(
     () => diagnosticsByNode([...evaluation.diagnostics, ...extraDiagnostics]),
@@ -182,61 +179,20 @@ export function GraphEditor({
     [store],
   );
 
-  const openPalette = useCallback(
-    (screen: { x: number; y: number }, extra: Partial<PaletteState> = {}) => {
-      setPalette({ screen, flow: flow.screenToFlowPosition(screen), ...extra });
-    },
-    [flow],
-  );
-
-  /** A wire dropped on empty canvas opens the palette filtered to types that fit it. */
-  const onConnectEnd = useCallback(
-    (event: MouseEvent | TouchEvent, state: FinalConnectionState) => {
-      if (state.isValid || !state.fromHandle || !state.fromNode) return;
-      const target = event.target as Element | null;
-      if (!target?.classList.contains('react-flow__pane')) return;
-      const data = state.fromNode.data as KfNodeData;
-      const port = portOfHandle(state.fromHandle.id);
-      const side = state.fromHandle.type;
-      const type = portSpec(data.def, side === 'source' ? 'outputs' : 'inputs', port)?.type;
-      if (!type) return;
-      const point = 'changedTouches' in event ? event.changedTouches[0] : event;
-      openPalette(
-        { x: point.clientX, y: point.clientY },
-        {
-          filter: { from: side, type },
-          wire: { nodeId: state.fromNode.id, handle: state.fromHandle.id ?? '', side },
-        },
-      );
-    },
-    [openPalette],
-  );
-
-  const addFromPalette = useCallback(
-    (def: NodeDef) => {
-      if (!palette) return;
-      const { change, nodeId } = addNodeChange(store.getState().doc, def, palette);
-      store.dispatch(change, `add ${def.label}`);
-      store.setSelection([nodeId]);
-      setPalette(null);
-    },
-    [palette, store],
-  );
-
+  const {
+    palette,
+    openPalette,
+    openPaletteAt,
+    openPaletteCentred,
+    onConnectEnd,
+    addFromPalette,
+    closePalette,
+  } = usePalette(wrapper);
   useFrameGraph(frameKey, doc, nodes, wrapper);
 
   const toggleInspector = useCallback(
     () => setInspectorOpen(!inspectorOpen),
     [inspectorOpen, setInspectorOpen],
-  );
-  /** Where a palette opened without a pointer position (keyboard, the Add node button) appears. */
-  const openPaletteCentred = useCallback(() => {
-    const rect = wrapper.current!.getBoundingClientRect();
-    openPalette({ x: rect.left + rect.width / 2, y: rect.top + rect.height / 3 });
-  }, [openPalette]);
-  const openPaletteAt = useCallback(
-    (at: { x: number; y: number } | null) => (at ? openPalette(at) : openPaletteCentred()),
-    [openPalette, openPaletteCentred],
   );
   useGraphKeys({
     store,
@@ -257,6 +213,7 @@ export function GraphEditor({
         <GraphToolbar
           nodes={nodes}
           inspectorOpen={inspectorOpen}
+          inspectorButton={inspectorButton}
           toggleInspector={toggleInspector}
           onAddNode={openPaletteCentred}
         />
@@ -330,7 +287,11 @@ export function GraphEditor({
               onLabel={(label) =>
                 inspected && store.dispatch({ type: 'set-label', nodeId: inspected.id, label }, 'rename')
               }
-              onClose={toggleInspector}
+              onClose={(fromKeyboard) => {
+                toggleInspector();
+                // The panel and its focused control are gone: keep the keyboard user on its toggle.
+                if (fromKeyboard) inspectorButton.current?.focus();
+              }}
             />
           )}
         </div>
@@ -341,7 +302,7 @@ export function GraphEditor({
           at={palette.screen}
           filter={palette.filter}
           onPick={addFromPalette}
-          onClose={() => setPalette(null)}
+          onClose={closePalette}
         />
       )}
     </EditorContext.Provider>

@@ -3,6 +3,7 @@
  * search palette, for touch screens without a keyboard), Tidy, and the Inspector toggle.
  */
 import { type Edge, useReactFlow } from '@xyflow/react';
+import type { RefObject } from 'react';
 import type { GraphNode } from '../../nodes/graph/document.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
@@ -12,11 +13,13 @@ import { FIT_VIEW, sizer, tidyPositions } from './layout.ts';
 interface Props {
   readonly nodes: readonly KfNode[];
   readonly inspectorOpen: boolean;
+  /** The Inspector toggle, where focus returns when Esc closes the panel. */
+  readonly inspectorButton: RefObject<HTMLButtonElement | null>;
   toggleInspector(): void;
   onAddNode(): void;
 }
 
-export function GraphToolbar({ nodes, inspectorOpen, toggleInspector, onAddNode }: Props) {
+export function GraphToolbar({ nodes, inspectorOpen, inspectorButton, toggleInspector, onAddNode }: Props) {
   const store = useStore();
   const flow = useReactFlow<KfNode, Edge>();
   const empty = useEditorState((s) => s.doc.nodes.length === 0);
@@ -54,6 +57,7 @@ export function GraphToolbar({ nodes, inspectorOpen, toggleInspector, onAddNode 
         Tidy
       </button>
       <button
+        ref={inspectorButton}
         type="button"
         className={`kf-button kf-graph-tools__inspector${inspectorOpen ? ' kf-button--active' : ''}`}
         aria-pressed={inspectorOpen}

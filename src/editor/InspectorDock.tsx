@@ -18,7 +18,8 @@ interface Props {
   /** The phone's Inspector tab: the panel fills the pane (its CSS), so no width of its own. */
   readonly fill?: boolean;
   onLabel(label: string): void;
-  onClose(): void;
+  /** Closes the panel; `fromKeyboard` when by Esc (then focus should go somewhere sensible). */
+  onClose(fromKeyboard?: boolean): void;
 }
 
 /** The width of the area the dock shares with the canvas (its parent), 0 before layout. */
@@ -34,7 +35,7 @@ export function InspectorDock({ node, fill = false, onClose, ...inspector }: Pro
       onKeyDown={(e) => {
         if (e.key !== 'Escape' || isTyping(e.target)) return;
         e.preventDefault();
-        onClose();
+        onClose(true);
       }}
     >
       {/* biome-ignore lint/a11y/useSemanticElements: a draggable splitter, not a rule */}
@@ -67,7 +68,7 @@ export function InspectorDock({ node, fill = false, onClose, ...inspector }: Pro
         }}
       />
       {node ? (
-        <Inspector node={node} {...inspector} onClose={onClose} />
+        <Inspector node={node} {...inspector} onClose={() => onClose()} />
       ) : (
         <aside className="kf-inspector kf-inspector--empty" aria-label="Inspector">
           <header className="kf-inspector__header">
@@ -76,7 +77,7 @@ export function InspectorDock({ node, fill = false, onClose, ...inspector }: Pro
               type="button"
               className="kf-icon-button kf-inspector__close"
               aria-label="Close inspector"
-              onClick={onClose}
+              onClick={() => onClose()}
             >
               ×
             </button>

@@ -124,9 +124,9 @@ describe('classroom', () => {
       await handle.focus();
       await page.keyboard.press('Escape');
       await inspector.waitFor({ state: 'detached' });
-      expect(await page.getByRole('button', { name: 'Inspector' }).getAttribute('aria-pressed')).toBe(
-        'false',
-      );
+      const toggle = page.getByRole('button', { name: 'Inspector' });
+      expect(await toggle.getAttribute('aria-pressed')).toBe('false');
+      expect(await toggle.evaluate((b) => b === document.activeElement)).toBe(true); // focus not lost
     });
 
     it('presenting is read-only: undo, delete, cut, paste, drop and drags leave the graph alone', async () => {
@@ -254,6 +254,8 @@ describe('classroom', () => {
       const palette = page.getByRole('dialog', { name: 'Add node' });
       await add.click();
       await palette.waitFor();
+      await page.keyboard.press('Tab'); // the focus stays in the palette
+      expect(await palette.evaluate((d) => d.contains(document.activeElement))).toBe(true);
       await page.keyboard.press('Escape'); // Esc closes it, nothing added
       await palette.waitFor({ state: 'detached' });
       expect(await page.locator('.react-flow__node').count()).toBe(count);

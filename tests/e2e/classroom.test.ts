@@ -230,6 +230,21 @@ describe('classroom', () => {
     });
   });
 
+  it('on a 768 px tablet the docked inspector leaves the canvas room and the selection in view', async () => {
+    const page = await open({ width: 768, height: 1024 }, 'kaleidoscope-333');
+    const node = page.locator('.react-flow__node').first();
+    await node.locator('.kf-node__header').click();
+    await page.getByRole('button', { name: 'Inspector' }).click();
+    const inspector = page.getByRole('complementary', { name: 'Inspector' });
+    await inspector.waitFor();
+    expect((await boxOf(page.locator('.kf-graph'))).width).toBeGreaterThanOrEqual(235);
+    await expect
+      .poll(async () => intersects(await boxOf(inspector), await boxOf(node)), { timeout: 5_000 })
+      .toBe(false);
+    await page.screenshot({ path: join(shots, 'classroom-tablet-inspector.png') });
+    await page.close();
+  });
+
   describe('phone 390×844', () => {
     let page: Page;
     beforeAll(async () => {

@@ -21,7 +21,7 @@ import { Banner, type Message } from './Banner.tsx';
 import { EXAMPLES } from './examples.ts';
 import { ExamplesGallery } from './gallery/ExamplesGallery.tsx';
 import { HelpDialog } from './help/HelpDialog.tsx';
-import { loadedMessage, useDocumentIo } from './io/use-document-io.tsx';
+import { loadedMessage, PRESENTING_READ_ONLY, useDocumentIo } from './io/use-document-io.tsx';
 import { Presentation } from './present/Presentation.tsx';
 import { type RenderInfo, RenderPane } from './RenderPane.tsx';
 import { SplitPane } from './SplitPane.tsx';
@@ -87,7 +87,13 @@ export function App({ initialMessages, autosaveHold }: Props) {
   );
 
   const getViewport = useCallback(() => viewport.current, []);
-  const io = useDocumentIo({ store, scene: evaluation.scene, load, viewport: getViewport });
+  const io = useDocumentIo({
+    store,
+    scene: evaluation.scene,
+    load,
+    viewport: getViewport,
+    locked: presenting,
+  });
   const { save, exportItems } = io;
   const { notify } = io;
   const dismissWelcome = useCallback(() => {
@@ -122,7 +128,9 @@ export function App({ initialMessages, autosaveHold }: Props) {
       if (isTyping(e.target)) return;
       const mod = e.ctrlKey || e.metaKey;
       const key = e.key.toLowerCase();
-      if (mod && key === 'z' && !e.shiftKey) store.undo();
+      const edits = mod && ['z', 'y', 'o', 'x', 'v', 'd', 'a'].includes(key);
+      if (presenting && (edits || e.key === 'Delete' || e.key === 'Backspace')) notify(PRESENTING_READ_ONLY);
+      else if (mod && key === 'z' && !e.shiftKey) store.undo();
       else if (mod && (key === 'y' || (key === 'z' && e.shiftKey))) store.redo();
       else if (mod && key === 's') save();
       else if (mod && key === 'o') open();
@@ -132,7 +140,7 @@ export function App({ initialMessages, autosaveHold }: Props) {
     };
     window.addEventListener('keydown', onKey);
     return () => window.removeEventListener('keydown', onKey);
-  }, [store, save, open, presenting]);
+  }, [store, save, open, presenting, notify]);
 
   const onViewport = useCallback((v: Viewport | null) => {
     viewport.current = v;
@@ -155,7 +163,13 @@ export function App({ initialMessages, autosaveHold }: Props) {
     </ReactFlowProvider>
   );
 
-  if (presenting) return <Presentation onExit={() => setPresenting(false)} />;
+  if (presenting)
+    return (
+      <>
+        <Presentation onExit={() => setPresenting(false)} />
+        {io.ui}
+      </>
+    );
   return (
     <div className="kf-app">
       <TopBar

@@ -34,6 +34,8 @@ interface Props {
   onFrame(info: RenderInfo): void;
   /** Gives the app the viewport (for PNG export) once it exists. */
   onViewport(v: Viewport | null): void;
+  /** Presenting or embedded: no handles to drag, so nothing here can change the graph. */
+  readonly readOnly?: boolean;
 }
 
 export function RenderPane({
@@ -43,6 +45,7 @@ export function RenderPane({
   onDiagnostics,
   onFrame,
   onViewport,
+  readOnly = false,
 }: Props) {
   const store = useStore();
   const doc = useEditorState((s) => s.doc);
@@ -165,6 +168,7 @@ export function RenderPane({
           onHoverNode={onHoverNode}
           onPreview={(patches) => store.preview(patchChange(patches))}
           onCommit={(patches) => store.commit(patchChange(patches), 'drag in the render')}
+          readOnly={readOnly}
         />
       )}
       {bounds && (

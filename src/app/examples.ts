@@ -8,7 +8,16 @@ export interface Example {
   readonly id: string;
   readonly title: string;
   readonly description: string;
+  /** The gallery section the file asks for (`meta.group`, or "3D" for a `meta.tags` "3d"), if any. */
+  readonly group?: string;
   readonly doc: GraphDoc;
+}
+
+/** The gallery group an example's meta declares: `group: "…"`, or the tag "3d" (any case). */
+export function declaredGroup(meta: Readonly<Record<string, unknown>>): string | undefined {
+  if (typeof meta.group === 'string' && meta.group.trim()) return meta.group.trim();
+  const tags = Array.isArray(meta.tags) ? meta.tags : [];
+  return tags.some((t) => typeof t === 'string' && t.toLowerCase() === '3d') ? '3D' : undefined;
 }
 
 const modules = import.meta.glob('../../examples/*.kleinflow.json', { eager: true, import: 'default' });
@@ -20,12 +29,14 @@ export const EXAMPLES: readonly Example[] = Object.entries(modules)
     if (!loaded.ok) return [];
     const id = path.replace(/^.*\//, '').replace(/\.kleinflow\.json$/, '');
     const { title, description } = loaded.doc.meta;
+    const group = declaredGroup(loaded.doc.meta);
     // Example files may place nodes tighter than the editor draws them: spread them out.
     return [
       {
         id,
         title: title ?? id,
         description: description ?? '',
+        ...(group ? { group } : {}),
         doc: tidyIfOverlapping(loaded.doc, registry),
       },
     ];

@@ -17,6 +17,8 @@ export const SHORTCUTS: readonly { group: string; items: readonly Shortcut[] }[]
       { keys: ['Ctrl D'], action: 'Duplicate the selection' },
       { keys: ['Ctrl A'], action: 'Select all nodes' },
       { keys: ['I'], action: 'Show or hide the inspector' },
+      { keys: ['←', '→'], action: 'Resize the inspector (its edge focused; Shift: faster)' },
+      { keys: ['Esc'], action: 'Close the inspector (focus in it)' },
     ],
   },
   {

@@ -10,16 +10,13 @@ import {
   Controls,
   type Edge,
   type EdgeChange,
-  type FinalConnectionState,
   MiniMap,
   type NodeChange,
   ReactFlow,
   useReactFlow,
 } from '@xyflow/react';
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
-import type { NodeDef } from '../../nodes/core/define-node.ts';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
-import { portSpec } from '../../nodes/core/port-lookup.ts';
 import type { Evaluation } from '../../nodes/graph/evaluate.ts';
 import { registry } from '../../nodes/types/index.ts';
 import type { Change } from '../state/changes.ts';
@@ -29,13 +26,15 @@ import { checkConnection, portOfHandle } from './connection.ts';
 import { fixPatches } from './diagnostic-fix.ts';
 import { type EditorActions, EditorContext } from './editor-context.ts';
 import { diagnosticsByNode, type KfNode, type KfNodeData, toFlowEdges, toFlowNodes } from './flow-model.ts';
-import { GraphPanels } from './GraphPanels.tsx';
+import { GraphToolbar } from './GraphToolbar.tsx';
+import { InspectorDock } from './InspectorDock.tsx';
+import { useKeepInView } from './keep-in-view.ts';
 import { NodeView } from './NodeView.tsx';
 import { gridPosition } from './new-node.ts';
 import { Palette } from './Palette.tsx';
-import { addNodeChange, type PaletteState } from './palette-actions.ts';
 import { useFrameGraph } from './use-frame-graph.ts';
 import { useGraphKeys } from './use-graph-keys.ts';
+import { usePalette } from './use-palette.ts';
 import { useRememberedFlag } from './use-remembered-flag.ts';
 
 const nodeTypes = { kf: NodeView };
@@ -66,11 +65,11 @@ export function GraphEditor({
   const flow = useReactFlow<KfNode, Edge>();
   const [nodes, setNodes] = useState<KfNode[]>([]);
   const [selectedEdges, setSelectedEdges] = useState<ReadonlySet<string>>(new Set());
-  const [palette, setPalette] = useState<PaletteState | null>(null);
   const [inspectorRemembered, setInspectorOpen] = useRememberedFlag('kleinflow.inspector', false);
   const inspectorOpen = inspectorRemembered || inspectorTab;
   const pointer = useRef<{ x: number; y: number } | null>(null);
   const wrapper = useRef<HTMLDivElement>(null);
+  const inspectorButton = useRef<HTMLButtonElement>(null);
 
   const diagnostics = useMemo(
     () => diagnosticsByNode([...evaluation.diagnostics, ...extraDiagnostics]),
@@ -180,47 +179,15 @@ export function GraphEditor({
     [store],
   );
 
-  const openPalette = useCallback(
-    (screen: { x: number; y: number }, extra: Partial<PaletteState> = {}) => {
-      setPalette({ screen, flow: flow.screenToFlowPosition(screen), ...extra });
-    },
-    [flow],
-  );
-
-  /** A wire dropped on empty canvas opens the palette filtered to types that fit it. */
-  const onConnectEnd = useCallback(
-    (event: MouseEvent | TouchEvent, state: FinalConnectionState) => {
-      if (state.isValid || !state.fromHandle || !state.fromNode) return;
-      const target = event.target as Element | null;
-      if (!target?.classList.contains('react-flow__pane')) return;
-      const data = state.fromNode.data as KfNodeData;
-      const port = portOfHandle(state.fromHandle.id);
-      const side = state.fromHandle.type;
-      const type = portSpec(data.def, side === 'source' ? 'outputs' : 'inputs', port)?.type;
-      if (!type) return;
-      const point = 'changedTouches' in event ? event.changedTouches[0] : event;
-      openPalette(
-        { x: point.clientX, y: point.clientY },
-        {
-          filter: { from: side, type },
-          wire: { nodeId: state.fromNode.id, handle: state.fromHandle.id ?? '', side },
-        },
-      );
-    },
-    [openPalette],
-  );
-
-  const addFromPalette = useCallback(
-    (def: NodeDef) => {
-      if (!palette) return;
-      const { change, nodeId } = addNodeChange(store.getState().doc, def, palette);
-      store.dispatch(change, `add ${def.label}`);
-      store.setSelection([nodeId]);
-      setPalette(null);
-    },
-    [palette, store],
-  );
-
+  const {
+    palette,
+    openPalette,
+    openPaletteAt,
+    openPaletteCentred,
+    onConnectEnd,
+    addFromPalette,
+    closePalette,
+  } = usePalette(wrapper);
   useFrameGraph(frameKey, doc, nodes, wrapper);
 
   const toggleInspector = useCallback(
@@ -231,71 +198,103 @@ export function GraphEditor({
     store,
     flow,
     pointer,
-    wrapper,
     paletteOpen: palette !== null,
-    openPalette,
+    openPalette: openPaletteAt,
     toggleInspector,
   });
 
+  const inspected = selection.size === 1 ? doc.nodes.find((n) => selection.has(n.id)) : undefined;
+  const inspectedData = inspected ? nodes.find((n) => n.id === inspected.id)?.data : undefined;
+  useKeepInView(inspectorOpen && !inspectorTab ? inspected?.id : undefined, wrapper);
+
   return (
     <EditorContext.Provider value={actions}>
-      {/* biome-ignore lint/a11y/noStaticElementInteractions: tracks the pointer (where new nodes land); React Flow is the interactive canvas */}
-      <div
-        className={inspectorTab ? 'kf-graph kf-graph--inspector-tab' : 'kf-graph'}
-        ref={wrapper}
-        onPointerMove={(e) => {
-          pointer.current = { x: e.clientX, y: e.clientY };
-        }}
-        onPointerLeave={() => {
-          pointer.current = null;
-        }}
-        onDoubleClick={(e) => {
-          if ((e.target as Element).classList.contains('react-flow__pane'))
-            openPalette({ x: e.clientX, y: e.clientY });
-        }}
-      >
-        <ReactFlow<KfNode, Edge>
+      <div className={inspectorTab ? 'kf-graph-area kf-graph-area--inspector-tab' : 'kf-graph-area'}>
+        <GraphToolbar
           nodes={nodes}
-          edges={edges}
-          nodeTypes={nodeTypes}
-          onNodesChange={onNodesChange}
-          onEdgesChange={onEdgesChange}
-          onDelete={onDelete}
-          onNodeDragStop={onNodeDragStop}
-          onConnect={onConnect}
-          onConnectEnd={onConnectEnd}
-          isValidConnection={isValidConnection}
-          deleteKeyCode={['Delete', 'Backspace']}
-          selectionKeyCode="Shift"
-          panActivationKeyCode={null}
-          multiSelectionKeyCode={['Meta', 'Control']}
-          zoomOnDoubleClick={false}
-          colorMode="dark"
-          minZoom={0.15}
-          maxZoom={2.5}
-          attributionPosition="top-left"
-          defaultEdgeOptions={{ interactionWidth: 16 }}
-          connectionRadius={24}
-        >
-          <Background variant={BackgroundVariant.Dots} gap={22} size={1.2} color="#2c2f36" />
-          <MiniMap
-            style={{ width: 150, height: 100 }}
-            pannable
-            zoomable
-            nodeColor={(n) => (n.data as KfNodeData).def?.color ?? '#e5484d'}
-            nodeStrokeWidth={0}
-            maskColor="rgba(12, 13, 16, 0.7)"
-            ariaLabel="Graph overview"
-          />
-          <Controls showInteractive={false} />
-        </ReactFlow>
-        <GraphPanels
-          nodes={nodes}
-          evaluation={evaluation}
-          diagnostics={diagnostics}
           inspectorOpen={inspectorOpen}
+          inspectorButton={inspectorButton}
           toggleInspector={toggleInspector}
+          onAddNode={openPaletteCentred}
         />
+        <div className="kf-graph-area__body">
+          {/* biome-ignore lint/a11y/noStaticElementInteractions: tracks the pointer (where new nodes land); React Flow is the interactive canvas */}
+          <div
+            className="kf-graph"
+            ref={wrapper}
+            onPointerMove={(e) => {
+              pointer.current = { x: e.clientX, y: e.clientY };
+            }}
+            onPointerLeave={() => {
+              pointer.current = null;
+            }}
+            onDoubleClick={(e) => {
+              if ((e.target as Element).classList.contains('react-flow__pane'))
+                openPalette({ x: e.clientX, y: e.clientY });
+            }}
+          >
+            <ReactFlow<KfNode, Edge>
+              nodes={nodes}
+              edges={edges}
+              nodeTypes={nodeTypes}
+              onNodesChange={onNodesChange}
+              onEdgesChange={onEdgesChange}
+              onDelete={onDelete}
+              onNodeDragStop={onNodeDragStop}
+              onConnect={onConnect}
+              onConnectEnd={onConnectEnd}
+              isValidConnection={isValidConnection}
+              deleteKeyCode={['Delete', 'Backspace']}
+              selectionKeyCode="Shift"
+              panActivationKeyCode={null}
+              multiSelectionKeyCode={['Meta', 'Control']}
+              zoomOnDoubleClick={false}
+              colorMode="dark"
+              minZoom={0.15}
+              maxZoom={2.5}
+              attributionPosition="top-left"
+              defaultEdgeOptions={{ interactionWidth: 16 }}
+              connectionRadius={24}
+            >
+              <Background variant={BackgroundVariant.Dots} gap={22} size={1.2} color="#2c2f36" />
+              <MiniMap
+                style={{ width: 150, height: 100 }}
+                pannable
+                zoomable
+                nodeColor={(n) => (n.data as KfNodeData).def?.color ?? '#e5484d'}
+                nodeStrokeWidth={0}
+                maskColor="rgba(12, 13, 16, 0.7)"
+                ariaLabel="Graph overview"
+              />
+              <Controls showInteractive={false} />
+            </ReactFlow>
+            {doc.nodes.length === 0 && (
+              <div className="kf-empty-hint">
+                <p>
+                  <kbd>Space</kbd>, double-click or <strong>Add node</strong> to add a node
+                </p>
+                <p>or open an example from the menu</p>
+              </div>
+            )}
+          </div>
+          {inspectorOpen && (
+            <InspectorDock
+              node={inspected}
+              fill={inspectorTab}
+              connected={inspectedData?.connected ?? new Set()}
+              evaluation={inspected && evaluation.nodes.get(inspected.id)}
+              diagnostics={(inspected && diagnostics.get(inspected.id)) ?? []}
+              onLabel={(label) =>
+                inspected && store.dispatch({ type: 'set-label', nodeId: inspected.id, label }, 'rename')
+              }
+              onClose={(fromKeyboard) => {
+                toggleInspector();
+                // The panel and its focused control are gone: keep the keyboard user on its toggle.
+                if (fromKeyboard) inspectorButton.current?.focus();
+              }}
+            />
+          )}
+        </div>
       </div>
       {palette && (
         <Palette
@@ -303,7 +302,7 @@ export function GraphEditor({
           at={palette.screen}
           filter={palette.filter}
           onPick={addFromPalette}
-          onClose={() => setPalette(null)}
+          onClose={closePalette}
         />
       )}
     </EditorContext.Provider>

@@ -30,6 +30,7 @@ export function Palette({ defs, at, filter, onPick, onClose }: Props) {
       <div
         className="kf-palette"
         role="dialog"
+        aria-modal="true"
         aria-label="Add node"
         style={{ left, top }}
         onPointerDown={(e) => e.stopPropagation()}
@@ -53,7 +54,8 @@ export function Palette({ defs, at, filter, onPick, onClose }: Props) {
             else if (e.key === 'ArrowUp') setActive((a) => Math.max(0, a - 1));
             else if (e.key === 'Enter' && results[active]) onPick(results[active]);
             else if (e.key === 'Escape') onClose();
-            else return;
+            // The list is walked with the arrows; Tab must not leave the palette for the page behind.
+            else if (e.key !== 'Tab') return;
             e.preventDefault();
             e.stopPropagation();
           }}

@@ -17,9 +17,9 @@ interface Options {
   readonly flow: ReactFlowInstance<KfNode, Edge>;
   /** Last pointer position over the graph (css px), null when outside. */
   readonly pointer: RefObject<Point | null>;
-  readonly wrapper: RefObject<HTMLDivElement | null>;
   readonly paletteOpen: boolean;
-  openPalette(at: Point): void;
+  /** Opens the search palette at `at` (screen px), or at its usual place when there is no pointer. */
+  openPalette(at: Point | null): void;
   toggleInspector(): void;
 }
 
@@ -38,7 +38,7 @@ const PASTE_EVENT_WAIT_MS = 120;
 const hasTextSelection = () => (window.getSelection()?.toString() ?? '') !== '';
 
 export function useGraphKeys(o: Options): void {
-  const { store, flow, pointer, wrapper, paletteOpen, openPalette, toggleInspector } = o;
+  const { store, flow, pointer, paletteOpen, openPalette, toggleInspector } = o;
   useEffect(() => {
     const selected = () => copyNodes(store.getState().doc, store.getState().selection);
     /** Graph position under the pointer (paste target), or undefined to paste beside the originals. */
@@ -49,8 +49,7 @@ export function useGraphKeys(o: Options): void {
       const mod = e.ctrlKey || e.metaKey;
       const key = e.key.toLowerCase();
       if ((key === ' ' && !mod) || (mod && key === 'k')) {
-        const rect = wrapper.current!.getBoundingClientRect();
-        openPalette(pointer.current ?? { x: rect.left + rect.width / 2, y: rect.top + rect.height / 3 });
+        openPalette(pointer.current);
       } else if (mod && (key === 'c' || key === 'x') && !hasTextSelection()) {
         // No preventDefault: the browser's copy/cut event follows and carries the JSON too.
         const data = selected();
@@ -101,5 +100,5 @@ export function useGraphKeys(o: Options): void {
       document.removeEventListener('cut', onCopy);
       document.removeEventListener('paste', onPaste);
     };
-  }, [store, flow, pointer, wrapper, paletteOpen, openPalette, toggleInspector]);
+  }, [store, flow, pointer, paletteOpen, openPalette, toggleInspector]);
 }

@@ -1,6 +1,8 @@
 /**
- * The Examples gallery's sections, by example id. One table, checked by a test: every bundled
- * example sits in exactly one section, so a new example file cannot go missing from the gallery.
+ * The Examples gallery's sections: this table by example id, then any group an example file
+ * declares itself (`meta.group`, or the tag "3d" — see examples.ts), so a new kind of example
+ * (the 3D ones) gets its own section without a code change. A test checks every bundled example
+ * is placed, so a new example file cannot go missing from the gallery.
  */
 import type { Example } from '../examples.ts';
 
@@ -63,7 +65,9 @@ const fold = (s: string) =>
 
 /**
  * The sections with the examples that match every word of `query` in their title or description
- * (empty sections dropped). Examples no section names land in "More", so none is ever hidden.
+ * (empty sections dropped): the table's sections, then the groups examples declare (in order of
+ * first appearance; a declared group with a table section's title joins it), then "More" for
+ * examples neither places, so none is ever hidden.
  */
 export function galleryGroups(examples: readonly Example[], query = ''): GalleryGroup[] {
   const words = fold(query).split(' ').filter(Boolean);
@@ -72,16 +76,19 @@ export function galleryGroups(examples: readonly Example[], query = ''): Gallery
     return words.every((w) => text.includes(w));
   };
   const byId = new Map(examples.map((e) => [e.id, e]));
-  const placed = new Set(GALLERY_SECTIONS.flatMap((s) => s.ids));
-  const sections = [
-    ...GALLERY_SECTIONS.map((s) => ({
-      title: s.title,
-      examples: s.ids.flatMap((id) => (byId.has(id) ? [byId.get(id)!] : [])),
-    })),
-    { title: 'More', examples: examples.filter((e) => !placed.has(e.id)) },
-  ];
-  return sections
-    .map((s) => ({ title: s.title, examples: s.examples.filter(matches) }))
+  const tabled = new Set(GALLERY_SECTIONS.flatMap((s) => s.ids));
+  const sections = new Map<string, Example[]>(
+    GALLERY_SECTIONS.map((s) => [s.title, s.ids.flatMap((id) => (byId.has(id) ? [byId.get(id)!] : []))]),
+  );
+  const more: Example[] = [];
+  for (const e of examples) {
+    if (tabled.has(e.id)) continue;
+    if (!e.group) more.push(e);
+    else sections.set(e.group, [...(sections.get(e.group) ?? []), e]);
+  }
+  sections.set('More', [...(sections.get('More') ?? []), ...more]);
+  return [...sections]
+    .map(([title, list]) => ({ title, examples: list.filter(matches) }))
     .filter((s) => s.examples.length > 0);
 }
 

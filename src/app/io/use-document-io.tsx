@@ -32,6 +32,8 @@ interface Options {
   /** Replaces the document as one undo step (the app also resets selection and framing). */
   load(doc: GraphDoc, label: string): void;
   viewport(): Viewport | null;
+  /** While presenting the graph is read-only: a drop or a pasted graph is refused with a message. */
+  readonly locked?: boolean;
 }
 
 export interface DocumentIo {
@@ -46,6 +48,9 @@ export interface DocumentIo {
 
 /** What a load that replaced the user's graph says (so nobody thinks their work is gone). */
 export const loadedMessage = (what: string) => `Loaded ${what} — Ctrl+Z brings your graph back.`;
+
+/** What an edit attempted while presenting is told (the presentation never changes the graph). */
+export const PRESENTING_READ_ONLY = 'Presenting: the graph is read-only. Esc goes back to the editor.';
 
 /** The live render's size in css pixels (the export dialog's "view size"). */
 function renderSize(): Size {
@@ -68,7 +73,7 @@ export async function copyText(text: string): Promise<boolean> {
   }
 }
 
-export function useDocumentIo({ store, scene, load, viewport }: Options): DocumentIo {
+export function useDocumentIo({ store, scene, load, viewport, locked = false }: Options): DocumentIo {
   const [report, setReport] = useState<OpenReport | null>(null);
   const [toast, setToast] = useState<ToastMessage | null>(null);
   const [dragging, setDragging] = useState(false);
@@ -120,12 +125,14 @@ export function useDocumentIo({ store, scene, load, viewport }: Options): Docume
     return () => window.removeEventListener('hashchange', apply);
   }, [load, say]);
 
+  const lockedNow = useRef(locked);
+  lockedNow.current = locked;
   // Drop a file anywhere; paste a whole document or share link (copied nodes stay the editor's).
   useEffect(() => {
     let depth = 0;
     const hasFiles = (e: DragEvent) => e.dataTransfer?.types.includes('Files') ?? false;
     const enter = (e: DragEvent) => {
-      if (!hasFiles(e)) return;
+      if (!hasFiles(e) || lockedNow.current) return;
       depth++;
       setDragging(true);
     };
@@ -146,7 +153,8 @@ export function useDocumentIo({ store, scene, load, viewport }: Options): Docume
       if (!file) return;
       e.preventDefault();
       e.stopPropagation(); // the graph canvas must not also treat it as its own drop
-      void openFile(file);
+      if (lockedNow.current) say('ok', PRESENTING_READ_ONLY);
+      else void openFile(file);
     };
     const paste = (e: ClipboardEvent) => {
       if (isTyping(e.target)) return;
@@ -155,7 +163,8 @@ export function useDocumentIo({ store, scene, load, viewport }: Options): Docume
       // The editor's own paste handler still sees the event (it clears its fallback timer) and
       // ignores it: the text is not its `kleinflow-clipboard` format.
       e.preventDefault();
-      accept('the pasted graph', result);
+      if (lockedNow.current) say('ok', PRESENTING_READ_ONLY);
+      else accept('the pasted graph', result);
     };
     window.addEventListener('dragenter', enter);
     window.addEventListener('dragover', over);
@@ -169,7 +178,7 @@ export function useDocumentIo({ store, scene, load, viewport }: Options): Docume
       window.removeEventListener('drop', drop, true);
       window.removeEventListener('paste', paste, true);
     };
-  }, [openFile, accept]);
+  }, [openFile, accept, say]);
 
   const copyLink = useCallback(async () => {
     const link = shareLinkFor(store.getState().doc, window.location);

@@ -38,6 +38,7 @@ function Embed() {
         onDiagnostics={noop}
         onFrame={noop}
         onViewport={noop}
+        readOnly
       />
       <a className="kf-embed__link" href={editorLink(doc)} target="_blank" rel="noopener noreferrer">
         Open in Kleinflow

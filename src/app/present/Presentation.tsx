@@ -7,7 +7,6 @@
  * links; Esc goes back. Opened from a link (`?mode=present`) it is for the audience only.
  */
 import { useCallback, useEffect, useMemo, useState } from 'react';
-import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
 import { registry } from '../../../nodes/types/index.ts';
 import { isTyping } from '../../editor/typing.ts';
 import { createEvaluator } from '../../state/evaluation.ts';
@@ -22,11 +21,6 @@ import { StepList } from './StepList.tsx';
 
 const noop = () => {};
 const NO_NOTES: Readonly<Record<string, string>> = {};
-
-/** The evaluation without its handles: the overlay still draws, but nothing can be dragged. */
-function readOnly(evaluation: Evaluation): Evaluation {
-  return { ...evaluation, scene: { ...evaluation.scene, handles: [] } };
-}
 
 interface Props {
   /** Leaves the presentation (back to the editor); without it the view is the audience's. */
@@ -50,7 +44,7 @@ export function Presentation({ onExit, editorHref }: Props) {
   const [editing, setEditing] = useState(false);
   const [headOpen, setHeadOpen] = useState(false);
   const built = Math.min(count, steps.length);
-  const shown = useMemo(() => readOnly(evaluationUpTo(evaluation, steps, built)), [evaluation, steps, built]);
+  const shown = useMemo(() => evaluationUpTo(evaluation, steps, built), [evaluation, steps, built]);
   const pictured = built >= steps.length || renderReached(evaluation, steps, built);
 
   const step = useCallback((n: number) => setCount(Math.min(steps.length, Math.max(0, n))), [steps.length]);
@@ -90,6 +84,7 @@ export function Presentation({ onExit, editorHref }: Props) {
           onDiagnostics={noop}
           onFrame={noop}
           onViewport={noop}
+          readOnly
         />
         <header className={`kf-present__head${headOpen ? ' kf-present__head--open' : ''}`}>
           <h1 className="kf-present__title">{title}</h1>

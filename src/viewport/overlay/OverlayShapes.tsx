@@ -6,6 +6,7 @@
 import type { JSX } from 'react';
 import type { HandleItem } from '../../../nodes/core/scene.ts';
 import { OVERLAY_PX } from './constants.ts';
+import { circleCandidates, type LabelRequest, placeLabels, pointCandidates } from './label-placement.ts';
 import { circleRimVisible, clipLineToRect, type ScreenHandle, type ScreenItem } from './screen.ts';
 
 export const OUTLINE_COLOR = 'rgba(8, 8, 12, 0.78)';
@@ -47,43 +48,78 @@ function strokePath(item: ScreenItem, width: number, height: number): string | n
   return `M${cx - s.r},${cy}a${s.r},${s.r} 0 1,0 ${2 * s.r},0a${s.r},${s.r} 0 1,0 ${-2 * s.r},0`;
 }
 
-/** Where a label goes: up-right of a point, at the rim's upper-right (45°) for a circle. */
-function labelAnchor(item: ScreenItem): [number, number] | null {
-  const s = item.shape;
-  const o = OVERLAY_PX.labelOffset;
-  if (s.shape === 'point') return [s.at[0] + o, s.at[1] - o];
-  if (s.shape === 'circle') return [s.c[0] + s.r * Math.SQRT1_2 + o / 2, s.c[1] - s.r * Math.SQRT1_2 - o / 2];
-  return null;
+const LABEL_FONT_FAMILY = 'system-ui, sans-serif';
+const LABEL_WEIGHT = 600;
+/** A label's box height, and where its baseline sits below the box's top (in font sizes). */
+const LABEL_HEIGHT_EM = 1.2;
+const LABEL_BASELINE_EM = 0.93;
+
+let measureContext: CanvasRenderingContext2D | null | undefined;
+/** A label's width as the browser draws it (canvas text metrics in the same font), or an estimate. */
+function labelWidth(text: string): number {
+  const font = OVERLAY_PX.labelFont;
+  if (measureContext === undefined)
+    measureContext =
+      typeof document === 'undefined' ? null : document.createElement('canvas').getContext('2d');
+  if (!measureContext) return 0.7 * font * text.length;
+  measureContext.font = `${LABEL_WEIGHT} ${font}px ${LABEL_FONT_FAMILY}`;
+  return Math.ceil(measureContext.measureText(text).width);
 }
 
 /**
- * Keeps a label whose anchor is on the pane fully inside it (a point near the right edge gets its
- * label pulled left); a label whose anchor is off the pane is not drawn. Width is estimated from
- * the character count (about 0.62 em per character).
+ * The labels to draw (one per node, on its first point or circle) placed so that none overlaps
+ * another or leaves the pane (label-placement.ts): the hovered node's first, then points, then
+ * circles; the drawn points and handles are kept clear where possible.
  */
-function placeLabel(
-  anchor: [number, number],
-  text: string,
+function layoutLabels(
+  items: readonly ScreenItem[],
+  handles: readonly ScreenHandle[],
   width: number,
   height: number,
-): [number, number] | null {
+  hoveredNodeId: string | null,
+): { key: string; text: string; at: [number, number] }[] {
   const font = OVERLAY_PX.labelFont;
-  const textWidth = 0.62 * font * text.length;
-  const [x, y] = anchor;
-  if (x < -textWidth || x > width || y < 0 || y > height + font) return null;
-  const pad = 4;
-  return [
-    Math.max(pad, Math.min(x, width - pad - textWidth)),
-    Math.max(font + pad, Math.min(y, height - pad)),
+  const requests: (LabelRequest & { text: string })[] = [];
+  const seen = new Set<string>();
+  items.forEach((item, i) => {
+    const s = item.shape;
+    if (!item.label || seen.has(item.nodeId) || s.shape === 'line') return;
+    seen.add(item.nodeId);
+    requests.push({
+      id: `${item.nodeId}:${i}`,
+      text: item.label,
+      width: labelWidth(item.label),
+      height: LABEL_HEIGHT_EM * font,
+      gap: s.shape === 'point' ? OVERLAY_PX.labelOffset : OVERLAY_PX.labelOffset / 2,
+      priority: (item.nodeId === hoveredNodeId ? 2 : 0) + (s.shape === 'point' ? 1 : 0),
+      candidates: s.shape === 'point' ? pointCandidates(s.at) : circleCandidates(s.c, s.r),
+    });
+  });
+  const dot = (at: readonly [number, number], r: number) => ({
+    x: at[0] - r,
+    y: at[1] - r,
+    width: 2 * r,
+    height: 2 * r,
+  });
+  const obstacles = [
+    ...items.flatMap((it) =>
+      it.shape.shape === 'point' ? [dot(it.shape.at, OVERLAY_PX.pointRadius + 1)] : [],
+    ),
+    ...handles.map((h) => dot(h.at, OVERLAY_PX.handleRadius + 1)),
   ];
+  const placed = placeLabels(requests, { width, height }, obstacles);
+  return requests.flatMap((r) => {
+    const box = placed.get(r.id);
+    return box
+      ? [{ key: r.id, text: r.text, at: [box.x, box.y + LABEL_BASELINE_EM * font] as [number, number] }]
+      : [];
+  });
 }
 
 export function OverlayShapes(props: OverlayShapesProps): JSX.Element {
   const { items, handles, width, height, hoveredNodeId, hoverHandle, dragTarget, showLabels } = props;
   const strokes: JSX.Element[] = [];
   const dots: JSX.Element[] = [];
-  const labels: JSX.Element[] = [];
-  const labelled = new Set<string>();
   items.forEach((item, i) => {
     const hot = item.nodeId === hoveredNodeId;
     const w = hot ? OVERLAY_PX.strokeHover : OVERLAY_PX.stroke;
@@ -117,25 +153,16 @@ export function OverlayShapes(props: OverlayShapesProps): JSX.Element {
         </g>,
       );
     }
-    const anchor = showLabels && item.label && !labelled.has(item.nodeId) ? labelAnchor(item) : null;
-    const at = anchor && item.label ? placeLabel(anchor, item.label, width, height) : null;
-    if (at) {
-      labelled.add(item.nodeId);
-      labels.push(
-        <text key={`label:${key}`} x={at[0]} y={at[1]} className="kf-overlay-label">
-          {item.label}
-        </text>,
-      );
-    }
   });
+  const labels = showLabels ? layoutLabels(items, handles, width, height, hoveredNodeId) : [];
   return (
     <>
       <g>{strokes}</g>
       <g>{dots}</g>
       <g
         fontSize={OVERLAY_PX.labelFont}
-        fontFamily="system-ui, sans-serif"
-        fontWeight={600}
+        fontFamily={LABEL_FONT_FAMILY}
+        fontWeight={LABEL_WEIGHT}
         // White on a dark halo reads on any picture; the label sits right next to its shape.
         fill={LABEL_COLOR}
         stroke={OUTLINE_COLOR}
@@ -143,7 +170,11 @@ export function OverlayShapes(props: OverlayShapesProps): JSX.Element {
         paintOrder="stroke"
         strokeLinejoin="round"
       >
-        {labels}
+        {labels.map((l) => (
+          <text key={`label:${l.key}`} x={l.at[0]} y={l.at[1]} className="kf-overlay-label">
+            {l.text}
+          </text>
+        ))}
       </g>
       <g>
         {handles.map(({ item, at, color }) => {

@@ -34,12 +34,14 @@ export interface RenderOverlayProps {
   /** On pointer-up after a drag: one undo step. */
   onCommit(patches: NodePatch[]): void;
   showLabels?: boolean;
+  /** Presenting or embedded: the construction is drawn, but there is nothing to grab. */
+  readOnly?: boolean;
 }
 
 const FALLBACK_COLOR = '#ffffff';
 
 export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
-  const { evaluation, view, width, height, hoveredNodeId, showLabels = true } = props;
+  const { evaluation, view, width, height, hoveredNodeId, showLabels = true, readOnly = false } = props;
   const ref = useRef<SVGSVGElement>(null);
   const screen = useMemo<Screen>(() => ({ view, width, height }), [view, width, height]);
   // A pane not laid out yet (0 × 0) has no pixel mapping: draw nothing rather than NaNs.
@@ -51,11 +53,11 @@ export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
   const handles = useMemo(
     () =>
       placeHandles(
-        sized ? evaluation.scene.handles : [],
+        sized && !readOnly ? evaluation.scene.handles : [],
         (id) => evaluation.analysis.nodes.get(id)?.def?.color ?? FALLBACK_COLOR,
         screen,
       ),
-    [sized, evaluation, screen],
+    [sized, readOnly, evaluation, screen],
   );
   const keptSides = useMemo(
     () => (sized ? keptSideShapes(evaluation.scene.elements, screen) : []),
@@ -79,7 +81,11 @@ export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
       height={height}
       viewBox={`0 0 ${width} ${height}`}
       role="img"
-      aria-label="Construction overlay: drag the handles to move points and circles"
+      aria-label={
+        readOnly
+          ? 'Construction overlay (read-only)'
+          : 'Construction overlay: drag the handles to move points and circles'
+      }
       style={{
         position: 'absolute',
         inset: 0,

@@ -1,17 +1,40 @@
 /** The gallery's sections hold every example exactly once, and search finds what people type. */
+
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
-import type { Example } from '../../../../src/app/examples.ts';
+import { declaredGroup, type Example } from '../../../../src/app/examples.ts';
 import { GALLERY_SECTIONS, galleryGroups, oneLine } from '../../../../src/app/gallery/groups.ts';
 import { exampleNames } from '../../../../src/cli/examples.ts';
 
-const fake = (id: string, title: string, description = ''): Example =>
-  ({ id, title, description, doc: {} }) as unknown as Example;
+const fake = (id: string, title: string, description = '', group?: string): Example =>
+  ({ id, title, description, ...(group ? { group } : {}), doc: {} }) as unknown as Example;
+const examplesDir = join(import.meta.dirname, '..', '..', '..', '..', 'examples');
+const metaOf = (name: string) =>
+  JSON.parse(readFileSync(join(examplesDir, `${name}.kleinflow.json`), 'utf8')).meta ?? {};
 
 describe('gallery sections', () => {
-  it('place every bundled example in exactly one section, and name no missing file', () => {
+  it('place every bundled example in exactly one section (the table or its own group), and name no missing file', () => {
     const ids = GALLERY_SECTIONS.flatMap((s) => s.ids);
     expect(new Set(ids).size).toBe(ids.length);
-    expect([...ids].sort()).toEqual(exampleNames());
+    const names = exampleNames();
+    expect(ids.filter((id) => !names.includes(id))).toEqual([]);
+    const unplaced = names.filter((n) => !ids.includes(n) && !declaredGroup(metaOf(n)));
+    expect(unplaced).toEqual([]);
+  });
+
+  it('give a group an example declares its own section, with no code change', () => {
+    const groups = galleryGroups([
+      fake('kaleidoscope-333', '*333'),
+      fake('sphere-mirrors', 'Four sphere mirrors', '', '3D'),
+      fake('brand-new', 'New one'),
+      fake('hyperbolic-ball', 'Ball', '', '3D'),
+    ]);
+    expect(groups.map((g) => g.title)).toEqual(['Kaleidoscopes', '3D', 'More']);
+    expect(groups[1].examples.map((e) => e.id)).toEqual(['sphere-mirrors', 'hyperbolic-ball']);
+    expect(declaredGroup({ tags: ['Space', '3D'] })).toBe('3D');
+    expect(declaredGroup({ group: 'Pictures' })).toBe('Pictures');
+    expect(declaredGroup({ title: 'x' })).toBeUndefined();
   });
 
   it('put an example no section names under "More" instead of hiding it', () => {

@@ -1,0 +1,39 @@
+/**
+ * Keeps the inspected node on screen: opening the docked inspector narrows the canvas, and a node
+ * near its right edge would slip out of view; the graph pans just enough to show it again.
+ */
+import { type Edge, useReactFlow } from '@xyflow/react';
+import { type RefObject, useEffect } from 'react';
+import type { KfNode } from './flow-model.ts';
+
+/** A node is brought this far inside the canvas's edges (css px). */
+const MARGIN_PX = 16;
+
+/**
+ * How far to move a span [lo, lo + size] so it lies inside [margin, avail − margin]: 0 when it
+ * already does; a span too long to fit gets its start shown.
+ */
+export function shiftIntoView(lo: number, size: number, avail: number, margin = MARGIN_PX): number {
+  if (lo < margin) return margin - lo;
+  const over = lo + size - (avail - margin);
+  return over > 0 ? -Math.min(over, lo - margin) : 0;
+}
+
+export function useKeepInView(nodeId: string | undefined, pane: RefObject<HTMLElement | null>): void {
+  const flow = useReactFlow<KfNode, Edge>();
+  useEffect(() => {
+    if (!nodeId) return;
+    // After the layout that opened the panel, so the canvas has its new width.
+    const frame = requestAnimationFrame(() => {
+      const node = flow.getInternalNode(nodeId);
+      const el = pane.current;
+      if (!node || !el) return;
+      const { x, y, zoom } = flow.getViewport();
+      const at = node.internals.positionAbsolute;
+      const dx = shiftIntoView(at.x * zoom + x, (node.measured.width ?? 0) * zoom, el.clientWidth);
+      const dy = shiftIntoView(at.y * zoom + y, (node.measured.height ?? 0) * zoom, el.clientHeight);
+      if (dx !== 0 || dy !== 0) void flow.setViewport({ x: x + dx, y: y + dy, zoom }, { duration: 150 });
+    });
+    return () => cancelAnimationFrame(frame);
+  }, [nodeId, flow, pane]);
+}

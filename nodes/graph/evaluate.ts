@@ -11,9 +11,10 @@ import type { NodeRegistry } from '../core/registry.ts';
 import { EMPTY_SCENE_DEFAULTS, type Scene } from '../core/scene.ts';
 import { DEFAULT_TILE } from '../core/tile-spec.ts';
 import { type Analysis, analyzeGraph } from './analyze.ts';
-import type { GraphDoc } from './document.ts';
+import type { GraphDoc, GraphNode } from './document.ts';
 import { nodeVersion, nodeVersionProblem } from './migrate.ts';
 import { mirrorDiagnostics } from './mirror-check.ts';
+import { mutedOutputs } from './mute.ts';
 import { checkNumber, resolveParams } from './params.ts';
 
 export interface NodeEvaluation {
@@ -22,6 +23,8 @@ export interface NodeEvaluation {
   readonly diagnostics: readonly Diagnostic[];
   /** The context evaluate ran with (the editor uses it to map handle drags back to params). */
   readonly ctx?: EvalContext;
+  /** The node is muted, or quiet because a required input comes from a muted node (mute.ts). */
+  readonly muted?: boolean;
 }
 
 export interface Evaluation {
@@ -79,7 +82,7 @@ export function evaluateGraph(
       results.set(id, { diagnostics: [problem] });
       continue;
     }
-    const result = evaluateNode(def, node.id, index, node.params, analysis, results, time);
+    const result = evaluateNode(def, node, index, analysis, results, time);
     results.set(id, result);
     if (!result.ctx) continue;
     if (result.render) renders.push({ id, settings: result.render });
@@ -127,9 +130,8 @@ const NO_EDGES: ReadonlyMap<string, unknown> = new Map();
 
 function evaluateNode(
   def: NodeDef,
-  nodeId: string,
+  { id: nodeId, params: rawParams, muted }: GraphNode,
   index: number,
-  rawParams: Record<string, unknown>,
   analysis: Analysis,
   results: ReadonlyMap<string, NodeEvaluation>,
   time: number,
@@ -141,6 +143,7 @@ function evaluateNode(
   ]);
   const diagnostics: Diagnostic[] = [...resolved.diagnostics];
   const inputs: Record<string, unknown> = { ...resolved.inline };
+  let silenced = false;
 
   for (const [port, spec] of Object.entries(def.inputs)) {
     const edges = edgesByPort?.get(port);
@@ -153,6 +156,13 @@ function evaluateNode(
     for (const edge of orderBySource(edges, analysis)) {
       const source = results.get(edge.from.node);
       const value = ownEntry(source?.outputs, edge.from.port);
+      if (value === undefined && source?.muted) {
+        // A muted source that passes nothing here: a quiet note, and the node itself goes quiet
+        // unless the input may be empty — no error cascade (docs/architecture.md "Muted nodes").
+        diagnostics.push(diag('inputMuted', { nodeId, port }, port, edge.from.node));
+        if (!many && !spec.optional) silenced = true;
+        continue;
+      }
       if (value === undefined && source?.outputs) {
         // The source worked but leaves this output empty in its current set-up (a kaleidoscope's
         // disk when it is not hyperbolic): an optional input is then simply unconnected.
@@ -179,6 +189,8 @@ function evaluateNode(
     }
   }
   if (hasErrors(diagnostics)) return { diagnostics };
+  if (muted) return { outputs: mutedOutputs(def, inputs), diagnostics, muted: true };
+  if (silenced) return { diagnostics, muted: true };
 
   const ctx: EvalContext = { nodeId, inputs, params: resolved.params, time };
   let outcome: ReturnType<NodeDef['evaluate']>;

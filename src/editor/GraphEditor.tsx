@@ -34,11 +34,17 @@ import { NodeView } from './NodeView.tsx';
 import { gridPosition } from './new-node.ts';
 import { Palette } from './Palette.tsx';
 import { addNodeChange, type PaletteState } from './palette-actions.ts';
+import { type FrameNode, FrameView, isFrameId } from './tools/FrameView.tsx';
+import { RerouteEdge } from './tools/RerouteEdge.tsx';
+import { insertVia } from './tools/reroute.ts';
+import { useFrames } from './tools/use-frames.ts';
 import { useFrameGraph } from './use-frame-graph.ts';
 import { useGraphKeys } from './use-graph-keys.ts';
 import { useRememberedFlag } from './use-remembered-flag.ts';
 
-const nodeTypes = { kf: NodeView };
+const nodeTypes = { kf: NodeView, frame: FrameView };
+const edgeTypes = { kf: RerouteEdge };
+type AnyNode = KfNode | FrameNode;
 
 interface Props {
   readonly evaluation: Evaluation;
@@ -90,7 +96,7 @@ export function GraphEditor({
       ),
     );
   }, [doc, evaluation, diagnostics, selection, hoveredNodeId]);
-  const edges = useMemo(() => toFlowEdges(doc, registry, selectedEdges), [doc, selectedEdges]);
+  const edges: Edge[] = useMemo(() => toFlowEdges(doc, registry, selectedEdges), [doc, selectedEdges]);
 
   // The fix maps handle moves with the evaluation current at the click, not the one at mount.
   const latestEvaluation = useRef(evaluation);
@@ -110,8 +116,13 @@ export function GraphEditor({
     [store, onHoverNode],
   );
 
+  const frames = useFrames(doc, store, setNodes);
+  const { onFrameChanges } = frames;
   const onNodesChange = useCallback(
-    (changes: NodeChange<KfNode>[]) => {
+    (all: NodeChange<AnyNode>[]) => {
+      const frameChanges = all.filter((c) => 'id' in c && isFrameId(c.id)) as NodeChange<FrameNode>[];
+      if (frameChanges.length > 0) onFrameChanges(frameChanges);
+      const changes = all.filter((c) => !('id' in c && isFrameId(c.id))) as NodeChange<KfNode>[];
       const kept = changes.filter((c) => c.type !== 'remove');
       setNodes((prev) => {
         const next = applyNodeChanges(kept, prev);
@@ -121,7 +132,7 @@ export function GraphEditor({
         return next;
       });
     },
-    [store],
+    [store, onFrameChanges],
   );
   const onEdgesChange = useCallback((changes: EdgeChange[]) => {
     setSelectedEdges((prev) => {
@@ -135,18 +146,32 @@ export function GraphEditor({
   }, []);
 
   const onDelete = useCallback(
-    ({ nodes: ns, edges: es }: { nodes: KfNode[]; edges: Edge[] }) => {
-      if (ns.length + es.length === 0) return;
+    ({ nodes: all, edges: es }: { nodes: AnyNode[]; edges: Edge[] }) => {
+      const ns = all.filter((n) => !isFrameId(n.id));
+      const frameIds = all.filter((n) => isFrameId(n.id)).map((n) => (n as FrameNode).data.frame.id);
+      if (all.length + es.length === 0) return;
+      const remove: Change = { type: 'remove', nodeIds: ns.map((n) => n.id), edgeIds: es.map((e) => e.id) };
       store.dispatch(
-        { type: 'remove', nodeIds: ns.map((n) => n.id), edgeIds: es.map((e) => e.id) },
+        frameIds.length > 0
+          ? { type: 'batch', changes: [remove, { type: 'remove-frames', frameIds }] }
+          : remove,
         'delete',
       );
     },
     [store],
   );
 
+  const { onFrameDrag, onFrameDragStop } = frames;
+  const onNodeDrag = useCallback(
+    (_e: unknown, node: AnyNode) => {
+      if (node.type === 'frame') onFrameDrag(node);
+    },
+    [onFrameDrag],
+  );
   const onNodeDragStop = useCallback(
-    (_e: unknown, _node: KfNode, dragged: KfNode[]) => {
+    (_e: unknown, node: AnyNode, all: AnyNode[]) => {
+      if (node.type === 'frame') return onFrameDragStop(node);
+      const dragged = all.filter((n): n is KfNode => n.type === 'kf');
       const current = store.getState().doc;
       const moves = dragged
         .map((n) => ({
@@ -159,7 +184,26 @@ export function GraphEditor({
         });
       if (moves.length > 0) store.dispatch({ type: 'move-nodes', moves }, 'move nodes');
     },
-    [store],
+    [store, onFrameDragStop],
+  );
+
+  /** Double-clicking a wire adds a reroute point there. */
+  const onEdgeDoubleClick = useCallback(
+    (e: React.MouseEvent, edge: Edge) => {
+      const current = store.getState().doc;
+      const stored = current.edges.find((x) => x.id === edge.id);
+      const internal = flow.getInternalNode(edge.source);
+      const internalTarget = flow.getInternalNode(edge.target);
+      if (!stored || !internal || !internalTarget) return;
+      e.stopPropagation();
+      const p = flow.screenToFlowPosition({ x: e.clientX, y: e.clientY });
+      const src = internal.internals.positionAbsolute;
+      const dst = internalTarget.internals.positionAbsolute;
+      const source = [src.x + (internal.measured.width ?? 0), src.y] as const;
+      const via = insertVia(source, stored.via ?? [], [dst.x, dst.y], gridPosition(p.x, p.y));
+      store.dispatch({ type: 'set-via', edgeId: edge.id, via }, 'add reroute point');
+    },
+    [store, flow],
   );
 
   const isValidConnection = useCallback(
@@ -222,6 +266,7 @@ export function GraphEditor({
   );
 
   useFrameGraph(frameKey, doc, nodes, wrapper);
+  const allNodes = useMemo<AnyNode[]>(() => [...frames.frameNodes, ...nodes], [frames.frameNodes, nodes]);
 
   const toggleInspector = useCallback(
     () => setInspectorOpen(!inspectorOpen),
@@ -254,10 +299,13 @@ export function GraphEditor({
             openPalette({ x: e.clientX, y: e.clientY });
         }}
       >
-        <ReactFlow<KfNode, Edge>
-          nodes={nodes}
+        <ReactFlow<AnyNode, Edge>
+          nodes={allNodes}
           edges={edges}
           nodeTypes={nodeTypes}
+          edgeTypes={edgeTypes}
+          onNodeDrag={onNodeDrag}
+          onEdgeDoubleClick={onEdgeDoubleClick}
           onNodesChange={onNodesChange}
           onEdgesChange={onEdgesChange}
           onDelete={onDelete}
@@ -282,7 +330,9 @@ export function GraphEditor({
             style={{ width: 150, height: 100 }}
             pannable
             zoomable
-            nodeColor={(n) => (n.data as KfNodeData).def?.color ?? '#e5484d'}
+            nodeColor={(n) =>
+              n.type === 'frame' ? 'transparent' : ((n.data as KfNodeData).def?.color ?? '#e5484d')
+            }
             nodeStrokeWidth={0}
             maskColor="rgba(12, 13, 16, 0.7)"
             ariaLabel="Graph overview"

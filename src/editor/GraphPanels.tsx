@@ -11,6 +11,7 @@ import { useEditorState, useStore } from '../state/use-store.ts';
 import type { KfNode } from './flow-model.ts';
 import { Inspector } from './Inspector.tsx';
 import { FIT_VIEW, sizer, tidyPositions } from './layout.ts';
+import { SelectionTools } from './tools/SelectionTools.tsx';
 
 interface Props {
   readonly nodes: readonly KfNode[];
@@ -70,6 +71,7 @@ export function GraphPanels({ nodes, evaluation, diagnostics, inspectorOpen, tog
         >
           Inspector
         </button>
+        <SelectionTools />
       </div>
       {inspectorOpen && !inspected && (
         <aside className="kf-inspector kf-inspector--empty" aria-label="Inspector">
@@ -83,6 +85,9 @@ export function GraphPanels({ nodes, evaluation, diagnostics, inspectorOpen, tog
           evaluation={evaluation.nodes.get(inspected.id)}
           diagnostics={diagnostics.get(inspected.id) ?? []}
           onLabel={(label) => store.dispatch({ type: 'set-label', nodeId: inspected.id, label }, 'rename')}
+          onMute={(muted) =>
+            store.dispatch({ type: 'set-muted', nodeIds: [inspected.id], muted }, muted ? 'mute' : 'unmute')
+          }
           onClose={toggleInspector}
         />
       )}

@@ -20,10 +20,12 @@ interface Props {
   readonly evaluation: NodeEvaluation | undefined;
   readonly diagnostics: readonly Diagnostic[];
   onLabel(label: string): void;
+  /** Mutes or unmutes the node (one undo step). */
+  onMute(muted: boolean): void;
   onClose(): void;
 }
 
-export function Inspector({ node, connected, evaluation, diagnostics, onLabel, onClose }: Props) {
+export function Inspector({ node, connected, evaluation, diagnostics, onLabel, onMute, onClose }: Props) {
   const { registry, editParam, runFix } = useEditorActions();
   const def = registry.get(node.type);
   const [label, setLabel] = useState(node.label ?? '');
@@ -41,6 +43,15 @@ export function Inspector({ node, connected, evaluation, diagnostics, onLabel, o
         <span className="kf-dot" style={{ background: def?.color ?? '#e5484d' }} />
         <h2>{def?.label ?? node.type}</h2>
         <code className="kf-inspector__id">{node.id}</code>
+        <button
+          type="button"
+          className={`kf-button${node.muted ? ' kf-button--active' : ''}`}
+          aria-pressed={node.muted === true}
+          title="Skip this node: its elements leave the picture (M)"
+          onClick={() => onMute(!node.muted)}
+        >
+          Mute node
+        </button>
         <button type="button" className="kf-icon-button" aria-label="Close inspector" onClick={onClose}>
           ×
         </button>

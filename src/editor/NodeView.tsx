@@ -139,7 +139,7 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
   const accent = def?.color ?? '#e5484d';
   return (
     <div
-      className={`kf-node${selected ? ' kf-node--selected' : ''}${data.hovered ? ' kf-node--hovered' : ''}${def ? '' : ' kf-node--unknown'}`}
+      className={`kf-node${selected ? ' kf-node--selected' : ''}${data.hovered ? ' kf-node--hovered' : ''}${def ? '' : ' kf-node--unknown'}${node.muted ? ' kf-node--muted' : ''}`}
       style={{ '--kf-accent': accent } as React.CSSProperties}
       onPointerEnter={() => setHoveredNode(id)}
       onPointerLeave={() => setHoveredNode(null)}
@@ -155,6 +155,11 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
           </>
         ) : (
           <span className="kf-node__title">{def?.label ?? `Unknown “${node.type}”`}</span>
+        )}
+        {node.muted && (
+          <span className="kf-node__muted" title="Muted: skipped (M unmutes)">
+            muted
+          </span>
         )}
         <DiagnosticBadge diagnostics={diagnostics} />
       </div>

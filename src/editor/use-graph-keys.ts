@@ -1,6 +1,6 @@
 /**
  * Keyboard of the graph editor: palette (Space, Ctrl K), clipboard (Ctrl C/X/V), duplicate
- * (Ctrl D), select all (Ctrl A) and the inspector (I). Undo/redo live in the app shell.
+ * (Ctrl D), select all (Ctrl A), the inspector (I) and mute (M). Undo/redo live in the app shell.
  */
 import type { Edge, ReactFlowInstance } from '@xyflow/react';
 import { type RefObject, useEffect } from 'react';
@@ -8,6 +8,7 @@ import { type ClipboardData, copyNodes, preparePaste } from '../state/clipboard.
 import type { EditorStore } from '../state/store.ts';
 import { lastCopied, putOnEvent, readClipboard, readEvent, writeClipboard } from './clipboard-io.ts';
 import type { KfNode } from './flow-model.ts';
+import { muteToggle } from './tools/mute.ts';
 import { isTyping } from './typing.ts';
 
 type Point = { x: number; y: number };
@@ -73,6 +74,11 @@ export function useGraphKeys(o: Options): void {
         store.setSelection(store.getState().doc.nodes.map((n) => n.id));
       } else if (!mod && !e.altKey && key === 'i') {
         toggleInspector();
+      } else if (!mod && !e.altKey && key === 'm') {
+        const { doc, selection } = store.getState();
+        const change = muteToggle(doc, selection);
+        if (!change) return;
+        store.dispatch(change, change.type === 'set-muted' && change.muted ? 'mute' : 'unmute');
       } else return;
       e.preventDefault();
     };

@@ -13,6 +13,7 @@ import { DEFAULT_TILE } from '../core/tile-spec.ts';
 import { type Analysis, analyzeGraph } from './analyze.ts';
 import type { GraphDoc, GraphNode } from './document.ts';
 import { nodeVersion, nodeVersionProblem } from './migrate.ts';
+import { flattenGroups, hasGroups } from './flatten.ts';
 import { mirrorDiagnostics } from './mirror-check.ts';
 import { mutedOutputs } from './mute.ts';
 import { checkNumber, resolveParams } from './params.ts';
@@ -33,6 +34,11 @@ export interface Evaluation {
   /** Every diagnostic: document structure first, then per node in evaluation order. */
   readonly diagnostics: readonly Diagnostic[];
   readonly analysis: Analysis;
+  /**
+   * Nodes that came out of groups, by their id in the flattened graph (the keys of `nodes` and the
+   * `nodeId` of diagnostics, overlays and handles): their path, group ids from the top (flatten.ts).
+   */
+  readonly origin: ReadonlyMap<string, readonly string[]>;
 }
 
 export interface EvaluateOptions {
@@ -56,11 +62,17 @@ export function allFinite(value: unknown, depth = 0): boolean {
   return true;
 }
 
+const NO_ORIGIN: ReadonlyMap<string, readonly string[]> = new Map();
+
 export function evaluateGraph(
-  doc: GraphDoc,
+  source: GraphDoc,
   registry: NodeRegistry,
   options: EvaluateOptions = {},
 ): Evaluation {
+  // Groups are inlined first: evaluation, the Scene and the shader only ever see a flat graph.
+  const flat = hasGroups(source) ? flattenGroups(source) : null;
+  const doc = flat?.doc ?? source;
+  const origin = flat?.origin ?? NO_ORIGIN;
   const analysis = analyzeGraph(doc, registry);
   const results = new Map<string, NodeEvaluation>();
   const overlays: OverlayItem[] = [];
@@ -123,7 +135,7 @@ export function evaluateGraph(
       // A check, not the picture: a geometry corner case here must never withhold the render.
     }
   }
-  return { scene, nodes: results, diagnostics, analysis };
+  return { scene, nodes: results, diagnostics, analysis, origin };
 }
 
 const NO_EDGES: ReadonlyMap<string, unknown> = new Map();

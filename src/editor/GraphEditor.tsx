@@ -24,7 +24,7 @@ import type { Evaluation } from '../../nodes/graph/evaluate.ts';
 import { registry } from '../../nodes/types/index.ts';
 import type { Change } from '../state/changes.ts';
 import { idAllocator } from '../state/ids.ts';
-import { useEditorState, useStore } from '../state/use-store.ts';
+import { StoreContext, useEditorState, useStore } from '../state/use-store.ts';
 import { checkConnection, portOfHandle } from './connection.ts';
 import { fixPatches } from './diagnostic-fix.ts';
 import { type EditorActions, EditorContext } from './editor-context.ts';
@@ -35,6 +35,8 @@ import { gridPosition } from './new-node.ts';
 import { Palette } from './Palette.tsx';
 import { addNodeChange, type PaletteState } from './palette-actions.ts';
 import { type FrameNode, FrameView, isFrameId } from './tools/FrameView.tsx';
+import { GroupBreadcrumb, type GroupScope, useGroupScope } from './tools/GroupScope.tsx';
+import { insertMyGroup, readMyGroups, type SavedGroup } from './tools/my-groups.ts';
 import { RerouteEdge } from './tools/RerouteEdge.tsx';
 import { insertVia } from './tools/reroute.ts';
 import { useFrames } from './tools/use-frames.ts';
@@ -58,14 +60,28 @@ interface Props {
   readonly inspectorTab?: boolean;
 }
 
-export function GraphEditor({
+/**
+ * The editor at one level of groups (docs/architecture.md "Groups"): the document, store and
+ * evaluation it sees are the open group's (tools/GroupScope.tsx), the top level when none is open.
+ */
+export function GraphEditor(props: Props) {
+  const scope = useGroupScope(props.evaluation, props.frameKey);
+  return (
+    <StoreContext.Provider value={scope.store}>
+      <GraphCanvas {...props} evaluation={scope.evaluation} frameKey={scope.frameKey} scope={scope} />
+    </StoreContext.Provider>
+  );
+}
+
+function GraphCanvas({
   evaluation,
   extraDiagnostics,
   hoveredNodeId,
   frameKey,
   onHoverNode,
   inspectorTab = false,
-}: Props) {
+  scope,
+}: Props & { readonly scope: GroupScope }) {
   const store = useStore();
   const doc = useEditorState((s) => s.doc);
   const selection = useEditorState((s) => s.selection);
@@ -99,8 +115,6 @@ export function GraphEditor({
   const edges: Edge[] = useMemo(() => toFlowEdges(doc, registry, selectedEdges), [doc, selectedEdges]);
 
   // The fix maps handle moves with the evaluation current at the click, not the one at mount.
-  const latestEvaluation = useRef(evaluation);
-  latestEvaluation.current = evaluation;
   const actions = useMemo<EditorActions>(
     () => ({
       registry,
@@ -110,10 +124,12 @@ export function GraphEditor({
         else store.preview(change);
       },
       setHoveredNode: onHoverNode,
+      // Fixes name nodes by their flattened ids: run on the whole document (routed into groups).
       runFix: (fix) =>
-        store.dispatch({ type: 'set-params', patches: fixPatches(latestEvaluation.current, fix) }, fix.label),
+        scope.base.dispatch({ type: 'set-params', patches: fixPatches(scope.full.current, fix) }, fix.label),
+      openGroup: scope.open,
     }),
-    [store, onHoverNode],
+    [store, onHoverNode, scope.base, scope.full, scope.open],
   );
 
   const frames = useFrames(doc, store, setNodes);
@@ -265,6 +281,17 @@ export function GraphEditor({
     [palette, store],
   );
 
+  const addSavedGroup = useCallback(
+    (saved: SavedGroup) => {
+      if (!palette) return;
+      const { change, nodeId } = insertMyGroup(store.getState().doc, saved, palette.flow);
+      store.dispatch(change, `add ${saved.name}`);
+      store.setSelection([nodeId]);
+      setPalette(null);
+    },
+    [palette, store],
+  );
+
   useFrameGraph(frameKey, doc, nodes, wrapper);
   const allNodes = useMemo<AnyNode[]>(() => [...frames.frameNodes, ...nodes], [frames.frameNodes, nodes]);
 
@@ -280,6 +307,7 @@ export function GraphEditor({
     paletteOpen: palette !== null,
     openPalette,
     toggleInspector,
+    openGroup: scope.open,
   });
 
   return (
@@ -305,6 +333,7 @@ export function GraphEditor({
           nodeTypes={nodeTypes}
           edgeTypes={edgeTypes}
           onNodeDrag={onNodeDrag}
+          onNodeDoubleClick={(_e, n) => n.type === 'kf' && n.data.node.group && scope.open(n.id)}
           onEdgeDoubleClick={onEdgeDoubleClick}
           onNodesChange={onNodesChange}
           onEdgesChange={onEdgesChange}
@@ -339,6 +368,7 @@ export function GraphEditor({
           />
           <Controls showInteractive={false} />
         </ReactFlow>
+        <GroupBreadcrumb scope={scope} />
         <GraphPanels
           nodes={nodes}
           evaluation={evaluation}
@@ -353,6 +383,8 @@ export function GraphEditor({
           at={palette.screen}
           filter={palette.filter}
           onPick={addFromPalette}
+          saved={readMyGroups()}
+          onPickSaved={addSavedGroup}
           onClose={() => setPalette(null)}
         />
       )}

@@ -9,8 +9,10 @@ import { isFieldShown } from '../../nodes/core/field-visibility.ts';
 import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
 import type { GraphNode } from '../../nodes/graph/document.ts';
 import type { NodeEvaluation } from '../../nodes/graph/evaluate.ts';
+import { nodeDef } from '../../nodes/graph/group-def.ts';
 import { useEditorActions } from './editor-context.ts';
 import { FixButton } from './FixButton.tsx';
+import { SaveGroup } from './tools/SaveGroup.tsx';
 import { hasInlineEditor } from './widgets/inline-editor.ts';
 import { InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
 
@@ -27,7 +29,7 @@ interface Props {
 
 export function Inspector({ node, connected, evaluation, diagnostics, onLabel, onMute, onClose }: Props) {
   const { registry, editParam, runFix } = useEditorActions();
-  const def = registry.get(node.type);
+  const def = nodeDef(registry, node);
   const [label, setLabel] = useState(node.label ?? '');
   useEffect(() => setLabel(node.label ?? ''), [node.label]);
   // Only the fields that matter in this set-up (and any with a problem of its own), as on the node.
@@ -70,6 +72,7 @@ export function Inspector({ node, connected, evaluation, diagnostics, onLabel, o
             onKeyDown={(e) => e.key === 'Enter' && (e.target as HTMLInputElement).blur()}
           />
         </label>
+        {node.group && <SaveGroup node={node} />}
         {inputs.length > 0 && <h3>Inputs</h3>}
         {def &&
           inputs.map(([port, spec]) => (

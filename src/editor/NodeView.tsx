@@ -83,7 +83,7 @@ function Port({
 }
 
 function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
-  const { editParam, setHoveredNode, runFix } = useEditorActions();
+  const { editParam, setHoveredNode, runFix, openGroup } = useEditorActions();
   const wire = useWireInProgress();
   const { node, def, connected, evaluation, diagnostics } = data;
   const portDiag = (port: string) => diagnostics.filter((d) => d.port === port);
@@ -178,6 +178,19 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
               />
             </div>
           ))}
+        {node.group && (
+          <div className="kf-row">
+            <button
+              type="button"
+              className="kf-button nodrag"
+              title="Edit the nodes inside (double-click or Enter)"
+              onClick={() => openGroup(id)}
+            >
+              Open group
+            </button>
+            <span className="kf-row__label">{node.group.nodes.length} nodes</span>
+          </div>
+        )}
         {fields?.main.map(fieldRow)}
         {fields && fields.more.length > 0 && (
           <MoreSection nodeId={id} count={fields.more.length}>

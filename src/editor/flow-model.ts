@@ -10,6 +10,7 @@ import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc, GraphNode } from '../../nodes/graph/document.ts';
 import type { NodeEvaluation } from '../../nodes/graph/evaluate.ts';
+import { nodeDef } from '../../nodes/graph/group-def.ts';
 import { inHandle, outHandle } from './connection.ts';
 import type { KfEdge } from './tools/RerouteEdge.tsx';
 
@@ -86,7 +87,7 @@ export function toFlowNodes(
     connected.set(e.to.node, set);
   }
   return doc.nodes.map((node) => {
-    const def = registry.get(node.type);
+    const def = nodeDef(registry, node);
     const prev = previous.get(node.id);
     const orphanPorts = def
       ? { inputs: [], outputs: [] }
@@ -123,7 +124,7 @@ export function toFlowEdges(
   registry: NodeRegistry,
   selectedEdges: ReadonlySet<string>,
 ): KfEdge[] {
-  const types = new Map(doc.nodes.map((n) => [n.id, registry.get(n.type)]));
+  const types = new Map(doc.nodes.map((n) => [n.id, nodeDef(registry, n)]));
   return doc.edges.map((e) => {
     const type = outputSpec(types.get(e.from.node), e.from.port)?.type;
     const color = type ? PORT_TYPE_INFO[type].color : '#888';

@@ -9,6 +9,10 @@ import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import { sameView } from '../../nodes/core/view.ts';
 import type { GraphDoc, GraphEdge, GraphFrame, GraphNode, PortRef } from '../../nodes/graph/document.ts';
+import { nodeDef } from '../../nodes/graph/group-def.ts';
+import { groupNodes, ungroupNode } from '../../nodes/graph/grouping.ts';
+import { applyInGroup, routeIntoGroups } from './group-changes.ts';
+import { idAllocator } from './ids.ts';
 
 export interface ParamPatch {
   readonly nodeId: string;
@@ -39,6 +43,12 @@ export type Change =
       readonly edgeId: string;
       readonly via: readonly (readonly [number, number])[];
     }
+  /** Replaces the nodes `nodeIds` by one group node `groupId` (nodes/graph/grouping.ts). */
+  | { readonly type: 'group'; readonly nodeIds: readonly string[]; readonly groupId: string }
+  /** Replaces a group node by its nodes and wires. */
+  | { readonly type: 'ungroup'; readonly nodeId: string }
+  /** `change` applied inside a group: `path` names the group ids from the top (an edit while a group is open). */
+  | { readonly type: 'in-group'; readonly path: readonly string[]; readonly change: Change }
   /** Several changes as one step (e.g. add a node and wire it). */
   | { readonly type: 'batch'; readonly changes: readonly Change[] };
 
@@ -47,7 +57,7 @@ const samePort = (a: PortRef, b: PortRef) => a.node === b.node && a.port === b.p
 /** Whether the input `to` takes many edges (unknown types/ports count as single). */
 export function inputTakesMany(doc: GraphDoc, registry: NodeRegistry, to: PortRef): boolean {
   const node = doc.nodes.find((n) => n.id === to.node);
-  const spec = node ? inputSpec(registry.get(node.type), to.port) : undefined;
+  const spec = node ? inputSpec(nodeDef(registry, node), to.port) : undefined;
   return spec ? PORT_TYPE_INFO[spec.type].many : false;
 }
 
@@ -55,7 +65,7 @@ export function inputTakesMany(doc: GraphDoc, registry: NodeRegistry, to: PortRe
 function hasPort(doc: GraphDoc, registry: NodeRegistry, ref: PortRef, side: 'inputs' | 'outputs'): boolean {
   const node = doc.nodes.find((n) => n.id === ref.node);
   if (!node) return false;
-  const def = registry.get(node.type);
+  const def = nodeDef(registry, node);
   return !def || portSpec(def, side, ref.port) !== undefined; // an unknown type's ports are unknown: its wires are kept
 }
 
@@ -115,6 +125,8 @@ export function applyChange(doc: GraphDoc, change: Change, registry: NodeRegistr
       });
     }
     case 'set-params': {
+      const routed = routeIntoGroups(doc, change.patches);
+      if (routed) return applyChange(doc, routed, registry);
       const patches = new Map<string, Record<string, unknown>>();
       for (const p of change.patches) patches.set(p.nodeId, { ...patches.get(p.nodeId), ...p.params });
       return mapNodes(doc, (n) => {
@@ -182,6 +194,12 @@ export function applyChange(doc: GraphDoc, change: Change, registry: NodeRegistr
       });
       return changed ? { ...doc, edges } : doc;
     }
+    case 'group':
+      return groupNodes(doc, change.nodeIds, change.groupId);
+    case 'ungroup':
+      return ungroupNode(doc, change.nodeId, idAllocator(doc));
+    case 'in-group':
+      return applyInGroup(doc, change.path, change.change, registry);
     case 'batch':
       return change.changes.reduce((d, c) => applyChange(d, c, registry), doc);
   }

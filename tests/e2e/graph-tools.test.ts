@@ -6,7 +6,15 @@
 import type { BrowserContext, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { type ServedApp, serveApp } from './app-server.ts';
-import { nodeCount, nodeEl, type PixelStats, renderPixels, thumbDiff, waitRendered } from './editor-page.ts';
+import {
+  emptyCanvasPoint,
+  nodeCount,
+  nodeEl,
+  type PixelStats,
+  renderPixels,
+  thumbDiff,
+  waitRendered,
+} from './editor-page.ts';
 
 let app: ServedApp;
 let context: BrowserContext;
@@ -26,9 +34,20 @@ afterAll(async () => {
 });
 
 const byType = (type: string) => page.locator(`.react-flow__node:has([data-node-type="${type}"])`).first();
+/** The picture once it has all its samples and stopped changing (a re-render may not have begun yet). */
 async function picture(): Promise<PixelStats> {
-  await waitRendered(page);
-  return renderPixels(page);
+  // Off every node: a hovered node's construction is highlighted in the picture.
+  const free = await emptyCanvasPoint(page);
+  await page.mouse.move(free.x, free.y);
+  let last: PixelStats | null = null;
+  for (let i = 0; i < 20; i++) {
+    await waitRendered(page);
+    const now = await renderPixels(page);
+    if (last && thumbDiff(last, now) < 0.5) return now;
+    last = now;
+    await page.waitForTimeout(250);
+  }
+  throw new Error('the picture never settled');
 }
 /** Selects one node by clicking its header (the graph keys then act on it). */
 async function select(id: string, add = false) {
@@ -94,6 +113,49 @@ describe('graph tools', () => {
     }
     await page.keyboard.press('Control+z');
     await expect.poll(async () => (await center(nodeEl(page, ids[0]))).x).toBeCloseTo(before[0].x, 0);
+    expect(problems).toEqual([]);
+  });
+
+  it('Ctrl+G groups two nodes (same picture), the group opens, the breadcrumb leads out, Ctrl+Shift+G ungroups', async () => {
+    // The frame from the previous test is undone; start from the example's nodes.
+    const kaleido = (await byType('kaleidoscope').getAttribute('data-id'))!;
+    const tile = (await byType('tile').getAttribute('data-id'))!;
+    const before = await picture();
+    const count = await page.locator('.react-flow__node-kf').count();
+    await select(kaleido);
+    await select(tile, true);
+    await page.keyboard.press('Control+g');
+    await expect.poll(() => page.locator('.react-flow__node-kf').count()).toBe(count - 1);
+    await expect.poll(() => nodeEl(page, kaleido).count()).toBe(0);
+    const group = page.locator('.react-flow__node:has([data-node-type="group"])');
+    await expect.poll(() => group.count()).toBe(1);
+    expect(thumbDiff(before, await picture())).toBeLessThan(2);
+
+    // A fresh session (the autosave) reopens the grouped document.
+    const other = await context.newPage();
+    await other.goto(app.url);
+    await expect
+      .poll(() => other.locator('.react-flow__node:has([data-node-type="group"])').count(), {
+        timeout: 20_000,
+      })
+      .toBe(1);
+    await other.close();
+
+    await group.getByRole('button', { name: 'Open group' }).click();
+    const crumbs = page.getByRole('navigation', { name: 'Open group' });
+    await crumbs.waitFor();
+    await expect.poll(() => page.locator('.react-flow__node-kf').count()).toBe(2);
+    expect(await nodeEl(page, kaleido).count()).toBe(1);
+    await crumbs.getByRole('button', { name: 'Graph' }).click();
+    await crumbs.waitFor({ state: 'detached' });
+    await expect.poll(() => page.locator('.react-flow__node-kf').count()).toBe(count - 1);
+
+    await select((await group.getAttribute('data-id'))!);
+    await page.keyboard.press('Control+Shift+g');
+    await expect.poll(() => page.locator('.react-flow__node-kf').count()).toBe(count);
+    expect(await nodeEl(page, kaleido).count()).toBe(1);
+    expect(await nodeEl(page, tile).count()).toBe(1);
+    expect(thumbDiff(before, await picture())).toBeLessThan(2);
     expect(problems).toEqual([]);
   });
 });

@@ -1,8 +1,10 @@
 /**
- * Toolbar buttons that act on the selected nodes: Mute (M), Frame. Each is one undo step.
+ * Toolbar buttons that act on the selected nodes: Mute (M), Frame, Group (Ctrl+G), Ungroup
+ * (Ctrl+Shift+G). Each is one undo step.
  */
 import { useEditorState, useStore } from '../../state/use-store.ts';
 import { frameAround } from './frames.ts';
+import { groupSelection, ungroupSelection } from './group-actions.ts';
 import { allMuted, muteToggle } from './mute.ts';
 
 export function SelectionTools() {
@@ -11,6 +13,7 @@ export function SelectionTools() {
   const selection = useEditorState((s) => s.selection);
   const some = doc.nodes.some((n) => selection.has(n.id));
   const muted = allMuted(doc, selection);
+  const groups = doc.nodes.some((n) => selection.has(n.id) && n.group);
   const run = (label: string, make: () => ReturnType<typeof muteToggle>) => {
     const change = make();
     if (change) store.dispatch(change, label);
@@ -35,6 +38,28 @@ export function SelectionTools() {
         onClick={() => run('add frame', () => frameAround(doc, selection))}
       >
         Frame
+      </button>
+      <button
+        type="button"
+        className="kf-button"
+        disabled={!some}
+        title="Make the selected nodes one group node; wires crossing the selection become its ports (Ctrl+G)"
+        onClick={() => {
+          const change = groupSelection(doc, selection);
+          run('group', () => change);
+          if (change) store.setSelection([change.groupId]);
+        }}
+      >
+        Group
+      </button>
+      <button
+        type="button"
+        className="kf-button"
+        disabled={!groups}
+        title="Put the selected groups' nodes back in the graph (Ctrl+Shift+G)"
+        onClick={() => run('ungroup', () => ungroupSelection(doc, selection))}
+      >
+        Ungroup
       </button>
     </>
   );

@@ -199,7 +199,7 @@ export function applyChange(doc: GraphDoc, change: Change, registry: NodeRegistr
     case 'ungroup':
       return ungroupNode(doc, change.nodeId, idAllocator(doc));
     case 'in-group':
-      return applyInGroup(doc, change.path, change.change, registry);
+      return applyInGroup(doc, change.path, change.change, (d, c) => applyChange(d, c, registry));
     case 'batch':
       return change.changes.reduce((d, c) => applyChange(d, c, registry), doc);
   }

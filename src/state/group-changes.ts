@@ -3,10 +3,18 @@
  * it were a document, and param patches addressed to nodes inside groups by their flattened id
  * (what the render's handle drags and the diagnostics' fixes name) routed to where they live.
  */
-import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc, GroupBody } from '../../nodes/graph/document.ts';
 import { flattenGroups, hasGroups } from '../../nodes/graph/flatten.ts';
-import { applyChange, type Change, type ParamPatch } from './changes.ts';
+
+// Structural types (not changes.ts's, which imports this file): they are assignable to its Change.
+interface Patch {
+  readonly nodeId: string;
+  readonly params: Readonly<Record<string, unknown>>;
+}
+type SetParams = { readonly type: 'set-params'; readonly patches: readonly Patch[] };
+type Routed =
+  | SetParams
+  | { readonly type: 'in-group'; readonly path: readonly string[]; readonly change: SetParams };
 
 /** The subgraph of the group at `path` as a document (frames stay at the top level), or null. */
 export function scopeDocument(doc: GraphDoc, path: readonly string[]): GraphDoc | null {
@@ -34,20 +42,21 @@ function pruneBody(body: GroupBody): GroupBody {
   return same ? body : { ...body, inputs, outputs };
 }
 
-export function applyInGroup(
+/** `change` applied (by `apply`, changes.ts's applyChange) to the subgraph of the group at `path`. */
+export function applyInGroup<C>(
   doc: GraphDoc,
   path: readonly string[],
-  change: Change,
-  registry: NodeRegistry,
+  change: C,
+  apply: (doc: GraphDoc, change: C) => GraphDoc,
 ): GraphDoc {
   const [head, ...rest] = path;
-  if (head === undefined) return applyChange(doc, change, registry);
+  if (head === undefined) return apply(doc, change);
   const at = doc.nodes.findIndex((n) => n.id === head);
   const group = doc.nodes[at];
   if (!group?.group) return doc;
   const { frames: _top, ...base } = doc;
   const inner: GraphDoc = { ...base, nodes: group.group.nodes, edges: group.group.edges };
-  const next = applyInGroup(inner, rest, change, registry);
+  const next = applyInGroup(inner, rest, change, apply);
   if (next === inner) return doc;
   const body = pruneBody({ ...group.group, nodes: next.nodes, edges: next.edges });
   const ports = new Set([...body.inputs, ...body.outputs].map((p) => p.name));
@@ -64,12 +73,15 @@ export function applyInGroup(
  * Patches naming nodes that are not at the top level but inside groups (by flattened id) as one
  * batch of `in-group` changes; null when every patch names a top-level node (the usual case).
  */
-export function routeIntoGroups(doc: GraphDoc, patches: readonly ParamPatch[]): Change | null {
+export function routeIntoGroups(
+  doc: GraphDoc,
+  patches: readonly Patch[],
+): { readonly type: 'batch'; readonly changes: readonly Routed[] } | null {
   if (!hasGroups(doc)) return null;
   const top = new Set(doc.nodes.map((n) => n.id));
   if (patches.every((p) => top.has(p.nodeId))) return null;
   const { origin } = flattenGroups(doc);
-  const changes: Change[] = [];
+  const changes: Routed[] = [];
   for (const p of patches) {
     const path = origin.get(p.nodeId);
     if (top.has(p.nodeId)) {
@@ -77,7 +89,7 @@ export function routeIntoGroups(doc: GraphDoc, patches: readonly ParamPatch[]): 
       continue;
     }
     if (!path) continue; // a node that is nowhere: nothing to patch (as at the top level)
-    const inner: Change = { type: 'set-params', patches: [{ ...p, nodeId: path[path.length - 1] }] };
+    const inner: SetParams = { type: 'set-params', patches: [{ ...p, nodeId: path[path.length - 1] }] };
     changes.push({ type: 'in-group', path: path.slice(0, -1), change: inner });
   }
   return { type: 'batch', changes };

@@ -7,7 +7,10 @@ import { z } from 'zod';
 import { DEFAULT_VIEW, type View } from '../core/view.ts';
 
 export const FORMAT = 'kleinflow';
-/** Current document version. Older versions migrate forward in migrate.ts. */
+/**
+ * Current document version. Older versions migrate forward in migrate.ts. The graph tools' fields
+ * (muted, group, frames, via) are optional additions of version 1 (docs/architecture.md "Groups").
+ */
 export const DOC_VERSION = 1;
 
 const finite = z.number().finite();

@@ -147,6 +147,12 @@ export const DIAGNOSTICS = table({
     severity: 'warning',
     text: (n: number, max: number) => `${n} seeds are wired; only the first ${max} are drawn`,
   },
+  inputMuted: {
+    code: 'KF313',
+    severity: 'info',
+    text: (port: string, node: string) =>
+      `input "${port}" is muted: node "${node}" is muted (or fed by a muted node) and passes nothing on`,
+  },
   tooManyElements: {
     code: 'KF401',
     severity: 'error',

@@ -7,7 +7,10 @@ import { z } from 'zod';
 import { DEFAULT_VIEW, type View } from '../core/view.ts';
 
 export const FORMAT = 'kleinflow';
-/** Current document version. Older versions migrate forward in migrate.ts. */
+/**
+ * Current document version. Older versions migrate forward in migrate.ts. The graph tools' fields
+ * (muted, group, frames, via) are optional additions of version 1 (docs/architecture.md "Groups").
+ */
 export const DOC_VERSION = 1;
 
 const finite = z.number().finite();
@@ -16,6 +19,38 @@ const id = z.string().min(1, 'expected a non-empty id').max(200, 'ids are at mos
 
 export const portRefSchema = z.strictObject({ node: id, port: z.string().min(1).max(200) });
 
+const portName = z.string().min(1).max(200);
+
+/**
+ * A reroute point is a dot on a wire: `via` lists the points (graph coordinates) the wire passes
+ * through, in order from source to target. Drawing only: evaluation ignores it.
+ */
+export const edgeSchema = z.strictObject({
+  id,
+  from: portRefSchema,
+  to: portRefSchema,
+  via: z.array(vec2).max(100).optional(),
+});
+
+/** A group's exposed input: one port of the group node, wired inside to every target. */
+export const groupInputSchema = z.strictObject({
+  name: portName,
+  label: z.string().max(200).optional(),
+  targets: z.array(portRefSchema).min(1).max(1000),
+});
+
+/** A group's exposed output: one port of the group node, the value of an inner node's output. */
+export const groupOutputSchema = z.strictObject({
+  name: portName,
+  label: z.string().max(200).optional(),
+  from: portRefSchema,
+});
+
+/**
+ * A node: a node type with its params, or (type "group") a subgraph of its own nodes and edges
+ * with exposed inputs and outputs (docs/architecture.md "Groups"). Inner ids are scoped to the
+ * group. `muted` skips the node (docs/architecture.md "Muted nodes").
+ */
 export const nodeSchema = z.strictObject({
   id,
   type: z.string().min(1).max(200),
@@ -24,9 +59,29 @@ export const nodeSchema = z.strictObject({
   position: vec2,
   params: z.record(z.string(), z.unknown()),
   label: z.string().max(200).optional(),
+  muted: z.boolean().optional(),
+  get group() {
+    return groupBodySchema.optional();
+  },
 });
 
-export const edgeSchema = z.strictObject({ id, from: portRefSchema, to: portRefSchema });
+export const groupBodySchema = z.strictObject({
+  get nodes() {
+    return z.array(nodeSchema);
+  },
+  edges: z.array(edgeSchema),
+  inputs: z.array(groupInputSchema),
+  outputs: z.array(groupOutputSchema),
+});
+
+/** A frame: a titled, coloured backdrop; dragging it moves the nodes inside it. Drawing only. */
+export const frameSchema = z.strictObject({
+  id,
+  title: z.string().max(200),
+  color: z.string().regex(/^#[0-9a-fA-F]{6}$/, 'expected a colour "#rrggbb"'),
+  position: vec2,
+  size: z.tuple([finite.positive(), finite.positive()]),
+});
 
 /** A View (nodes/core/view.ts) as stored in a document. */
 export const viewSchema = z.strictObject({
@@ -62,12 +117,15 @@ export const docSchema = z.strictObject({
   nodes: z.array(nodeSchema),
   edges: z.array(edgeSchema),
   view: viewSchema,
+  frames: z.array(frameSchema).max(1000).optional(),
 });
 
 export type GraphDoc = z.infer<typeof docSchema>;
 export type GraphNode = z.infer<typeof nodeSchema>;
 export type GraphEdge = z.infer<typeof edgeSchema>;
 export type PortRef = z.infer<typeof portRefSchema>;
+export type GroupBody = z.infer<typeof groupBodySchema>;
+export type GraphFrame = z.infer<typeof frameSchema>;
 
 /** A new document's view: a fresh copy of DEFAULT_VIEW (documents are plain mutable JSON). */
 export const newDocumentView = (): GraphDoc['view'] => ({

@@ -11,9 +11,11 @@ import type { NodeRegistry } from '../core/registry.ts';
 import { EMPTY_SCENE_DEFAULTS, type Scene } from '../core/scene.ts';
 import { DEFAULT_TILE } from '../core/tile-spec.ts';
 import { type Analysis, analyzeGraph } from './analyze.ts';
-import type { GraphDoc } from './document.ts';
+import type { GraphDoc, GraphNode } from './document.ts';
 import { nodeVersion, nodeVersionProblem } from './migrate.ts';
+import { flattenGroups, hasGroups } from './flatten.ts';
 import { mirrorDiagnostics } from './mirror-check.ts';
+import { mutedOutputs } from './mute.ts';
 import { checkNumber, resolveParams } from './params.ts';
 
 export interface NodeEvaluation {
@@ -22,6 +24,8 @@ export interface NodeEvaluation {
   readonly diagnostics: readonly Diagnostic[];
   /** The context evaluate ran with (the editor uses it to map handle drags back to params). */
   readonly ctx?: EvalContext;
+  /** The node is muted, or quiet because a required input comes from a muted node (mute.ts). */
+  readonly muted?: boolean;
 }
 
 export interface Evaluation {
@@ -30,6 +34,11 @@ export interface Evaluation {
   /** Every diagnostic: document structure first, then per node in evaluation order. */
   readonly diagnostics: readonly Diagnostic[];
   readonly analysis: Analysis;
+  /**
+   * Nodes that came out of groups, by their id in the flattened graph (the keys of `nodes` and the
+   * `nodeId` of diagnostics, overlays and handles): their path, group ids from the top (flatten.ts).
+   */
+  readonly origin: ReadonlyMap<string, readonly string[]>;
 }
 
 export interface EvaluateOptions {
@@ -53,11 +62,17 @@ export function allFinite(value: unknown, depth = 0): boolean {
   return true;
 }
 
+const NO_ORIGIN: ReadonlyMap<string, readonly string[]> = new Map();
+
 export function evaluateGraph(
-  doc: GraphDoc,
+  source: GraphDoc,
   registry: NodeRegistry,
   options: EvaluateOptions = {},
 ): Evaluation {
+  // Groups are inlined first: evaluation, the Scene and the shader only ever see a flat graph.
+  const flat = hasGroups(source) ? flattenGroups(source) : null;
+  const doc = flat?.doc ?? source;
+  const origin = flat?.origin ?? NO_ORIGIN;
   const analysis = analyzeGraph(doc, registry);
   const results = new Map<string, NodeEvaluation>();
   const overlays: OverlayItem[] = [];
@@ -79,7 +94,7 @@ export function evaluateGraph(
       results.set(id, { diagnostics: [problem] });
       continue;
     }
-    const result = evaluateNode(def, node.id, index, node.params, analysis, results, time);
+    const result = evaluateNode(def, node, index, analysis, results, time);
     results.set(id, result);
     if (!result.ctx) continue;
     if (result.render) renders.push({ id, settings: result.render });
@@ -120,16 +135,15 @@ export function evaluateGraph(
       // A check, not the picture: a geometry corner case here must never withhold the render.
     }
   }
-  return { scene, nodes: results, diagnostics, analysis };
+  return { scene, nodes: results, diagnostics, analysis, origin };
 }
 
 const NO_EDGES: ReadonlyMap<string, unknown> = new Map();
 
 function evaluateNode(
   def: NodeDef,
-  nodeId: string,
+  { id: nodeId, params: rawParams, muted }: GraphNode,
   index: number,
-  rawParams: Record<string, unknown>,
   analysis: Analysis,
   results: ReadonlyMap<string, NodeEvaluation>,
   time: number,
@@ -141,6 +155,7 @@ function evaluateNode(
   ]);
   const diagnostics: Diagnostic[] = [...resolved.diagnostics];
   const inputs: Record<string, unknown> = { ...resolved.inline };
+  let silenced = false;
 
   for (const [port, spec] of Object.entries(def.inputs)) {
     const edges = edgesByPort?.get(port);
@@ -153,6 +168,13 @@ function evaluateNode(
     for (const edge of orderBySource(edges, analysis)) {
       const source = results.get(edge.from.node);
       const value = ownEntry(source?.outputs, edge.from.port);
+      if (value === undefined && source?.muted) {
+        // A muted source that passes nothing here: a quiet note, and the node itself goes quiet
+        // unless the input may be empty — no error cascade (docs/architecture.md "Muted nodes").
+        diagnostics.push(diag('inputMuted', { nodeId, port }, port, edge.from.node));
+        if (!many && !spec.optional) silenced = true;
+        continue;
+      }
       if (value === undefined && source?.outputs) {
         // The source worked but leaves this output empty in its current set-up (a kaleidoscope's
         // disk when it is not hyperbolic): an optional input is then simply unconnected.
@@ -179,6 +201,8 @@ function evaluateNode(
     }
   }
   if (hasErrors(diagnostics)) return { diagnostics };
+  if (muted) return { outputs: mutedOutputs(def, inputs), diagnostics, muted: true };
+  if (silenced) return { diagnostics, muted: true };
 
   const ctx: EvalContext = { nodeId, inputs, params: resolved.params, time };
   let outcome: ReturnType<NodeDef['evaluate']>;

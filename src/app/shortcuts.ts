@@ -19,6 +19,11 @@ export const SHORTCUTS: readonly { group: string; items: readonly Shortcut[] }[]
       { keys: ['I'], action: 'Show or hide the inspector' },
       { keys: ['←', '→'], action: 'Resize the inspector (its edge focused; Shift: faster)' },
       { keys: ['Esc'], action: 'Close the inspector (focus in it)' },
+      { keys: ['M'], action: 'Mute or unmute the selection (skipped; greyed)' },
+      { keys: ['Ctrl G'], action: 'Group the selection into one node' },
+      { keys: ['Ctrl Shift G'], action: 'Ungroup the selected groups' },
+      { keys: ['Enter', 'Double-click a group'], action: 'Open the group (the breadcrumb leads back out)' },
+      { keys: ['Double-click a wire'], action: 'Add a reroute point (double-click the dot to remove it)' },
     ],
   },
   {

@@ -21,7 +21,7 @@ import type { Evaluation } from '../../nodes/graph/evaluate.ts';
 import { registry } from '../../nodes/types/index.ts';
 import type { Change } from '../state/changes.ts';
 import { idAllocator } from '../state/ids.ts';
-import { useEditorState, useStore } from '../state/use-store.ts';
+import { StoreContext, useEditorState, useStore } from '../state/use-store.ts';
 import { checkConnection, portOfHandle } from './connection.ts';
 import { fixPatches } from './diagnostic-fix.ts';
 import { type EditorActions, EditorContext } from './editor-context.ts';
@@ -32,12 +32,20 @@ import { useKeepInView } from './keep-in-view.ts';
 import { NodeView } from './NodeView.tsx';
 import { gridPosition } from './new-node.ts';
 import { Palette } from './Palette.tsx';
+import { type FrameNode, FrameView, isFrameId } from './tools/FrameView.tsx';
+import { GroupBreadcrumb, type GroupScope, useGroupScope } from './tools/GroupScope.tsx';
+import { insertMyGroup, readMyGroups, type SavedGroup } from './tools/my-groups.ts';
+import { RerouteEdge } from './tools/RerouteEdge.tsx';
+import { insertVia } from './tools/reroute.ts';
+import { useFrames } from './tools/use-frames.ts';
 import { useFrameGraph } from './use-frame-graph.ts';
 import { useGraphKeys } from './use-graph-keys.ts';
 import { usePalette } from './use-palette.ts';
 import { useRememberedFlag } from './use-remembered-flag.ts';
 
-const nodeTypes = { kf: NodeView };
+const nodeTypes = { kf: NodeView, frame: FrameView };
+const edgeTypes = { kf: RerouteEdge };
+type AnyNode = KfNode | FrameNode;
 
 interface Props {
   readonly evaluation: Evaluation;
@@ -51,14 +59,28 @@ interface Props {
   readonly inspectorTab?: boolean;
 }
 
-export function GraphEditor({
+/**
+ * The editor at one level of groups (docs/architecture.md "Groups"): the document, store and
+ * evaluation it sees are the open group's (tools/GroupScope.tsx), the top level when none is open.
+ */
+export function GraphEditor(props: Props) {
+  const scope = useGroupScope(props.evaluation, props.frameKey);
+  return (
+    <StoreContext.Provider value={scope.store}>
+      <GraphCanvas {...props} evaluation={scope.evaluation} frameKey={scope.frameKey} scope={scope} />
+    </StoreContext.Provider>
+  );
+}
+
+function GraphCanvas({
   evaluation,
   extraDiagnostics,
   hoveredNodeId,
   frameKey,
   onHoverNode,
   inspectorTab = false,
-}: Props) {
+  scope,
+}: Props & { readonly scope: GroupScope }) {
   const store = useStore();
   const doc = useEditorState((s) => s.doc);
   const selection = useEditorState((s) => s.selection);
@@ -89,11 +111,9 @@ export function GraphEditor({
       ),
     );
   }, [doc, evaluation, diagnostics, selection, hoveredNodeId]);
-  const edges = useMemo(() => toFlowEdges(doc, registry, selectedEdges), [doc, selectedEdges]);
+  const edges: Edge[] = useMemo(() => toFlowEdges(doc, registry, selectedEdges), [doc, selectedEdges]);
 
   // The fix maps handle moves with the evaluation current at the click, not the one at mount.
-  const latestEvaluation = useRef(evaluation);
-  latestEvaluation.current = evaluation;
   const actions = useMemo<EditorActions>(
     () => ({
       registry,
@@ -103,14 +123,22 @@ export function GraphEditor({
         else store.preview(change);
       },
       setHoveredNode: onHoverNode,
+      // Fixes name nodes by their flattened ids: run on the whole document (routed into groups).
       runFix: (fix) =>
-        store.dispatch({ type: 'set-params', patches: fixPatches(latestEvaluation.current, fix) }, fix.label),
+        scope.base.dispatch({ type: 'set-params', patches: fixPatches(scope.full.current, fix) }, fix.label),
+      openGroup: scope.open,
     }),
-    [store, onHoverNode],
+    [store, onHoverNode, scope.base, scope.full, scope.open],
   );
 
+  const frames = useFrames(doc, store, setNodes);
+  const { onFrameChanges } = frames;
+
   const onNodesChange = useCallback(
-    (changes: NodeChange<KfNode>[]) => {
+    (all: NodeChange<AnyNode>[]) => {
+      const frameChanges = all.filter((c) => 'id' in c && isFrameId(c.id)) as NodeChange<FrameNode>[];
+      if (frameChanges.length > 0) onFrameChanges(frameChanges);
+      const changes = all.filter((c) => !('id' in c && isFrameId(c.id))) as NodeChange<KfNode>[];
       const kept = changes.filter((c) => c.type !== 'remove');
       setNodes((prev) => {
         const next = applyNodeChanges(kept, prev);
@@ -120,7 +148,7 @@ export function GraphEditor({
         return next;
       });
     },
-    [store],
+    [store, onFrameChanges],
   );
   const onEdgesChange = useCallback((changes: EdgeChange[]) => {
     setSelectedEdges((prev) => {
@@ -134,18 +162,32 @@ export function GraphEditor({
   }, []);
 
   const onDelete = useCallback(
-    ({ nodes: ns, edges: es }: { nodes: KfNode[]; edges: Edge[] }) => {
-      if (ns.length + es.length === 0) return;
+    ({ nodes: all, edges: es }: { nodes: AnyNode[]; edges: Edge[] }) => {
+      const ns = all.filter((n) => !isFrameId(n.id));
+      const frameIds = all.filter((n) => isFrameId(n.id)).map((n) => (n as FrameNode).data.frame.id);
+      if (all.length + es.length === 0) return;
+      const remove: Change = { type: 'remove', nodeIds: ns.map((n) => n.id), edgeIds: es.map((e) => e.id) };
       store.dispatch(
-        { type: 'remove', nodeIds: ns.map((n) => n.id), edgeIds: es.map((e) => e.id) },
+        frameIds.length > 0
+          ? { type: 'batch', changes: [remove, { type: 'remove-frames', frameIds }] }
+          : remove,
         'delete',
       );
     },
     [store],
   );
 
+  const { onFrameDrag, onFrameDragStop } = frames;
+  const onNodeDrag = useCallback(
+    (_e: unknown, node: AnyNode) => {
+      if (node.type === 'frame') onFrameDrag(node);
+    },
+    [onFrameDrag],
+  );
   const onNodeDragStop = useCallback(
-    (_e: unknown, _node: KfNode, dragged: KfNode[]) => {
+    (_e: unknown, node: AnyNode, all: AnyNode[]) => {
+      if (node.type === 'frame') return onFrameDragStop(node);
+      const dragged = all.filter((n): n is KfNode => n.type === 'kf');
       const current = store.getState().doc;
       const moves = dragged
         .map((n) => ({
@@ -158,7 +200,26 @@ export function GraphEditor({
         });
       if (moves.length > 0) store.dispatch({ type: 'move-nodes', moves }, 'move nodes');
     },
-    [store],
+    [store, onFrameDragStop],
+  );
+
+  /** Double-clicking a wire adds a reroute point there. */
+  const onEdgeDoubleClick = useCallback(
+    (e: React.MouseEvent, edge: Edge) => {
+      const current = store.getState().doc;
+      const stored = current.edges.find((x) => x.id === edge.id);
+      const internal = flow.getInternalNode(edge.source);
+      const internalTarget = flow.getInternalNode(edge.target);
+      if (!stored || !internal || !internalTarget) return;
+      e.stopPropagation();
+      const p = flow.screenToFlowPosition({ x: e.clientX, y: e.clientY });
+      const src = internal.internals.positionAbsolute;
+      const dst = internalTarget.internals.positionAbsolute;
+      const source = [src.x + (internal.measured.width ?? 0), src.y] as const;
+      const via = insertVia(source, stored.via ?? [], [dst.x, dst.y], gridPosition(p.x, p.y));
+      store.dispatch({ type: 'set-via', edgeId: edge.id, via }, 'add reroute point');
+    },
+    [store, flow],
   );
 
   const isValidConnection = useCallback(
@@ -188,7 +249,20 @@ export function GraphEditor({
     addFromPalette,
     closePalette,
   } = usePalette(wrapper);
+
+  const addSavedGroup = useCallback(
+    (saved: SavedGroup) => {
+      if (!palette) return;
+      const { change, nodeId } = insertMyGroup(store.getState().doc, saved, palette.flow);
+      store.dispatch(change, `add ${saved.name}`);
+      store.setSelection([nodeId]);
+      closePalette();
+    },
+    [palette, store, closePalette],
+  );
+
   useFrameGraph(frameKey, doc, nodes, wrapper);
+  const allNodes = useMemo<AnyNode[]>(() => [...frames.frameNodes, ...nodes], [frames.frameNodes, nodes]);
 
   const toggleInspector = useCallback(
     () => setInspectorOpen(!inspectorOpen),
@@ -201,6 +275,7 @@ export function GraphEditor({
     paletteOpen: palette !== null,
     openPalette: openPaletteAt,
     toggleInspector,
+    openGroup: scope.open,
   });
 
   const inspected = selection.size === 1 ? doc.nodes.find((n) => selection.has(n.id)) : undefined;
@@ -233,10 +308,14 @@ export function GraphEditor({
                 openPalette({ x: e.clientX, y: e.clientY });
             }}
           >
-            <ReactFlow<KfNode, Edge>
-              nodes={nodes}
+            <ReactFlow<AnyNode, Edge>
+              nodes={allNodes}
               edges={edges}
               nodeTypes={nodeTypes}
+              edgeTypes={edgeTypes}
+              onNodeDrag={onNodeDrag}
+              onNodeDoubleClick={(_e, n) => n.type === 'kf' && n.data.node.group && scope.open(n.id)}
+              onEdgeDoubleClick={onEdgeDoubleClick}
               onNodesChange={onNodesChange}
               onEdgesChange={onEdgesChange}
               onDelete={onDelete}
@@ -261,13 +340,16 @@ export function GraphEditor({
                 style={{ width: 150, height: 100 }}
                 pannable
                 zoomable
-                nodeColor={(n) => (n.data as KfNodeData).def?.color ?? '#e5484d'}
+                nodeColor={(n) =>
+                  n.type === 'frame' ? 'transparent' : ((n.data as KfNodeData).def?.color ?? '#e5484d')
+                }
                 nodeStrokeWidth={0}
                 maskColor="rgba(12, 13, 16, 0.7)"
                 ariaLabel="Graph overview"
               />
               <Controls showInteractive={false} />
             </ReactFlow>
+            <GroupBreadcrumb scope={scope} />
             {doc.nodes.length === 0 && (
               <div className="kf-empty-hint">
                 <p>
@@ -287,6 +369,13 @@ export function GraphEditor({
               onLabel={(label) =>
                 inspected && store.dispatch({ type: 'set-label', nodeId: inspected.id, label }, 'rename')
               }
+              onMute={(muted) =>
+                inspected &&
+                store.dispatch(
+                  { type: 'set-muted', nodeIds: [inspected.id], muted },
+                  muted ? 'mute' : 'unmute',
+                )
+              }
               onClose={(fromKeyboard) => {
                 toggleInspector();
                 // The panel and its focused control are gone: keep the keyboard user on its toggle.
@@ -302,6 +391,8 @@ export function GraphEditor({
           at={palette.screen}
           filter={palette.filter}
           onPick={addFromPalette}
+          saved={readMyGroups()}
+          onPickSaved={addSavedGroup}
           onClose={closePalette}
         />
       )}

@@ -1,6 +1,7 @@
 /**
  * The graph pane's toolbar, a strip above the canvas (so it never covers a node): Add node (the
- * search palette, for touch screens without a keyboard), Tidy, and the Inspector toggle.
+ * search palette, for touch screens without a keyboard), Tidy, the Inspector toggle, and the tools
+ * for the selected nodes (Mute, Frame, Group, Ungroup).
  */
 import { type Edge, useReactFlow } from '@xyflow/react';
 import type { RefObject } from 'react';
@@ -9,6 +10,7 @@ import { registry } from '../../nodes/types/index.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
 import type { KfNode } from './flow-model.ts';
 import { FIT_VIEW, sizer, tidyPositions } from './layout.ts';
+import { SelectionTools } from './tools/SelectionTools.tsx';
 
 interface Props {
   readonly nodes: readonly KfNode[];
@@ -66,6 +68,7 @@ export function GraphToolbar({ nodes, inspectorOpen, inspectorButton, toggleInsp
       >
         Inspector
       </button>
+      <SelectionTools />
     </div>
   );
 }

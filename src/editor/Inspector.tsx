@@ -9,8 +9,10 @@ import { isFieldShown } from '../../nodes/core/field-visibility.ts';
 import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
 import type { GraphNode } from '../../nodes/graph/document.ts';
 import type { NodeEvaluation } from '../../nodes/graph/evaluate.ts';
+import { nodeDef } from '../../nodes/graph/group-def.ts';
 import { useEditorActions } from './editor-context.ts';
 import { FixButton } from './FixButton.tsx';
+import { SaveGroup } from './tools/SaveGroup.tsx';
 import { hasInlineEditor } from './widgets/inline-editor.ts';
 import { InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
 
@@ -20,12 +22,14 @@ interface Props {
   readonly evaluation: NodeEvaluation | undefined;
   readonly diagnostics: readonly Diagnostic[];
   onLabel(label: string): void;
+  /** Mutes or unmutes the node (one undo step). */
+  onMute(muted: boolean): void;
   onClose(): void;
 }
 
-export function Inspector({ node, connected, evaluation, diagnostics, onLabel, onClose }: Props) {
+export function Inspector({ node, connected, evaluation, diagnostics, onLabel, onMute, onClose }: Props) {
   const { registry, editParam, runFix } = useEditorActions();
-  const def = registry.get(node.type);
+  const def = nodeDef(registry, node);
   const [label, setLabel] = useState(node.label ?? '');
   useEffect(() => setLabel(node.label ?? ''), [node.label]);
   // Only the fields that matter in this set-up (and any with a problem of its own), as on the node.
@@ -41,6 +45,15 @@ export function Inspector({ node, connected, evaluation, diagnostics, onLabel, o
         <span className="kf-dot" style={{ background: def?.color ?? '#e5484d' }} />
         <h2>{def?.label ?? node.type}</h2>
         <code className="kf-inspector__id">{node.id}</code>
+        <button
+          type="button"
+          className={`kf-button${node.muted ? ' kf-button--active' : ''}`}
+          aria-pressed={node.muted === true}
+          title="Skip this node: its elements leave the picture (M)"
+          onClick={() => onMute(!node.muted)}
+        >
+          Mute node
+        </button>
         <button type="button" className="kf-icon-button" aria-label="Close inspector" onClick={onClose}>
           ×
         </button>
@@ -59,6 +72,7 @@ export function Inspector({ node, connected, evaluation, diagnostics, onLabel, o
             onKeyDown={(e) => e.key === 'Enter' && (e.target as HTMLInputElement).blur()}
           />
         </label>
+        {node.group && <SaveGroup node={node} />}
         {inputs.length > 0 && <h3>Inputs</h3>}
         {def &&
           inputs.map(([port, spec]) => (

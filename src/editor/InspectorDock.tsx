@@ -18,6 +18,7 @@ interface Props {
   /** The phone's Inspector tab: the panel fills the pane (its CSS), so no width of its own. */
   readonly fill?: boolean;
   onLabel(label: string): void;
+  onMute(muted: boolean): void;
   /** Closes the panel; `fromKeyboard` when by Esc (then focus should go somewhere sensible). */
   onClose(fromKeyboard?: boolean): void;
 }

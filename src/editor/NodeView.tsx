@@ -83,7 +83,7 @@ function Port({
 }
 
 function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
-  const { editParam, setHoveredNode, runFix } = useEditorActions();
+  const { editParam, setHoveredNode, runFix, openGroup } = useEditorActions();
   const wire = useWireInProgress();
   const { node, def, connected, evaluation, diagnostics } = data;
   const portDiag = (port: string) => diagnostics.filter((d) => d.port === port);
@@ -139,7 +139,7 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
   const accent = def?.color ?? '#e5484d';
   return (
     <div
-      className={`kf-node${selected ? ' kf-node--selected' : ''}${data.hovered ? ' kf-node--hovered' : ''}${def ? '' : ' kf-node--unknown'}`}
+      className={`kf-node${selected ? ' kf-node--selected' : ''}${data.hovered ? ' kf-node--hovered' : ''}${def ? '' : ' kf-node--unknown'}${node.muted ? ' kf-node--muted' : ''}`}
       style={{ '--kf-accent': accent } as React.CSSProperties}
       onPointerEnter={() => setHoveredNode(id)}
       onPointerLeave={() => setHoveredNode(null)}
@@ -155,6 +155,11 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
           </>
         ) : (
           <span className="kf-node__title">{def?.label ?? `Unknown “${node.type}”`}</span>
+        )}
+        {node.muted && (
+          <span className="kf-node__muted" title="Muted: skipped (M unmutes)">
+            muted
+          </span>
         )}
         <DiagnosticBadge diagnostics={diagnostics} />
       </div>
@@ -173,6 +178,19 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
               />
             </div>
           ))}
+        {node.group && (
+          <div className="kf-row">
+            <button
+              type="button"
+              className="kf-button nodrag"
+              title="Edit the nodes inside (double-click or Enter)"
+              onClick={() => openGroup(id)}
+            >
+              Open group
+            </button>
+            <span className="kf-row__label">{node.group.nodes.length} nodes</span>
+          </div>
+        )}
         {fields?.main.map(fieldRow)}
         {fields && fields.more.length > 0 && (
           <MoreSection nodeId={id} count={fields.more.length}>

@@ -7,6 +7,7 @@ import { portSpec } from '../../nodes/core/port-lookup.ts';
 import { canConnect, type PortType } from '../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
+import { nodeDef } from '../../nodes/graph/group-def.ts';
 import { closesCycle } from '../../nodes/graph/topo.ts';
 
 export const inHandle = (port: string) => `in:${port}`;
@@ -29,7 +30,7 @@ export function portType(
   port: string,
 ): PortType | null {
   const node = doc.nodes.find((n) => n.id === nodeId);
-  const def = node && registry.get(node.type);
+  const def = node && nodeDef(registry, node);
   if (!def) return null;
   return portSpec(def, side === 'in' ? 'inputs' : 'outputs', port)?.type ?? null;
 }

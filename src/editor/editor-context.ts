@@ -12,6 +12,8 @@ export interface EditorActions {
   setHoveredNode(id: string | null): void;
   /** Runs a diagnostic's fix as one undo step. */
   runFix(fix: DiagnosticFix): void;
+  /** Opens a group node to edit inside it. */
+  openGroup(nodeId: string): void;
 }
 
 export const EditorContext = createContext<EditorActions | null>(null);

@@ -2,7 +2,7 @@
  * GraphDoc + evaluation → React Flow nodes and edges. Pure: the editor rebuilds these whenever
  * the document, evaluation or selection changes; React Flow never owns graph data.
  */
-import type { Edge, Node } from '@xyflow/react';
+import type { Node } from '@xyflow/react';
 import type { NodeDef } from '../../nodes/core/define-node.ts';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import { outputSpec } from '../../nodes/core/port-lookup.ts';
@@ -10,7 +10,9 @@ import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc, GraphNode } from '../../nodes/graph/document.ts';
 import type { NodeEvaluation } from '../../nodes/graph/evaluate.ts';
+import { nodeDef } from '../../nodes/graph/group-def.ts';
 import { inHandle, outHandle } from './connection.ts';
+import type { KfEdge } from './tools/RerouteEdge.tsx';
 
 export interface KfNodeData extends Record<string, unknown> {
   readonly node: GraphNode;
@@ -85,7 +87,7 @@ export function toFlowNodes(
     connected.set(e.to.node, set);
   }
   return doc.nodes.map((node) => {
-    const def = registry.get(node.type);
+    const def = nodeDef(registry, node);
     const prev = previous.get(node.id);
     const orphanPorts = def
       ? { inputs: [], outputs: [] }
@@ -121,13 +123,15 @@ export function toFlowEdges(
   doc: GraphDoc,
   registry: NodeRegistry,
   selectedEdges: ReadonlySet<string>,
-): Edge[] {
-  const types = new Map(doc.nodes.map((n) => [n.id, registry.get(n.type)]));
+): KfEdge[] {
+  const types = new Map(doc.nodes.map((n) => [n.id, nodeDef(registry, n)]));
   return doc.edges.map((e) => {
     const type = outputSpec(types.get(e.from.node), e.from.port)?.type;
     const color = type ? PORT_TYPE_INFO[type].color : '#888';
     return {
       id: e.id,
+      type: 'kf',
+      data: { via: e.via ?? [] },
       source: e.from.node,
       sourceHandle: outHandle(e.from.port),
       target: e.to.node,

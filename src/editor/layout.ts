@@ -5,6 +5,7 @@
 import type { InputSpec, NodeDef } from '../../nodes/core/define-node.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc, GraphNode } from '../../nodes/graph/document.ts';
+import { nodeDef } from '../../nodes/graph/group-def.ts';
 import { nodeFields } from './node-fields.ts';
 import { hasInlineEditor } from './widgets/inline-editor.ts';
 
@@ -52,7 +53,7 @@ type SizeOf = (node: GraphNode) => Size;
 export function sizer(doc: GraphDoc, registry: NodeRegistry): SizeOf {
   const connected = new Map<string, Set<string>>();
   for (const e of doc.edges) connected.set(e.to.node, (connected.get(e.to.node) ?? new Set()).add(e.to.port));
-  return (node) => estimateSize(node, registry.get(node.type), connected.get(node.id) ?? new Set());
+  return (node) => estimateSize(node, nodeDef(registry, node), connected.get(node.id) ?? new Set());
 }
 
 /** Whether any two nodes' boxes intersect. */

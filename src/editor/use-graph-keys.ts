@@ -1,6 +1,7 @@
 /**
  * Keyboard of the graph editor: palette (Space, Ctrl K), clipboard (Ctrl C/X/V), duplicate
- * (Ctrl D), select all (Ctrl A) and the inspector (I). Undo/redo live in the app shell.
+ * (Ctrl D), select all (Ctrl A), the inspector (I), mute (M), group / ungroup (Ctrl G, Ctrl Shift G)
+ * and opening a group (Enter). Undo/redo live in the app shell.
  */
 import type { Edge, ReactFlowInstance } from '@xyflow/react';
 import { type RefObject, useEffect } from 'react';
@@ -8,6 +9,8 @@ import { type ClipboardData, copyNodes, preparePaste } from '../state/clipboard.
 import type { EditorStore } from '../state/store.ts';
 import { lastCopied, putOnEvent, readClipboard, readEvent, writeClipboard } from './clipboard-io.ts';
 import type { KfNode } from './flow-model.ts';
+import { groupSelection, ungroupSelection } from './tools/group-actions.ts';
+import { muteToggle } from './tools/mute.ts';
 import { isTyping } from './typing.ts';
 
 type Point = { x: number; y: number };
@@ -21,6 +24,7 @@ interface Options {
   /** Opens the search palette at `at` (screen px), or at its usual place when there is no pointer. */
   openPalette(at: Point | null): void;
   toggleInspector(): void;
+  openGroup(nodeId: string): void;
 }
 
 /** Pastes clipboard nodes (new ids) with their top-left at `where` (graph coordinates), selecting them. */
@@ -38,7 +42,7 @@ const PASTE_EVENT_WAIT_MS = 120;
 const hasTextSelection = () => (window.getSelection()?.toString() ?? '') !== '';
 
 export function useGraphKeys(o: Options): void {
-  const { store, flow, pointer, paletteOpen, openPalette, toggleInspector } = o;
+  const { store, flow, pointer, paletteOpen, openPalette, toggleInspector, openGroup } = o;
   useEffect(() => {
     const selected = () => copyNodes(store.getState().doc, store.getState().selection);
     /** Graph position under the pointer (paste target), or undefined to paste beside the originals. */
@@ -72,6 +76,21 @@ export function useGraphKeys(o: Options): void {
         store.setSelection(store.getState().doc.nodes.map((n) => n.id));
       } else if (!mod && !e.altKey && key === 'i') {
         toggleInspector();
+      } else if (mod && key === 'g') {
+        const { doc, selection } = store.getState();
+        const change = e.shiftKey ? ungroupSelection(doc, selection) : groupSelection(doc, selection);
+        if (change) store.dispatch(change, e.shiftKey ? 'ungroup' : 'group');
+        if (change?.type === 'group') store.setSelection([change.groupId]);
+      } else if (!mod && key === 'enter') {
+        const { doc, selection } = store.getState();
+        const only = selection.size === 1 ? doc.nodes.find((n) => selection.has(n.id)) : undefined;
+        if (!only?.group) return;
+        openGroup(only.id);
+      } else if (!mod && !e.altKey && key === 'm') {
+        const { doc, selection } = store.getState();
+        const change = muteToggle(doc, selection);
+        if (!change) return;
+        store.dispatch(change, change.type === 'set-muted' && change.muted ? 'mute' : 'unmute');
       } else return;
       e.preventDefault();
     };
@@ -100,5 +119,5 @@ export function useGraphKeys(o: Options): void {
       document.removeEventListener('cut', onCopy);
       document.removeEventListener('paste', onPaste);
     };
-  }, [store, flow, pointer, paletteOpen, openPalette, toggleInspector]);
+  }, [store, flow, pointer, paletteOpen, openPalette, toggleInspector, openGroup]);
 }

@@ -8,7 +8,11 @@ import { inputSpec, portSpec } from '../../nodes/core/port-lookup.ts';
 import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import { sameView } from '../../nodes/core/view.ts';
-import type { GraphDoc, GraphEdge, GraphNode, PortRef } from '../../nodes/graph/document.ts';
+import type { GraphDoc, GraphEdge, GraphFrame, GraphNode, PortRef } from '../../nodes/graph/document.ts';
+import { nodeDef } from '../../nodes/graph/group-def.ts';
+import { groupNodes, ungroupNode } from '../../nodes/graph/grouping.ts';
+import { applyInGroup, routeIntoGroups } from './group-changes.ts';
+import { idAllocator } from './ids.ts';
 
 export interface ParamPatch {
   readonly nodeId: string;
@@ -28,6 +32,23 @@ export type Change =
   | { readonly type: 'load-document'; readonly doc: GraphDoc }
   | { readonly type: 'set-view'; readonly view: GraphDoc['view'] }
   | { readonly type: 'set-meta'; readonly meta: GraphDoc['meta'] }
+  /** Mutes (bypasses) or unmutes nodes (nodes/graph/mute.ts); `muted: false` removes the key. */
+  | { readonly type: 'set-muted'; readonly nodeIds: readonly string[]; readonly muted: boolean }
+  /** Adds a frame, or replaces the frame with its id. */
+  | { readonly type: 'put-frame'; readonly frame: GraphFrame }
+  | { readonly type: 'remove-frames'; readonly frameIds: readonly string[] }
+  /** An edge's reroute points (empty removes them). */
+  | {
+      readonly type: 'set-via';
+      readonly edgeId: string;
+      readonly via: readonly (readonly [number, number])[];
+    }
+  /** Replaces the nodes `nodeIds` by one group node `groupId` (nodes/graph/grouping.ts). */
+  | { readonly type: 'group'; readonly nodeIds: readonly string[]; readonly groupId: string }
+  /** Replaces a group node by its nodes and wires. */
+  | { readonly type: 'ungroup'; readonly nodeId: string }
+  /** `change` applied inside a group: `path` names the group ids from the top (an edit while a group is open). */
+  | { readonly type: 'in-group'; readonly path: readonly string[]; readonly change: Change }
   /** Several changes as one step (e.g. add a node and wire it). */
   | { readonly type: 'batch'; readonly changes: readonly Change[] };
 
@@ -36,7 +57,7 @@ const samePort = (a: PortRef, b: PortRef) => a.node === b.node && a.port === b.p
 /** Whether the input `to` takes many edges (unknown types/ports count as single). */
 export function inputTakesMany(doc: GraphDoc, registry: NodeRegistry, to: PortRef): boolean {
   const node = doc.nodes.find((n) => n.id === to.node);
-  const spec = node ? inputSpec(registry.get(node.type), to.port) : undefined;
+  const spec = node ? inputSpec(nodeDef(registry, node), to.port) : undefined;
   return spec ? PORT_TYPE_INFO[spec.type].many : false;
 }
 
@@ -44,7 +65,7 @@ export function inputTakesMany(doc: GraphDoc, registry: NodeRegistry, to: PortRe
 function hasPort(doc: GraphDoc, registry: NodeRegistry, ref: PortRef, side: 'inputs' | 'outputs'): boolean {
   const node = doc.nodes.find((n) => n.id === ref.node);
   if (!node) return false;
-  const def = registry.get(node.type);
+  const def = nodeDef(registry, node);
   return !def || portSpec(def, side, ref.port) !== undefined; // an unknown type's ports are unknown: its wires are kept
 }
 
@@ -57,6 +78,18 @@ function mapNodes(doc: GraphDoc, f: (n: GraphNode) => GraphNode): GraphDoc {
     return next;
   });
   return changed ? { ...doc, nodes } : doc;
+}
+
+/** `list` with `frame` replacing the frame with its id, or appended. */
+function upsert(list: readonly GraphFrame[], frame: GraphFrame): GraphFrame[] {
+  const at = list.findIndex((f) => f.id === frame.id);
+  return at < 0 ? [...list, frame] : list.map((f, i) => (i === at ? frame : f));
+}
+
+/** `doc` with these frames; an empty list removes the key (a document without frames stays as it was). */
+function withFrames(doc: GraphDoc, frames: GraphFrame[]): GraphDoc {
+  const { frames: _old, ...rest } = doc;
+  return frames.length > 0 ? { ...rest, frames } : rest;
 }
 
 const shallowEqual = (a: Readonly<Record<string, unknown>>, b: Readonly<Record<string, unknown>>) =>
@@ -92,6 +125,8 @@ export function applyChange(doc: GraphDoc, change: Change, registry: NodeRegistr
       });
     }
     case 'set-params': {
+      const routed = routeIntoGroups(doc, change.patches);
+      if (routed) return applyChange(doc, routed, registry);
       const patches = new Map<string, Record<string, unknown>>();
       for (const p of change.patches) patches.set(p.nodeId, { ...patches.get(p.nodeId), ...p.params });
       return mapNodes(doc, (n) => {
@@ -128,6 +163,43 @@ export function applyChange(doc: GraphDoc, change: Change, registry: NodeRegistr
     }
     case 'set-meta':
       return shallowEqual(change.meta, doc.meta) ? doc : { ...doc, meta: change.meta };
+    case 'set-muted': {
+      const ids = new Set(change.nodeIds);
+      return mapNodes(doc, (n) => {
+        if (!ids.has(n.id) || (n.muted === true) === change.muted) return n;
+        const { muted: _old, ...rest } = n;
+        return change.muted ? { ...rest, muted: true } : rest;
+      });
+    }
+    case 'put-frame': {
+      const old = doc.frames?.find((f) => f.id === change.frame.id);
+      if (old && JSON.stringify(old) === JSON.stringify(change.frame)) return doc;
+      return withFrames(doc, upsert(doc.frames ?? [], change.frame));
+    }
+    case 'remove-frames': {
+      const ids = new Set(change.frameIds);
+      const kept = (doc.frames ?? []).filter((f) => !ids.has(f.id));
+      return kept.length === (doc.frames ?? []).length ? doc : withFrames(doc, kept);
+    }
+    case 'set-via': {
+      let changed = false;
+      const edges = doc.edges.map((e) => {
+        if (e.id !== change.edgeId) return e;
+        const { via: old, ...rest } = e;
+        if (JSON.stringify(old ?? []) === JSON.stringify(change.via)) return e;
+        changed = true;
+        return change.via.length > 0
+          ? { ...rest, via: change.via.map(([x, y]) => [x, y] as [number, number]) }
+          : rest;
+      });
+      return changed ? { ...doc, edges } : doc;
+    }
+    case 'group':
+      return groupNodes(doc, change.nodeIds, change.groupId);
+    case 'ungroup':
+      return ungroupNode(doc, change.nodeId, idAllocator(doc));
+    case 'in-group':
+      return applyInGroup(doc, change.path, change.change, (d, c) => applyChange(d, c, registry));
     case 'batch':
       return change.changes.reduce((d, c) => applyChange(d, c, registry), doc);
   }

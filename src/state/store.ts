@@ -42,7 +42,8 @@ export interface EditorStore {
   setPlaying(playing: boolean): void;
 }
 
-const describe = (change: Change) => change.type.replace('-', ' ');
+const describe = (change: Change): string =>
+  change.type === 'in-group' ? describe(change.change) : change.type.replace('-', ' ');
 
 export function createEditorStore(initial: GraphDoc, registry: NodeRegistry): EditorStore {
   let state: EditorState = {

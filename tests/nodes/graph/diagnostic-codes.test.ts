@@ -86,6 +86,14 @@ const SCENARIOS: Partial<Record<DiagnosticKey, () => readonly Diagnostic[]>> = {
       doc([node('c', 'circle', { radius: -1 }), node('i', 'inversion')], [edge('e', 'c.circle', 'i.circle')]),
       registry,
     ).diagnostics,
+  inputMuted: () =>
+    evaluateGraph(
+      doc(
+        [{ ...node('c', 'circle'), muted: true }, node('i', 'inversion')],
+        [edge('e', 'c.circle', 'i.circle')],
+      ),
+      registry,
+    ).diagnostics,
   noPortValue: () =>
     evaluateGraph(
       doc(

@@ -31,8 +31,12 @@ describe('published JSON Schema', () => {
       'view',
     ]);
     expect(schema.additionalProperties).toBe(false);
-    const node = (schema.properties as Record<string, { items: { required: string[] } }>).nodes.items;
+    // A node is a $ref into $defs: a group node holds nodes of its own (the schema is recursive).
+    const ref = (schema.properties as Record<string, { items: { $ref: string } }>).nodes.items.$ref;
+    const defs = schema.$defs as Record<string, { required: string[]; properties: object }>;
+    const node = defs[ref.replace('#/$defs/', '')];
     expect(node.required.sort()).toEqual(['id', 'params', 'position', 'type']);
+    expect(Object.keys(node.properties)).toEqual(expect.arrayContaining(['muted', 'group']));
   });
 
   const examples = exampleFiles();
@@ -44,6 +48,37 @@ describe('published JSON Schema', () => {
       expect(docSchema.safeParse(value).success).toBe(true);
     });
   }
+
+  it('a document with a group, a muted node, a frame and a reroute validates, and bad ones do not', () => {
+    const schema = documentJsonSchema();
+    const good = JSON.parse(examples[0].text);
+    const inner = { id: 'c', type: 'circle', position: [0, 0], params: {} };
+    const group = {
+      id: 'g',
+      type: 'group',
+      position: [0, 0],
+      params: {},
+      muted: true,
+      group: {
+        nodes: [inner],
+        edges: [],
+        inputs: [{ name: 'center', targets: [{ node: 'c', port: 'center' }] }],
+        outputs: [{ name: 'circle', from: { node: 'c', port: 'circle' } }],
+      },
+    };
+    const frame = { id: 'f', title: 'Mirrors', color: '#335577', position: [0, 0], size: [300, 200] };
+    const doc = { ...good, nodes: [...good.nodes, group], frames: [frame] };
+    if (doc.edges[0]) doc.edges[0] = { ...doc.edges[0], via: [[10, 20]] };
+    expect(checkSchema(schema, doc)).toEqual([]);
+    expect(docSchema.safeParse(doc).success).toBe(true);
+    const badInner = { ...group, group: { ...group.group, nodes: [{ ...inner, position: [0] }] } };
+    expect(checkSchema(schema, { ...doc, nodes: [badInner] })).toContain(
+      '$.nodes[0].group.nodes[0].position: too few items',
+    );
+    expect(checkSchema(schema, { ...doc, frames: [{ ...frame, size: [0, 1] }] })).toContain(
+      '$.frames[0].size[0]: too small',
+    );
+  });
 
   it('the checker rejects what the format forbids (so the example checks can fail)', () => {
     const schema = documentJsonSchema();

@@ -1,7 +1,7 @@
 /**
  * A tiny JSON Schema checker for exactly the keywords our generated schema uses (type, const,
  * properties, required, additionalProperties, prefixItems/items, min/maxItems, min/maxLength,
- * exclusiveMinimum, maximum). It lets tests check examples against the published schema without a
+ * exclusiveMinimum, maximum, $defs with local $refs for the recursive group node). It lets tests check examples against the published schema without a
  * validator dependency; an unsupported keyword fails loudly so the checker cannot silently pass.
  */
 type Schema = Record<string, unknown>;
@@ -25,15 +25,23 @@ const SUPPORTED = new Set([
   'exclusiveMinimum',
   'maximum',
   'pattern',
+  '$defs',
+  '$ref',
 ]);
 
 const typeOf = (v: unknown) =>
   v === null ? 'null' : Array.isArray(v) ? 'array' : Number.isInteger(v) ? 'integer' : typeof v;
 
 /** Problems of `value` against `schema`, each as "path: what". Empty when valid. */
-export function checkSchema(schema: Schema, value: unknown, path = '$'): string[] {
+export function checkSchema(schema: Schema, value: unknown, path = '$', root: Schema = schema): string[] {
   for (const k of Object.keys(schema))
     if (!SUPPORTED.has(k)) throw new Error(`unsupported keyword ${k} at ${path}`);
+  if (typeof schema.$ref === 'string') {
+    const name = /^#\/\$defs\/(.+)$/.exec(schema.$ref)?.[1];
+    const target = name ? (root.$defs as Record<string, Schema> | undefined)?.[name] : undefined;
+    if (!target) throw new Error(`unresolvable $ref ${schema.$ref} at ${path}`);
+    return checkSchema(target, value, path, root);
+  }
   const out: string[] = [];
   const t = schema.type as string | undefined;
   const actual = typeOf(value);
@@ -63,7 +71,7 @@ export function checkSchema(schema: Schema, value: unknown, path = '$'): string[
     value.forEach((v, i) => {
       const s = i < prefix.length ? prefix[i] : schema.items;
       if (s === false) out.push(`${path}[${i}]: not allowed`);
-      else if (s && typeof s === 'object') out.push(...checkSchema(s as Schema, v, `${path}[${i}]`));
+      else if (s && typeof s === 'object') out.push(...checkSchema(s as Schema, v, `${path}[${i}]`, root));
     });
   }
   if (actual === 'object') {
@@ -72,10 +80,10 @@ export function checkSchema(schema: Schema, value: unknown, path = '$'): string[
     for (const r of (schema.required as string[] | undefined) ?? [])
       if (!(r in obj)) out.push(`${path}.${r}: missing`);
     for (const [k, v] of Object.entries(obj)) {
-      if (k in props) out.push(...checkSchema(props[k], v, `${path}.${k}`));
+      if (k in props) out.push(...checkSchema(props[k], v, `${path}.${k}`, root));
       else if (schema.additionalProperties === false) out.push(`${path}.${k}: not allowed`);
       else if (schema.additionalProperties && typeof schema.additionalProperties === 'object')
-        out.push(...checkSchema(schema.additionalProperties as Schema, v, `${path}.${k}`));
+        out.push(...checkSchema(schema.additionalProperties as Schema, v, `${path}.${k}`, root));
     }
   }
   return out;

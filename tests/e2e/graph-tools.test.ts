@@ -1,0 +1,161 @@
+/**
+ * Graph tools end to end in Chromium: M mutes and unmutes a node (greyed, the picture changes,
+ * undo restores it), a frame around two nodes carries them when its title bar is dragged, and
+ * nodes grouped with Ctrl+G open, lead back out by the breadcrumb and ungroup again.
+ */
+import type { BrowserContext, Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { type ServedApp, serveApp } from './app-server.ts';
+import {
+  emptyCanvasPoint,
+  nodeCount,
+  nodeEl,
+  type PixelStats,
+  renderPixels,
+  thumbDiff,
+  waitRendered,
+} from './editor-page.ts';
+
+let app: ServedApp;
+let context: BrowserContext;
+let page: Page;
+const problems: string[] = [];
+
+beforeAll(async () => {
+  app = await serveApp();
+  context = await app.newContext();
+  page = await context.newPage();
+  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  await page.goto(app.url);
+}, 180_000);
+
+afterAll(async () => {
+  await app?.close();
+});
+
+const byType = (type: string) => page.locator(`.react-flow__node:has([data-node-type="${type}"])`).first();
+/** The picture once it has all its samples and stopped changing (a re-render may not have begun yet). */
+async function picture(): Promise<PixelStats> {
+  // Off every node: a hovered node's construction is highlighted in the picture.
+  const free = await emptyCanvasPoint(page);
+  await page.mouse.move(free.x, free.y);
+  let last: PixelStats | null = null;
+  for (let i = 0; i < 20; i++) {
+    await waitRendered(page);
+    const now = await renderPixels(page);
+    if (last && thumbDiff(last, now) < 0.5) return now;
+    last = now;
+    await page.waitForTimeout(250);
+  }
+  throw new Error('the picture never settled');
+}
+/** Selects one node by clicking its header (the graph keys then act on it). */
+async function select(id: string, add = false) {
+  await nodeEl(page, id)
+    .locator('.kf-node__header')
+    .click({ modifiers: add ? ['Control'] : [] });
+  await expect.poll(() => nodeEl(page, id).getAttribute('class')).toContain('selected');
+}
+const center = async (l: ReturnType<Page['locator']>) => {
+  const b = (await l.boundingBox())!;
+  return { x: b.x + b.width / 2, y: b.y + b.height / 2 };
+};
+
+describe('graph tools', () => {
+  it('M mutes the kaleidoscope (greyed, the tiling goes), M again and Ctrl+Z restore it', async () => {
+    await expect.poll(() => nodeCount(page)).toBeGreaterThan(0);
+    const kaleido = byType('kaleidoscope');
+    const id = (await kaleido.getAttribute('data-id'))!;
+    const before = await picture();
+    await select(id);
+    await page.keyboard.press('m');
+    const view = nodeEl(page, id).locator('.kf-node');
+    await expect.poll(() => view.getAttribute('class')).toContain('kf-node--muted');
+    await expect.poll(async () => (await view.textContent()) ?? '').toContain('muted');
+    const muted = await picture();
+    expect(thumbDiff(before, muted)).toBeGreaterThan(5);
+    await page.keyboard.press('m');
+    await expect.poll(() => view.getAttribute('class')).not.toContain('kf-node--muted');
+    await page.getByRole('button', { name: 'Mute', exact: true }).click();
+    await expect.poll(() => view.getAttribute('class')).toContain('kf-node--muted');
+    await page.keyboard.press('Control+z');
+    await expect.poll(() => view.getAttribute('class')).not.toContain('kf-node--muted');
+    expect(thumbDiff(before, await picture())).toBeLessThan(2);
+    expect(problems).toEqual([]);
+  });
+
+  it('a frame around two nodes moves them when its title bar is dragged (one undo step)', async () => {
+    const ids = await page
+      .locator('.react-flow__node-kf')
+      .evaluateAll((els) => els.slice(0, 2).map((e) => e.getAttribute('data-id')!));
+    await select(ids[0]);
+    await select(ids[1], true);
+    await page.getByRole('button', { name: 'Frame', exact: true }).click();
+    const frame = page.getByRole('region', { name: 'Frame Frame 1' });
+    await frame.waitFor();
+    await expect(frame.getByRole('textbox', { name: 'Frame title' }).inputValue()).resolves.toBe('Frame 1');
+    const before = await Promise.all(ids.map((id) => center(nodeEl(page, id))));
+    // Grab the title bar by its grip (the title field itself edits the title).
+    const from = await center(frame.getByTitle('Drag to move the frame and the nodes in it'));
+    await page.mouse.move(from.x, from.y);
+    await page.mouse.down();
+    await page.mouse.move(from.x + 60, from.y + 40, { steps: 5 });
+    await page.mouse.move(from.x + 120, from.y + 80, { steps: 5 });
+    await page.mouse.up();
+    const after = await Promise.all(ids.map((id) => center(nodeEl(page, id))));
+    const moved = await center(frame.getByTitle('Drag to move the frame and the nodes in it'));
+    const [dx, dy] = [moved.x - from.x, moved.y - from.y];
+    expect(dx).toBeGreaterThan(60);
+    expect(dy).toBeGreaterThan(40);
+    for (const [i, a] of after.entries()) {
+      expect(Math.abs(a.x - before[i].x - dx)).toBeLessThan(2);
+      expect(Math.abs(a.y - before[i].y - dy)).toBeLessThan(2);
+    }
+    await page.keyboard.press('Control+z');
+    await expect.poll(async () => (await center(nodeEl(page, ids[0]))).x).toBeCloseTo(before[0].x, 0);
+    expect(problems).toEqual([]);
+  });
+
+  it('Ctrl+G groups two nodes (same picture), the group opens, the breadcrumb leads out, Ctrl+Shift+G ungroups', async () => {
+    // The frame from the previous test is undone; start from the example's nodes.
+    const kaleido = (await byType('kaleidoscope').getAttribute('data-id'))!;
+    const tile = (await byType('tile').getAttribute('data-id'))!;
+    const before = await picture();
+    const count = await page.locator('.react-flow__node-kf').count();
+    await select(kaleido);
+    await select(tile, true);
+    await page.keyboard.press('Control+g');
+    await expect.poll(() => page.locator('.react-flow__node-kf').count()).toBe(count - 1);
+    await expect.poll(() => nodeEl(page, kaleido).count()).toBe(0);
+    const group = page.locator('.react-flow__node:has([data-node-type="group"])');
+    await expect.poll(() => group.count()).toBe(1);
+    expect(thumbDiff(before, await picture())).toBeLessThan(2);
+
+    // A fresh session (the autosave) reopens the grouped document.
+    const other = await context.newPage();
+    await other.goto(app.url);
+    await expect
+      .poll(() => other.locator('.react-flow__node:has([data-node-type="group"])').count(), {
+        timeout: 20_000,
+      })
+      .toBe(1);
+    await other.close();
+
+    await group.getByRole('button', { name: 'Open group' }).click();
+    const crumbs = page.getByRole('navigation', { name: 'Open group' });
+    await crumbs.waitFor();
+    await expect.poll(() => page.locator('.react-flow__node-kf').count()).toBe(2);
+    expect(await nodeEl(page, kaleido).count()).toBe(1);
+    await crumbs.getByRole('button', { name: 'Graph' }).click();
+    await crumbs.waitFor({ state: 'detached' });
+    await expect.poll(() => page.locator('.react-flow__node-kf').count()).toBe(count - 1);
+
+    await select((await group.getAttribute('data-id'))!);
+    await page.keyboard.press('Control+Shift+g');
+    await expect.poll(() => page.locator('.react-flow__node-kf').count()).toBe(count);
+    expect(await nodeEl(page, kaleido).count()).toBe(1);
+    expect(await nodeEl(page, tile).count()).toBe(1);
+    expect(thumbDiff(before, await picture())).toBeLessThan(2);
+    expect(problems).toEqual([]);
+  });
+});

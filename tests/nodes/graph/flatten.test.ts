@@ -1,0 +1,102 @@
+/** Flattening groups, and documents with the graph tools' fields through a save and a load. */
+import { describe, expect, it } from 'vitest';
+import type { GraphDoc, GraphNode } from '../../../nodes/graph/document.ts';
+import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
+import { flattenGroups } from '../../../nodes/graph/flatten.ts';
+import { groupDef } from '../../../nodes/graph/group-def.ts';
+import { groupNodes } from '../../../nodes/graph/grouping.ts';
+import { parseDocumentText } from '../../../nodes/graph/load.ts';
+import { registry } from '../../../nodes/types/index.ts';
+import { doc, edge, node } from '../support/doc.ts';
+
+/** c → i → out, with c and i grouped as g. */
+const grouped = (): GraphDoc =>
+  groupNodes(
+    doc(
+      [node('c', 'circle', { radius: 0.5 }), node('i', 'inversion'), node('out', 'render')],
+      [edge('e1', 'c.circle', 'i.circle'), edge('e2', 'i.element', 'out.elements')],
+    ),
+    ['c', 'i'],
+    'g',
+  );
+
+describe('flattenGroups', () => {
+  it('inlines a group: inner ids kept, outer wires reconnected, the origin of each inner node recorded', () => {
+    const { doc: flat, origin } = flattenGroups(grouped());
+    expect(flat.nodes.map((n) => n.id)).toEqual(['c', 'i', 'out']);
+    expect(flat.edges.map((e) => `${e.from.node}.${e.from.port}>${e.to.node}.${e.to.port}`).sort()).toEqual([
+      'c.circle>i.circle',
+      'i.element>out.elements',
+    ]);
+    expect(origin.get('i')).toEqual(['g', 'i']);
+    expect(origin.has('out')).toBe(false);
+  });
+
+  it('two copies of one group: the second copy’s clashing ids get its group id in front', () => {
+    const d = grouped();
+    const g = d.nodes.find((n) => n.id === 'g')!;
+    const copy: GraphNode = { ...g, id: 'g2' };
+    const two = {
+      ...d,
+      nodes: [...d.nodes, copy],
+      edges: [...d.edges, { ...d.edges[0], id: 'e9', from: { node: 'g2', port: 'element' } }],
+    };
+    const { doc: flat, origin } = flattenGroups(two);
+    expect(flat.nodes.map((n) => n.id).sort()).toEqual(['c', 'g2/c', 'g2/i', 'i', 'out']);
+    expect(origin.get('g2/c')).toEqual(['g2', 'c']);
+    expect(evaluateGraph(two, registry).scene.elements).toHaveLength(2);
+  });
+
+  it('a muted group mutes every node inside it (its elements leave the picture)', () => {
+    const d = grouped();
+    const muted = { ...d, nodes: d.nodes.map((n) => (n.id === 'g' ? { ...n, muted: true } : n)) };
+    expect(
+      flattenGroups(muted)
+        .doc.nodes.filter((n) => n.muted)
+        .map((n) => n.id),
+    ).toEqual(['c', 'i']);
+    expect(evaluateGraph(muted, registry).scene.elements).toEqual([]);
+  });
+
+  it('the group node’s ports have the inner ports’ types; a wire to a port it no longer has is dropped', () => {
+    const g = grouped().nodes.find((n) => n.id === 'g')!;
+    const def = groupDef(g, registry)!;
+    expect(Object.entries(def.outputs).map(([k, v]) => [k, v.type])).toEqual([['element', 'element']]);
+    const broken = { ...grouped(), edges: [{ ...grouped().edges[0], from: { node: 'g', port: 'gone' } }] };
+    expect(flattenGroups(broken).doc.edges.map((e) => e.to.node)).toEqual(['i']);
+  });
+});
+
+describe('document round trips', () => {
+  it('groups, muted nodes, frames and reroute points survive save and load exactly', () => {
+    const d = grouped();
+    const full: GraphDoc = {
+      ...d,
+      nodes: d.nodes.map((n) => (n.id === 'out' ? { ...n, muted: true } : n)),
+      edges: d.edges.map((e) => ({ ...e, via: [[10, 20] as [number, number]] })),
+      frames: [{ id: 'f', title: 'Mirrors', color: '#335577', position: [-20, -40], size: [400, 300] }],
+    };
+    const r = parseDocumentText(JSON.stringify(full), registry);
+    if (!r.ok) throw new Error(JSON.stringify(r.diagnostics));
+    expect(r.doc).toEqual(full);
+    expect(evaluateGraph(r.doc, registry).scene).toEqual(evaluateGraph(full, registry).scene);
+  });
+
+  it('an old document (none of the new fields) loads unchanged, with no new keys', () => {
+    const old = doc([node('c', 'circle'), node('i', 'inversion')], [edge('e1', 'c.circle', 'i.circle')]);
+    const r = parseDocumentText(JSON.stringify(old), registry);
+    if (!r.ok) throw new Error('does not load');
+    expect(JSON.stringify(r.doc)).toBe(JSON.stringify(old));
+  });
+
+  it('a damaged group is refused with the path of the problem', () => {
+    const bad = JSON.parse(JSON.stringify(grouped()));
+    bad.nodes[0].group.inputs = [{ name: 'x', targets: [] }];
+    bad.frames = [{ id: 'f', title: 't', color: 'red', position: [0, 0], size: [1, 1] }];
+    const r = parseDocumentText(JSON.stringify(bad), registry);
+    expect(r.ok).toBe(false);
+    const paths = r.diagnostics.map((d) => d.path);
+    expect(paths).toContain('nodes[0].group.inputs[0].targets');
+    expect(paths).toContain('frames[0].color');
+  });
+});

@@ -95,7 +95,8 @@ describe('classroom', () => {
       await page.waitForTimeout(500); // the fit animation
       const tools = page.getByRole('toolbar', { name: 'Graph' });
       const buttons = await Promise.all((await tools.getByRole('button').all()).map(boxOf));
-      expect(buttons.length).toBe(3);
+      // Add node, Tidy, Inspector, and the selection tools (Mute, Frame, Group, Ungroup).
+      expect(buttons.length).toBe(7);
       const nodes = await Promise.all((await page.locator('.react-flow__node').all()).map(boxOf));
       for (const b of buttons) for (const n of nodes) expect(intersects(b, n)).toBe(false);
     });

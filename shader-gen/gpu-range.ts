@@ -43,7 +43,12 @@ export function firstOutOfGpuRange(scene: Scene, max: number = LIMITS.gpuMaxMagn
     if (value !== undefined) return { nodeId: seed.nodeId, value };
   }
   const coloring = tile.coloring;
-  const placement = coloring.mode === 'image' ? [coloring.center, coloring.size, coloring.rotation] : [];
+  const placement =
+    coloring.mode === 'image'
+      ? [coloring.center, coloring.size, coloring.rotation]
+      : coloring.mode === 'measure'
+        ? [coloring.trap.c, coloring.trap.r]
+        : [];
   const tileValue = firstBeyond([placement, tile.inner ?? null], max);
   if (tileValue !== undefined) return { nodeId: tile.nodeId || undefined, value: tileValue };
   const clip = firstBeyond(scene.clip, max);

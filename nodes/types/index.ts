@@ -15,6 +15,7 @@ import { latticeNode } from './lattice.ts';
 import { lineNode } from './line.ts';
 import { parallelLineNode, perpendicularBisectorNode, perpendicularLineNode } from './line-constructions.ts';
 import { loxodromicNode } from './loxodromic.ts';
+import { maskitNode } from './maskit.ts';
 import { angleNode, distanceNode } from './measures.ts';
 import { mobiusNode } from './mobius.ts';
 import { mobiusMatrixNode } from './mobius-matrix.ts';
@@ -53,6 +54,7 @@ export const NODE_TYPES = [
   mobiusNode,
   loxodromicNode,
   mobiusMatrixNode,
+  maskitNode,
   translationNode,
   latticeNode,
   glideReflectionNode,

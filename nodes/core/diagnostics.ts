@@ -147,6 +147,7 @@ export const DIAGNOSTICS = table({
     severity: 'warning',
     text: (n: number, max: number) => `${n} seeds are wired; only the first ${max} are drawn`,
   },
+  drawnInstead: { code: 'KF313', severity: 'info', text: (detail: string) => detail },
   tooManyElements: {
     code: 'KF401',
     severity: 'error',

@@ -22,6 +22,7 @@ import { mobiusMatrixNode } from './mobius-matrix.ts';
 import { numberNode } from './number.ts';
 import { pointNode } from './point.ts';
 import { invertPointNode, midpointNode, reflectPointNode } from './point-constructions.ts';
+import { recipeNode } from './recipe.ts';
 import { rectangleKaleidoscopeNode } from './rectangle-kaleidoscope.ts';
 import { reflectionNode } from './reflection.ts';
 import { renderNode } from './render.ts';
@@ -55,6 +56,7 @@ export const NODE_TYPES = [
   loxodromicNode,
   mobiusMatrixNode,
   maskitNode,
+  recipeNode,
   translationNode,
   latticeNode,
   glideReflectionNode,

@@ -69,6 +69,8 @@ describe('one sample, nothing blended: no conversion at all', () => {
         'strips-final-y',
         'triangle-333-final-x-edges',
         'triangle-333-orbit-trap',
+        'maskit-2i-cosine-edges',
+        'maskit-cusp-limit-set',
       ].sort(),
     );
   });

@@ -169,6 +169,11 @@ export const LOXODROMIC: SceneElement[] = [
   },
 ];
 
+/** The Maskit group at the cusp μ = 2i (its isometric circles tangent: an exact Ford domain). */
+export const MASKIT_2I: SceneElement[] = [{ kind: 'maskit', nodeId: 'mk', mu: [0, 2] }];
+/** Near the 2/5 cusp: the circles overlap, so the step's choice changes along a line (lens). */
+export const MASKIT_CUSP: SceneElement[] = [{ kind: 'maskit', nodeId: 'mk', mu: [0.766588, 1.642139] }];
+
 /** Every element kind at least once, in one scene. */
 export const EVERY_KIND: SceneElement[] = [
   ...TRIANGLE_333,
@@ -179,6 +184,7 @@ export const EVERY_KIND: SceneElement[] = [
   ...MATRIX,
   ...LOXODROMIC,
   ...SPHERICAL_WEDGE,
+  ...MASKIT_2I,
 ];
 
 /** A disk seed and a picture seed outside the Schottky circles (both inside the tile). */
@@ -289,4 +295,23 @@ export const HAND_MADE_SCENES: Readonly<Record<string, Scene>> = {
     tile: { seeds: [SEED_DISK] },
   }),
   'triangle-333-orbit-trap': makeScene(TRIANGLE_333, { coloring: measureColoring('trap', 2), scale: 3 }),
+  // The Maskit group (shader-gen/elements/maskit.ts), exact and with overlapping circles.
+  'maskit-2i-cosine-edges': makeScene(MASKIT_2I, {
+    edgeWidth: 1,
+    maxIterations: 200,
+    center: [0.3, 1],
+    scale: 3,
+  }),
+  'maskit-cusp-hsv': makeScene(MASKIT_CUSP, {
+    coloring: COLORINGS['depth-hsv'],
+    maxIterations: 200,
+    center: [0, 0.8],
+    scale: 2.5,
+  }),
+  'maskit-cusp-limit-set': makeScene(MASKIT_CUSP, {
+    coloring: COLORINGS['limit-set'],
+    maxIterations: 200,
+    center: [0, 0.8],
+    scale: 2.5,
+  }),
 };

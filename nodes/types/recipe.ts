@@ -3,13 +3,12 @@ import { diag } from '../core/diagnostics.ts';
 import type { SceneElement } from '../core/scene-elements.ts';
 import type { Circle } from '../core/values.ts';
 import { type Complex, cabs, cnear } from '../geometry/complex.ts';
-import { classifyMatrix, isAffine, isometricCircles, type MobiusMatrix } from '../geometry/mobius-matrix.ts';
+import { classifyMatrix, isAffine, type MobiusMatrix } from '../geometry/mobius-matrix.ts';
 import {
   grandmaRecipe,
   jorgensenRecipe,
   maskitParameter,
   RECIPES,
-  type RecipeGroup,
   rileyRecipe,
 } from '../geometry/recipes.ts';
 import { fmtComplex, matrixElement } from './mobius-matrix.ts';
@@ -43,9 +42,32 @@ function generatorElement(m: MobiusMatrix, nodeId: string): SceneElement | null 
   return { kind: 'translation', nodeId, q: [-t[0] / 2, -t[1] / 2], n, period };
 }
 
-/** The isometric circles of the non-affine generators (drawn over the picture). */
-const isometric = (g: RecipeGroup): Circle[] =>
-  [g.a, g.b].flatMap((m) => (isAffine(m) ? [] : Object.values(isometricCircles(m))));
+/**
+ * The isometric circles of the non-affine generators, with their images under a translation
+ * generator's ±t (the strip folds them there too): the Ford rule is exact iff these are pairwise
+ * disjoint or tangent.
+ */
+function isometric(elements: readonly SceneElement[]): Circle[] {
+  const circles = elements.flatMap((e) =>
+    e.kind === 'mobius-matrix' ? [e.forward, e.backward].map(({ c, r }) => ({ c, r })) : [],
+  );
+  const shifts = elements.flatMap((e) => (e.kind === 'translation' ? [e.n.map((x) => x * e.period)] : []));
+  return circles.flatMap((c) => [
+    c,
+    ...shifts.flatMap(([tx, ty]) => [
+      { c: [c.c[0] + tx, c.c[1] + ty] as const, r: c.r },
+      { c: [c.c[0] - tx, c.c[1] - ty] as const, r: c.r },
+    ]),
+  ]);
+}
+
+/** Whether two of the circles overlap (cross or nest), beyond tangency. */
+const someOverlap = (circles: readonly Circle[]) =>
+  circles.some((c1, i) =>
+    circles.some(
+      (c2, j) => j > i && Math.hypot(c1.c[0] - c2.c[0], c1.c[1] - c2.c[1]) < (c1.r + c2.r) * (1 - 1e-9),
+    ),
+  );
 
 export const recipeNode = defineNode({
   type: 'recipe',
@@ -104,16 +126,16 @@ export const recipeNode = defineNode({
     const types = [group.a, group.b].map((m) => classifyMatrix(m).type);
     const diagnostics = [];
     if (types.every((t) => t !== 'elliptic')) {
-      const overlap = isometric(group).some((c1, i, all) =>
-        all.some(
-          (c2, j) => j > i && Math.hypot(c1.c[0] - c2.c[0], c1.c[1] - c2.c[1]) < (c1.r + c2.r) * (1 - 1e-9),
-        ),
-      );
+      const overlap = someOverlap(isometric(elements as SceneElement[]));
+      // A warning where the picture is wrong; a note where the Ford rule happens to be exact.
+      const drawn = overlap
+        ? 'which overlap here, so the picture is not the group’s limit set'
+        : 'which are disjoint or tangent here, so the picture is exact (a Ford domain)';
       diagnostics.push(
         diag(
-          'notATiling',
+          overlap ? 'notATiling' : 'drawnInstead',
           {},
-          `a is ${types[0]} and b is ${types[1]}: with two such generators the IIS cannot draw this group (no tile is known that every point reaches, paper §5.1.3). Drawn instead: the Ford rule on the isometric circles of a and b alone (a translation strip for z + 2), ${overlap ? 'which overlap here, so the picture is not the group’s limit set' : 'which are disjoint or tangent here, so the picture is exact (a Schottky group)'}; with tb = 2 Grandma’s and Jørgensen’s groups are drawn exactly by the Maskit method`,
+          `a is ${types[0]} and b is ${types[1]}: with two such generators the IIS cannot draw every such group (no tile is known that every point reaches, paper §5.1.3). Drawn: the Ford rule on the isometric circles of a and b alone (a translation strip for z + 2), ${drawn}; with tb = 2 Grandma’s and Jørgensen’s groups are drawn exactly by the Maskit method`,
         ),
       );
     }

@@ -11,7 +11,7 @@ describe('recipe node', () => {
     const params = { ta_re: 1.91, ta_im: 0.05, tb_re: 1.91, tb_im: -0.05 };
     for (const recipe of ['grandma', 'jorgensen']) {
       const r = evalNode('recipe', { ...params, recipe });
-      expect((r.outputs?.elements as SceneElement[]).map((e) => e.kind)).toEqual([
+      expect((r.outputs!.elements as SceneElement[]).map((e) => e.kind)).toEqual([
         'mobius-matrix',
         'mobius-matrix',
       ]);
@@ -19,14 +19,14 @@ describe('recipe node', () => {
       const message = r.diagnostics[0].message;
       expect(message).toContain('loxodromic');
       expect(message).toContain('IIS cannot draw');
-      expect(message).toContain('Drawn instead');
+      expect(message).toContain('overlap here');
       expect(r.readout).toMatch(/^a = \[\[.*tr ab = /);
     }
   });
 
   it('one parabolic generator (tb = 2): the exact Maskit limit set, μ = i·ta, and an info note', () => {
     const r = evalNode('recipe', { recipe: 'grandma', ta_re: 1.8, ta_im: -0.4, tb_re: 2, tb_im: 0 });
-    const [e] = r.outputs?.elements as SceneElement[];
+    const [e] = r.outputs!.elements as SceneElement[];
     expect(e.kind).toBe('maskit');
     if (e.kind === 'maskit') {
       expect(e.mu[0]).toBeCloseTo(0.4, 9);
@@ -42,7 +42,9 @@ describe('recipe node', () => {
   });
 
   it('Riley’s recipe: a on its tangent isometric circles and b = z + 2 as a translation strip', () => {
-    const r = evalNode('recipe', { recipe: 'riley', c_re: 0.5, c_im: 1 });
+    const wide = evalNode('recipe', { recipe: 'riley', c_re: 0.3, c_im: 0.5 });
+    expect(codes(wide, 'warning')).toEqual(['KF304']); // radius 1/|c| ≈ 1.7: they overlap their translates
+    const r = evalNode('recipe', { recipe: 'riley', c_re: 0, c_im: 2 });
     const els = r.outputs?.elements as SceneElement[];
     expect(els.map((e) => e.kind)).toEqual(['mobius-matrix', 'translation']);
     const strip = els[1];
@@ -51,8 +53,10 @@ describe('recipe node', () => {
       expect(strip.n).toEqual([1, 0]);
       expect(strip.q).toEqual([-1, -0]);
     }
-    expect(codes(r, 'warning')).toEqual(['KF304']);
-    expect(r.diagnostics[0].message).toContain('parabolic');
+    // |c| = 2: a's isometric circles (radius ½, tangent at 0) and their translates are disjoint
+    // or tangent, so the Ford rule is exact and the node only notes it.
+    expect(r.diagnostics.map((d) => [d.code, d.severity])).toEqual([['KF313', 'info']]);
+    expect(r.diagnostics[0].message).toContain('exact');
   });
 
   it('a recipe that divides by zero is an error on the node, not a broken picture', () => {

@@ -16,7 +16,7 @@ export const maskitNode = defineNode({
   label: 'Maskit group',
   category: 'Generators',
   color: '#e85d75',
-  doc: 'The Maskit group a(z) = μ + 1/z, b(z) = z + 2 drawn by Jos Leys’s method: its limit set, the tangent-circle fractals of the Maskit slice. Drag μ in the picture.',
+  doc: 'The Maskit group of a: z ↦ μ + 1/z and the translation by 2, drawn by Jos Leys’s method: its limit set, the tangent-circle fractals of the Maskit slice. Drag μ in the picture.',
   inputs: {
     mu: {
       ...pointInput('μ', 0, 2),

@@ -11,6 +11,7 @@ import {
   RECIPES,
   rileyRecipe,
 } from '../geometry/recipes.ts';
+import { maskitCirclesDisjoint } from './maskit.ts';
 import { fmtComplex, matrixElement } from './mobius-matrix.ts';
 import { fail } from './shared.ts';
 
@@ -115,7 +116,7 @@ export const recipeNode = defineNode({
           diag(
             'drawnInstead',
             {},
-            `a and b are not both drawable by the IIS, but this group is a Maskit group (one parabolic generator, abAB parabolic): drawn is its exact limit set by Jos Leys's Maskit method, μ = ${fmtComplex(mu)}, in the Maskit group's own coordinates (conjugate to a, b by a Möbius map)`,
+            `a and b are not both drawable by the IIS, but this group is a Maskit group (one parabolic generator, abAB parabolic): drawn is its limit set by Jos Leys's Maskit method, μ = ${fmtComplex(mu)}, in the Maskit group's own coordinates (conjugate to a, b by a Möbius map); ${maskitCirclesDisjoint(mu) ? 'exact here (its isometric circles are disjoint or tangent)' : 'approximate here: its isometric circles overlap (near the edge of the Maskit slice, or outside it)'}`,
           ),
         ],
       };

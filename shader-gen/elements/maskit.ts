@@ -5,8 +5,8 @@
  * (each folded by b(z) = z + 2 at once) — and when z lies inside it apply a∘b⁻ᵏ: z ← μ + 1/(z − 2k),
  * scale 1/|z − 2k|², or b⁻ᵐ∘a⁻¹ shifted: z ← 1/(z − μ − 2m), scale 1/|z − μ − 2m|²; depth + 1. The
  * nearer circle has the larger factor, so in the lens where they overlap the step that magnifies
- * most wins (a tie goes to a). Outside the strip (the half-planes the group keeps, the invariant
- * component) and outside every circle nothing applies: the point is in the tile.
+ * most wins (a tie goes to a). Outside the strip (the two half-planes, round disks of the regular
+ * set) and outside every circle nothing applies: the point is in the tile.
  * GLSL packing (1 vec4): d0 = (u, v, 0, 0).
  */
 import type { MaskitElement } from '../../nodes/core/scene.ts';

@@ -3,7 +3,7 @@
  * glsl/colour (shader issue) and follows these functions line by line.
  */
 import type { Coloring, TileSpec } from '../nodes/core/scene.ts';
-import type { Color } from '../nodes/core/values.ts';
+import type { Circle, Color } from '../nodes/core/values.ts';
 import { type PictureMap, resolvePicture, samplePicture } from './picture.ts';
 import { placeUv, rotationPair } from './placement.ts';
 import { seedColour } from './seeds.ts';
@@ -36,6 +36,55 @@ export function depthColour(coloring: DepthColoring, depth: number): Rgb {
   }
 }
 
+/** A colouring by a measure of the run (docs/math.md "Colouring by a measure"). */
+export type MeasureColoring = Extract<Coloring, { mode: 'measure' }>;
+
+/** What a measure can be read from: the run's final point, its scale, edge distance and trap. */
+export interface MeasureSource {
+  readonly x: number;
+  readonly y: number;
+  /** The accumulated scale s (docs/math.md "Length scale"). */
+  readonly s: number;
+  /** Distance from the final point to the nearest element boundary, in the tile's coordinates. */
+  readonly edge: number;
+  /** The orbit's least distance to the trap circle (orbitTrapDistance at every point of the path). */
+  readonly trap: number;
+}
+
+/** Distance from (x, y) to the trap circle: ||p − c| − r| (r = 0: a point trap). */
+export function orbitTrapDistance(trap: Circle, x: number, y: number): number {
+  return Math.abs(Math.hypot(x - trap.c[0], y - trap.c[1]) - trap.r);
+}
+
+/**
+ * The measure m: x, y, |p|, arg p / 2π (turns, in (−½, ½]), the edge distance, ln s (the escape
+ * speed: how much the path magnified, a continuous companion of depth) or the trap distance.
+ */
+export function measureValue(coloring: MeasureColoring, m: MeasureSource): number {
+  switch (coloring.measure) {
+    case 'x':
+      return m.x;
+    case 'y':
+      return m.y;
+    case 'radius':
+      return Math.hypot(m.x, m.y);
+    case 'argument':
+      return Math.atan2(m.y, m.x) / (2 * Math.PI);
+    case 'edge':
+      return m.edge;
+    case 'speed':
+      return Math.log(m.s);
+    case 'trap':
+      return m.trap;
+  }
+}
+
+/** Linear colour of a measure m: the cosine palette of t = offset + scale·m. */
+export function measureColour(coloring: MeasureColoring, m: number): Rgb {
+  const { a, b, c, d, scale, offset } = coloring;
+  return toLinear(cosinePalette(a, b, c, d, offset + scale * m));
+}
+
 /** The colouring modes whose colour depends on the depth alone. */
 export type DepthColoring = Extract<Coloring, { mode: 'depth-hsv' | 'cosine' | 'parity' }>;
 
@@ -44,7 +93,7 @@ export type DepthColoring = Extract<Coloring, { mode: 'depth-hsv' | 'cosine' | '
  * (image mode: a picture `size` high and size·width/height wide), else depthColour.
  */
 export function finalColour(
-  coloring: Exclude<Coloring, { mode: 'limit-set' }>,
+  coloring: Exclude<Coloring, { mode: 'limit-set' | 'measure' }>,
   depth: number,
   x: number,
   y: number,
@@ -81,6 +130,8 @@ export interface ShadeInput {
   readonly limitPixels: number;
   /** Index of the seed the run stopped at, −1 for none. */
   readonly seed: number;
+  /** measureValue of the run (measure mode only). */
+  readonly measure?: number;
 }
 
 /**
@@ -89,7 +140,7 @@ export interface ShadeInput {
  * `seedsOnly` → background; limit-set mode → limit colour where not escaped, else the
  * background blended towards it by max(clamp(1 − L, 0, 1), exp(−L/glow)) (L = limitPixels);
  * not escaped → limit colour; outside the `inner` circle → background; depth 0 with a `fill` →
- * the fill; else the mode's colour. Edges are drawn with a 1-pixel antialiased falloff.
+ * the fill; else the mode's colour (measure mode: the palette of r.measure). Edges are drawn with a 1-pixel antialiased falloff.
  */
 export function shade(tile: TileSpec, r: ShadeInput, pictures?: PictureMap): Rgb {
   if (r.clipped) return toLinear(tile.background);
@@ -113,7 +164,11 @@ export function shade(tile: TileSpec, r: ShadeInput, pictures?: PictureMap): Rgb
   if (inner && (r.x - inner.c[0]) ** 2 + (r.y - inner.c[1]) ** 2 >= inner.r * inner.r)
     return toLinear(tile.background);
   const base =
-    r.depth === 0 && tile.fill ? toLinear(tile.fill) : finalColour(coloring, r.depth, r.x, r.y, pictures);
+    r.depth === 0 && tile.fill
+      ? toLinear(tile.fill)
+      : coloring.mode === 'measure'
+        ? measureColour(coloring, r.measure ?? 0)
+        : finalColour(coloring, r.depth, r.x, r.y, pictures);
   if (tile.edgeWidth <= 0) return base;
   const t = clamp01(r.edgePixels - tile.edgeWidth / 2 + 0.5);
   const edge = toLinear(tile.edgeColor);

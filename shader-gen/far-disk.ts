@@ -69,7 +69,7 @@ export function limitReach(elements: readonly SceneElement[]): number | null {
     } else if (e.kind === 'mobius-matrix') {
       take(e.forward);
       take(e.backward);
-    }
+    } else if (e.kind === 'maskit') reach = Math.min(reach, 1); // its isometric circles' radius
   }
   return Number.isFinite(reach) ? reach : null;
 }

@@ -4,6 +4,7 @@
  * LIMITS.gpuMaxMagnitude becomes ∞ on the GPU while the CPU interpreter (float64) still draws it.
  */
 import { LIMITS, type Scene } from '../nodes/core/scene.ts';
+import { elementRecord } from './elements/index.ts';
 
 export interface OutOfRange {
   /** The node whose element (or the render node, for the clip disk) holds the value. */
@@ -31,7 +32,9 @@ function firstBeyond(value: unknown, max: number): number | undefined {
  */
 export function firstOutOfGpuRange(scene: Scene, max: number = LIMITS.gpuMaxMagnitude): OutOfRange | null {
   for (const e of scene.elements) {
-    const value = firstBeyond(e, max);
+    // The element's fields and what it packs for the shader (which may square them: an
+    // inversion packs r², so r = 10¹⁰ is within range but its packed r² = 10²⁰ is not).
+    const value = firstBeyond([e, elementRecord(e).glsl.pack(e)], max);
     if (value !== undefined) return { nodeId: e.nodeId, value };
   }
   const { tile } = scene;
@@ -43,7 +46,12 @@ export function firstOutOfGpuRange(scene: Scene, max: number = LIMITS.gpuMaxMagn
     if (value !== undefined) return { nodeId: seed.nodeId, value };
   }
   const coloring = tile.coloring;
-  const placement = coloring.mode === 'image' ? [coloring.center, coloring.size, coloring.rotation] : [];
+  const placement =
+    coloring.mode === 'image'
+      ? [coloring.center, coloring.size, coloring.rotation]
+      : coloring.mode === 'measure'
+        ? [coloring.trap.c, coloring.trap.r, coloring.scale, coloring.offset]
+        : [];
   const tileValue = firstBeyond([placement, tile.inner ?? null], max);
   if (tileValue !== undefined) return { nodeId: tile.nodeId || undefined, value: tileValue };
   const clip = firstBeyond(scene.clip, max);

@@ -5,7 +5,7 @@
 import type { Scene } from '../nodes/core/scene.ts';
 import type { Circle } from '../nodes/core/values.ts';
 import { pixelToWorld } from '../nodes/core/view.ts';
-import { shade } from './colour.ts';
+import { measureValue, orbitTrapDistance, shade } from './colour.ts';
 import type { IisState } from './elements/element-kind.ts';
 import { farDisk, farDistance, limitReach } from './far-disk.ts';
 import { type PreparedElements, prepare, runIis } from './interpret.ts';
@@ -55,7 +55,8 @@ export function sampleContext(scene: Scene, pictures?: PictureMap): SampleContex
  * Linear colour of one sample at world point (x, y): clip test, IIS run (stopping at the first
  * seed that holds the point at the start of a step), distance to the nearest tile edge in pixels
  * (max(d, far distance) / s / pixelWorld, pixelWorld = world units per pixel) and, in limit-set
- * mode, to the limit set ((that + reach) / s / pixelWorld), shade. `st` is
+ * mode, to the limit set ((that + reach) / s / pixelWorld), the measure (measure mode; an orbit
+ * trap sees every point of the path), shade. `st` is
  * scratch state (left holding the run's result). The shader's shadeSample is its GLSL twin.
  */
 export function sampleColour(
@@ -74,20 +75,28 @@ export function sampleColour(
   st.s = 1;
   st.depth = 0;
   const seeds = tile.seeds ?? [];
+  const coloring = tile.coloring;
+  const trap = coloring.mode === 'measure' && coloring.measure === 'trap' ? coloring.trap : null;
   let seed = -1;
-  const atSeed =
-    seeds.length > 0
+  let trapDistance = Number.POSITIVE_INFINITY;
+  // At the start of every pass (interpret.ts runIis's visit): the trap sees the point, then a point
+  // in a seed stops the run.
+  const visit =
+    seeds.length > 0 || trap
       ? (at: IisState) => {
+          if (trap) trapDistance = Math.min(trapDistance, orbitTrapDistance(trap, at.x, at.y));
+          if (seeds.length === 0) return false;
           seed = seedAt(seeds, at.x, at.y);
           return seed >= 0;
         }
       : undefined;
-  const escaped = clipped ? false : runIis(prepared, scene.maxIterations, st, atSeed);
-  const limitSet = tile.coloring.mode === 'limit-set';
+  const escaped = clipped ? false : runIis(prepared, scene.maxIterations, st, visit);
+  const limitSet = coloring.mode === 'limit-set';
+  const edgeMeasure = coloring.mode === 'measure' && coloring.measure === 'edge';
   let edgePixels = Number.POSITIVE_INFINITY;
   let limitPixels = Number.POSITIVE_INFINITY;
-  if ((tile.edgeWidth > 0 || limitSet) && escaped) {
-    let d = Number.POSITIVE_INFINITY;
+  let d = Number.POSITIVE_INFINITY;
+  if ((tile.edgeWidth > 0 || limitSet || edgeMeasure) && escaped) {
     for (let i = 0; i < prepared.elements.length; i++) {
       d = Math.min(d, prepared.kinds[i].boundaryDistance(prepared.elements[i], st.x, st.y));
     }
@@ -95,9 +104,13 @@ export function sampleColour(
     edgePixels = d / st.s / pixelWorld;
     if (limitSet && ctx.reach !== null) limitPixels = (d + ctx.reach) / st.s / pixelWorld;
   }
+  const measure =
+    coloring.mode === 'measure'
+      ? measureValue(coloring, { x: st.x, y: st.y, s: st.s, edge: d, trap: trapDistance })
+      : undefined;
   return shade(
     tile,
-    { escaped, depth: st.depth, clipped, edgePixels, x: st.x, y: st.y, limitPixels, seed },
+    { escaped, depth: st.depth, clipped, edgePixels, x: st.x, y: st.y, limitPixels, seed, measure },
     ctx.pictures,
   );
 }

@@ -153,6 +153,7 @@ export const DIAGNOSTICS = table({
     text: (port: string, node: string) =>
       `input "${port}" is muted: node "${node}" is muted (or fed by a muted node) and passes nothing on`,
   },
+  drawnInstead: { code: 'KF315', severity: 'info', text: (detail: string) => detail },
   tooManyElements: {
     code: 'KF401',
     severity: 'error',

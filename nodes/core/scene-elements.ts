@@ -129,6 +129,16 @@ export interface SpiralSimilarityElement extends ElementBase {
   readonly angle: number;
 }
 
+/**
+ * The Maskit group of parameter μ (docs/math.md "The Maskit slice"): a(z) = μ + 1/z and
+ * b(z) = z + 2, drawn by the isometric circles |z − 2k| = 1 (of a) and |z − μ − 2k| = 1 (of a⁻¹)
+ * in the strip 0 < Im z < Im μ; `mu` = (Re μ, Im μ) with Im μ > 0.
+ */
+export interface MaskitElement extends ElementBase {
+  readonly kind: 'maskit';
+  readonly mu: Vec2;
+}
+
 export type SceneElement =
   | InversionElement
   | OuterInversionElement
@@ -140,5 +150,6 @@ export type SceneElement =
   | ParallelMirrorsElement
   | GlideReflectionElement
   | RotationElement
-  | SpiralSimilarityElement;
+  | SpiralSimilarityElement
+  | MaskitElement;
 export type ElementKind = SceneElement['kind'];

@@ -19,6 +19,8 @@ export {
   type CosineColoring,
   DEFAULT_COLORING,
   DEFAULT_TILE,
+  MEASURES,
+  type Measure,
   type SeedKind,
   type SeedSpec,
   type TileSpec,

@@ -43,7 +43,29 @@ export type Coloring =
    * distance + smallest inside radius) / s) and, when glow > 0, a glow exp(−L/glow) around it
    * (L that distance in pixels, glow in pixels).
    */
-  | { readonly mode: 'limit-set'; readonly glow: number };
+  | { readonly mode: 'limit-set'; readonly glow: number }
+  /**
+   * A cosine palette a + b·cos(2π(c·t + d)) of t = offset + scale·m, where m is a measure of the
+   * run rather than its depth (docs/math.md "Colouring by a measure"): the final point's x, y,
+   * radius or argument (in turns), its distance to the nearest tile edge (in the tile's own
+   * coordinates), the escape speed ln s, or an orbit trap (the orbit's least distance to `trap`).
+   */
+  | {
+      readonly mode: 'measure';
+      readonly measure: Measure;
+      readonly a: Color;
+      readonly b: Color;
+      readonly c: Color;
+      readonly d: Color;
+      readonly scale: number;
+      readonly offset: number;
+      /** The orbit trap: a circle (radius 0: a point); read by the `trap` measure only. */
+      readonly trap: Circle;
+    };
+
+/** What a measure colouring measures (docs/math.md "Colouring by a measure"). */
+export const MEASURES = ['x', 'y', 'radius', 'argument', 'edge', 'speed', 'trap'] as const;
+export type Measure = (typeof MEASURES)[number];
 
 /**
  * An orbit seed (docs/math.md "orbit seeds", the paper's Figs. 2 and 11): tested at the start of every

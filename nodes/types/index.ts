@@ -15,12 +15,14 @@ import { latticeNode } from './lattice.ts';
 import { lineNode } from './line.ts';
 import { parallelLineNode, perpendicularBisectorNode, perpendicularLineNode } from './line-constructions.ts';
 import { loxodromicNode } from './loxodromic.ts';
+import { maskitNode } from './maskit.ts';
 import { angleNode, distanceNode } from './measures.ts';
 import { mobiusNode } from './mobius.ts';
 import { mobiusMatrixNode } from './mobius-matrix.ts';
 import { numberNode } from './number.ts';
 import { pointNode } from './point.ts';
 import { invertPointNode, midpointNode, reflectPointNode } from './point-constructions.ts';
+import { recipeNode } from './recipe.ts';
 import { rectangleKaleidoscopeNode } from './rectangle-kaleidoscope.ts';
 import { reflectionNode } from './reflection.ts';
 import { renderNode } from './render.ts';
@@ -53,6 +55,8 @@ export const NODE_TYPES = [
   mobiusNode,
   loxodromicNode,
   mobiusMatrixNode,
+  maskitNode,
+  recipeNode,
   translationNode,
   latticeNode,
   glideReflectionNode,

@@ -7,6 +7,7 @@ import {
   isAffine,
   isometricCircles,
   type MatrixClass,
+  type MobiusMatrix,
   normalizeMatrix,
 } from '../geometry/mobius-matrix.ts';
 import { degrees, fail, fmt } from './shared.ts';
@@ -30,6 +31,18 @@ export function describeMatrix(cls: MatrixClass): string {
     return `${head}: scale ×${fmt(cabs(k))}${cls.type === 'loxodromic' ? `, turn ${degrees(turn)}` : ''}`;
   }
   return head;
+}
+
+/** The Ford-rule element of a det-1 matrix with c ≠ 0: g inside I(g), g⁻¹ inside I(g⁻¹). */
+export function matrixElement(m: MobiusMatrix, nodeId: string): MobiusMatrixElement {
+  const { forward, backward } = isometricCircles(m);
+  return {
+    kind: 'mobius-matrix',
+    nodeId,
+    ...m,
+    forward: { ...forward, outside: false },
+    backward: { ...backward, outside: false },
+  };
 }
 
 const part = (label: string, dflt: number) =>
@@ -72,20 +85,18 @@ export const mobiusMatrixNode = defineNode({
       );
     }
     const cls = classifyMatrix(m);
-    const { forward, backward } = isometricCircles(m);
-    const element: MobiusMatrixElement = {
-      kind: 'mobius-matrix',
-      nodeId,
-      ...m,
-      forward: { ...forward, outside: false },
-      backward: { ...backward, outside: false },
-    };
+    const element = matrixElement(m, nodeId);
+    const { forward, backward } = element;
     // I(g) and I(g⁻¹) are disjoint or tangent iff |τ| ≥ 2 (their centres are |τ|/|c| apart). At
     // τ = 0 they coincide and g is an involution (g = g⁻¹): the outside is a fundamental domain.
     const t = cabs(cls.trace);
     const overlap = t < 2 * (1 - 1e-9) && t > 1e-9;
     return {
-      outputs: { element: [element], isometric: forward, isometricInverse: backward },
+      outputs: {
+        element: [element],
+        isometric: { c: forward.c, r: forward.r },
+        isometricInverse: { c: backward.c, r: backward.r },
+      },
       readout: describeMatrix(cls),
       diagnostics: overlap
         ? [

@@ -2,7 +2,13 @@ import { defineNode, type FieldCondition, type InputSpec, type ParamSpec } from 
 import { diag } from '../core/diagnostics.ts';
 import { LIMITS } from '../core/limits.ts';
 import { toHex } from '../core/port-values.ts';
-import { type Coloring, DEFAULT_COLORING, DEFAULT_TILE, type TileSpec } from '../core/tile-spec.ts';
+import {
+  type Coloring,
+  DEFAULT_COLORING,
+  DEFAULT_TILE,
+  type Measure,
+  type TileSpec,
+} from '../core/tile-spec.ts';
 import { BUILTIN_PICTURE, type Color, type Vec2 } from '../core/values.ts';
 import { dist } from '../geometry/vec.ts';
 import { PALETTES } from './colour.ts';
@@ -16,12 +22,26 @@ const colour = (c: Color, label: string, ui: Pick<InputSpec, 'when' | 'more'> = 
   default: toHex(c),
   ...ui,
 });
-const MODES = ['cosine', 'depth-hsv', 'parity', 'image', 'limit-set'] as const;
+/** The modes that colour by a measure of the run, each with its measure (docs/math.md "Colouring by a measure"). */
+const MEASURE_MODES = {
+  'final-point': null,
+  'edge-distance': 'edge',
+  'escape-speed': 'speed',
+  'orbit-trap': 'trap',
+} as const satisfies Record<string, Measure | null>;
+type MeasureMode = keyof typeof MEASURE_MODES;
+const MEASURE_MODE_NAMES = Object.keys(MEASURE_MODES) as MeasureMode[];
+const MODES = ['cosine', 'depth-hsv', 'parity', 'image', 'limit-set', ...MEASURE_MODE_NAMES] as const;
 type Mode = (typeof MODES)[number];
 /** Shown only in these colouring modes (shader-gen/colour.ts reads the field only there). */
 const inMode = (...modes: Mode[]): FieldCondition => ({ param: 'mode', is: modes });
 /** Limit-set mode paints only the limit set: tile fill, inner area and edges do not apply. */
-const TILED = inMode('cosine', 'depth-hsv', 'parity', 'image');
+const TILED = inMode('cosine', 'depth-hsv', 'parity', 'image', ...MEASURE_MODE_NAMES);
+/** The modes a cosine palette colours (its presets apply to all of them). */
+const PALETTED = inMode('cosine', ...MEASURE_MODE_NAMES);
+const isMeasureMode = (mode: Mode): mode is MeasureMode => mode in MEASURE_MODES;
+/** The final-point measures, by the name the node shows. */
+const COORDINATES = ['argument', 'x', 'y', 'radius'] as const;
 /** A depth-hsv setting in [lowest, 1]. */
 const hsv = (value: number, lowest: number, label: string, step = 0.01) =>
   ({
@@ -53,7 +73,7 @@ export const tileNode = defineNode({
   label: 'Tile colouring',
   category: 'Colour',
   color: '#b07cf0',
-  doc: 'How points are coloured: by depth (HSV, cosine palette, two tones), a picture seen through the kaleidoscope, or only the limit set; plus tile fill, orbit seeds, an inner area, limit-set colour, background and edges.',
+  doc: 'How points are coloured: by depth (HSV, cosine palette, two tones), by the final point, the distance to the tile edge, the escape speed or an orbit trap (palettes), a picture seen through the kaleidoscope, or only the limit set; plus tile fill, orbit seeds, an inner area, limit-set colour, background and edges.',
   inputs: {
     a: colour(cos.a, 'palette a', { when: CUSTOM }),
     b: colour(cos.b, 'palette b', { when: CUSTOM }),
@@ -95,6 +115,16 @@ export const tileNode = defineNode({
       optional: true,
       doc: 'orbit seeds: each one and all its images are painted',
     },
+    trapCenter: { type: 'point', label: 'trap centre', default: [0, 0], when: inMode('orbit-trap') },
+    trapRadius: {
+      type: 'number',
+      label: 'trap radius',
+      default: 0.5,
+      min: 0,
+      step: 0.01,
+      doc: 'the trap is this circle (0: a point); each point is coloured by how near its orbit comes to it',
+      when: inMode('orbit-trap'),
+    },
     inner: {
       type: 'circle',
       label: 'inner area',
@@ -113,7 +143,31 @@ export const tileNode = defineNode({
       options: PALETTE_CHOICES,
       label: 'palette',
       doc: 'a named cosine palette, or "custom" to set a, b, c, d yourself',
-      when: inMode('cosine'),
+      when: PALETTED,
+    },
+    coordinate: {
+      kind: 'enum',
+      default: 'argument',
+      options: COORDINATES,
+      label: 'measure',
+      doc: 'the final point’s argument (in turns), x, y or distance from the origin',
+      when: inMode('final-point'),
+    },
+    scale: {
+      kind: 'number',
+      default: 1,
+      step: 0.05,
+      label: 'palette scale',
+      doc: 'palette t = offset + scale × measure',
+      when: inMode(...MEASURE_MODE_NAMES),
+    },
+    offset: {
+      kind: 'number',
+      default: 0,
+      step: 0.01,
+      label: 'palette offset',
+      doc: 'palette t = offset + scale × measure',
+      when: inMode(...MEASURE_MODE_NAMES),
     },
     step: {
       kind: 'number',
@@ -186,8 +240,19 @@ export const tileNode = defineNode({
         ],
       };
     const palette = params.palette === 'custom' ? c : (PALETTES[params.palette] ?? c);
-    const coloring: Coloring =
-      mode === 'cosine'
+    const coloring: Coloring = isMeasureMode(mode)
+      ? {
+          mode: 'measure',
+          measure: MEASURE_MODES[mode] ?? params.coordinate,
+          a: palette.a,
+          b: palette.b,
+          c: palette.c,
+          d: palette.d,
+          scale: params.scale,
+          offset: params.offset,
+          trap: { c: inputs.trapCenter, r: inputs.trapRadius },
+        }
+      : mode === 'cosine'
         ? { mode, a: palette.a, b: palette.b, c: palette.c, d: palette.d, step: params.step }
         : mode === 'parity'
           ? { mode, even: c.even, odd: c.odd }
@@ -231,14 +296,22 @@ export const tileNode = defineNode({
       seeds.length > 0 ? `${seeds.length} seed${seeds.length === 1 ? '' : 's'}` : '',
       tile.inner ? 'inner area' : '',
     ].filter(Boolean);
-    const shown = mode === 'cosine' && params.palette !== 'custom' ? `${mode} · ${params.palette}` : mode;
+    const shown = [
+      mode === 'final-point' ? `${mode} (${params.coordinate})` : mode,
+      (mode === 'cosine' || isMeasureMode(mode)) && params.palette !== 'custom' ? params.palette : '',
+    ]
+      .filter(Boolean)
+      .join(' · ');
     return { outputs: { tile }, diagnostics, readout: [shown, ...extras].join(', ') };
   },
   overlay: ({ params, inputs }) =>
     params.mode === 'image'
       ? [{ shape: 'circle', circle: { c: inputs.imageCenter, r: inputs.imageSize / 2 } }]
-      : [],
+      : params.mode === 'orbit-trap'
+        ? [{ shape: 'circle', circle: { c: inputs.trapCenter, r: inputs.trapRadius } }]
+        : [],
   handles: ({ params, inputs }) => {
+    if (params.mode === 'orbit-trap') return [{ handle: 'trap-center', at: inputs.trapCenter }];
     if (params.mode !== 'image') return [];
     const c = inputs.imageCenter;
     return [
@@ -248,6 +321,7 @@ export const tileNode = defineNode({
   },
   /** The centre moves the picture; the top handle scales it (height = 2·distance) and turns it. */
   drag: (handle, to, ctx) => {
+    if (handle === 'trap-center') return { trapCenter: [...to] };
     if (handle === 'picture-center') return { imageCenter: [...to] };
     const c = ctx.inputs.imageCenter;
     const turn = Math.atan2(to[1] - c[1], to[0] - c[0]) - Math.PI / 2;

@@ -9,6 +9,7 @@ import type { ElementRecord } from './element-kind.ts';
 import { glideReflection } from './glide-reflection.ts';
 import { inversion, outerInversion } from './inversion.ts';
 import { loxodromic } from './loxodromic.ts';
+import { maskit } from './maskit.ts';
 import { mobius } from './mobius.ts';
 import { mobiusMatrix } from './mobius-matrix.ts';
 import { parallelMirrors } from './parallel-mirrors.ts';
@@ -37,6 +38,7 @@ export const ELEMENTS: ElementRegistry = {
   'glide-reflection': glideReflection,
   rotation,
   'spiral-similarity': spiralSimilarity,
+  maskit,
 };
 
 /** The record of `e`'s kind (one lookup; the cast is safe by the registry's mapped type). */

@@ -12,7 +12,7 @@
  */
 import type { Coloring, TileSpec } from '../../nodes/core/scene.ts';
 import type { Color } from '../../nodes/core/values.ts';
-import type { DepthColoring } from '../colour.ts';
+import type { DepthColoring, MeasureColoring } from '../colour.ts';
 import { rotationPair } from '../placement.ts';
 import { toLinear } from '../srgb.ts';
 import { floatLiteral } from './literal.ts';
@@ -43,7 +43,7 @@ export function shadesWithoutBlending(tile: TileSpec): boolean {
   const seeds = tile.seeds ?? [];
   if (seeds.length > 0 && (tile.seedFade || seeds.some((s) => s.kind !== 'disk'))) return false;
   if (tile.seedsOnly) return true;
-  return tile.edgeWidth <= 0 && mode !== 'limit-set' && mode !== 'image';
+  return tile.edgeWidth <= 0 && mode !== 'limit-set' && mode !== 'image' && mode !== 'measure';
 }
 
 export const srgbToLinearGlsl = glslFunction(
@@ -138,7 +138,7 @@ export function depthColourGlsl(
  * u_pictureRot = (cos θ, sin θ)), the parity colours (constants), else the palette's depth colour.
  */
 export function finalColourGlsl(
-  coloring: Exclude<Coloring, { mode: 'limit-set' }>,
+  coloring: Exclude<Coloring, { mode: 'limit-set' | 'measure' }>,
   v: SceneValues,
   space: ColourSpace,
 ): GlslFunction {
@@ -170,10 +170,28 @@ export function finalColourGlsl(
 }
 
 /**
+ * `vec3 measureColour(float m)`: colour.ts measureColour, the cosine palette of offset + scale·m,
+ * decoded to linear light (the palette is computed per pixel).
+ */
+export function measureColourGlsl(coloring: MeasureColoring, v: SceneValues): GlslFunction {
+  const [a, b, c, d] = (['a', 'b', 'c', 'd'] as const).map((k) =>
+    v.vec(`u_palette${k.toUpperCase()}`, coloring[k]),
+  );
+  const scale = v.float('u_measureScale', coloring.scale);
+  const offset = v.float('u_measureOffset', coloring.offset);
+  return glslFunction(
+    'measureColour',
+    `vec3 measureColour(float m) {\n  return toLinear(cosinePalette(${a}, ${b}, ${c}, ${d}, ${offset} + ${scale} * m));\n}`,
+    [toLinearGlsl, cosinePaletteGlsl],
+  );
+}
+
+/**
  * `vec3 shade(bool clipped, bool escaped, int depth, float edgePixels, vec2 p, float limitPixels,
- * int seed)`: colour of one sample in `space` (linear unless shadesWithoutBlending), in colour.ts
+ * int seed[, float measure])`: colour of one sample in `space` (linear unless shadesWithoutBlending), in colour.ts
  * shade's order (clip, seed, seeds only, limit-set mode, limit, inner circle, fill, mode colour,
- * edges); each option is emitted only when the tile uses it. Edges have a 1-pixel antialiased
+ * edges); each option is emitted only when the tile uses it (the `measure` argument too: measure
+ * mode only). Edges have a 1-pixel antialiased
  * falloff, t = clamp(edgePixels − width/2 + 0.5, 0, 1).
  */
 export function shadeGlsl(
@@ -187,8 +205,10 @@ export function shadeGlsl(
   const background = colourValue(v, 'u_background', tile.background, space);
   const limit = colourValue(v, 'u_limitColor', tile.limitColor, space);
   const deps: GlslFunction[] = [];
+  const coloring = tile.coloring;
+  const measured = coloring.mode === 'measure' ? coloring : null;
   const lines = [
-    'vec3 shade(bool clipped, bool escaped, int depth, float edgePixels, vec2 p, float limitPixels, int seed) {',
+    `vec3 shade(bool clipped, bool escaped, int depth, float edgePixels, vec2 p, float limitPixels, int seed${measured ? ', float measure' : ''}) {`,
     `  if (clipped) return ${background};`,
   ];
   if (seedColour) {
@@ -216,11 +236,15 @@ export function shadeGlsl(
         `    return ${background};`,
       );
     }
-    deps.push(finalColourGlsl(tile.coloring, v, space));
+    let colour = 'finalColour(depth, p)';
+    if (coloring.mode === 'measure') {
+      deps.push(measureColourGlsl(coloring, v));
+      colour = 'measureColour(measure)';
+    } else if (coloring.mode !== 'limit-set') deps.push(finalColourGlsl(coloring, v, space));
     if (tile.fill) {
       const fill = colourValue(v, 'u_fill', tile.fill, space);
-      lines.push(`  vec3 base = depth == 0 ? ${fill} : finalColour(depth, p);`);
-    } else lines.push('  vec3 base = finalColour(depth, p);');
+      lines.push(`  vec3 base = depth == 0 ? ${fill} : ${colour};`);
+    } else lines.push(`  vec3 base = ${colour};`);
     if (tile.edgeWidth > 0) {
       const width = v.float('u_edgeWidth', tile.edgeWidth);
       const colour = colourValue(v, 'u_edgeColor', tile.edgeColor, space);

@@ -7,11 +7,13 @@
  *   restart from the first; no element holds p → escaped. Every pass either returns or adds ≥ 1
  *   to depth, so after at most maxIter passes depth ≥ maxIter.
  */
-import type { Scene, SceneElement } from '../../nodes/core/scene.ts';
+import type { Measure, Scene, SceneElement } from '../../nodes/core/scene.ts';
+import type { Circle } from '../../nodes/core/values.ts';
 import type { ElementRecord } from '../elements/element-kind.ts';
 import { elementRecord } from '../elements/index.ts';
 import { farDisk, limitReach } from '../far-disk.ts';
 import { type ColourSpace, shadeGlsl } from './colour.glsl.ts';
+import { floatLiteral } from './literal.ts';
 import type { SeedArg, SeedsGlsl } from './seeds.glsl.ts';
 import { type GlslFunction, glslFunction } from './snippet.ts';
 import type { SourceBuilder } from './source.ts';
@@ -74,6 +76,7 @@ export function emitRunIis(
   placed: readonly PlacedElement[],
   maxIter: string,
   seedArgs: readonly SeedArg[] | null = null,
+  trapCircle: string | null = null,
 ): void {
   const withSeeds = seedArgs !== null;
   const local = (expr: string) => hoistedRow(expr) ?? expr;
@@ -88,21 +91,34 @@ export function emitRunIis(
   (seedArgs ?? []).forEach((a, k) => {
     if (seedLocals[k] !== a.expr) hoisted.push(`  ${a.type} ${seedLocals[k]} = ${a.expr};`);
   });
+  // An orbit trap (raster.ts's visit) is copied into a local like the seeds when it is a uniform.
+  const trapLocal = trapCircle && /^\w+$/.test(trapCircle) ? 'trapCircle' : trapCircle;
+  if (trapCircle && trapLocal !== trapCircle) hoisted.push(`  vec3 ${trapLocal} = ${trapCircle};`);
   // With seeds (interpret.ts runIis's `visit`): at the start of every pass, a point in a seed stops
-  // the run, not escaped, with `seed` its index.
+  // the run, not escaped, with `seed` its index; an orbit trap sees the point first.
   const seedTest = (indent: string) => [
-    `${indent}seed = seedAt(${['p', ...seedLocals].join(', ')});`,
-    `${indent}if (seed >= 0) return false;`,
+    ...(trapLocal ? [`${indent}trap = min(trap, orbitTrapDistance(p, ${trapLocal}));`] : []),
+    ...(withSeeds
+      ? [
+          `${indent}seed = seedAt(${['p', ...seedLocals].join(', ')});`,
+          `${indent}if (seed >= 0) return false;`,
+        ]
+      : []),
+  ];
+  const args = [
+    'inout vec2 p',
+    'inout float s',
+    'inout int depth',
+    ...(withSeeds ? ['inout int seed'] : []),
+    ...(trapLocal ? ['inout float trap'] : []),
   ];
   const literalLimit = /^\d+$/.test(maxIter);
   out.push(
-    withSeeds
-      ? 'bool runIis(inout vec2 p, inout float s, inout int depth, inout int seed) {'
-      : 'bool runIis(inout vec2 p, inout float s, inout int depth) {',
+    `bool runIis(${args.join(', ')}) {`,
     ...hoisted,
     ...(literalLimit ? [] : [`  int maxIter = ${maxIter};`]),
     `  for (; depth < ${literalLimit ? maxIter : 'maxIter'}; ++depth) {`,
-    ...(withSeeds ? seedTest('    ') : []),
+    ...seedTest('    '),
   );
   placed.forEach(({ record, data }, i) => {
     out.block(i + 1, [
@@ -113,7 +129,7 @@ export function emitRunIis(
     ]);
   });
   out.push('    return true;', '  }');
-  if (withSeeds) out.push(...seedTest('  '));
+  out.push(...seedTest('  '));
   out.push('  // depth ≥ maxIter: escaped only if no element holds p.');
   placed.forEach(({ record, data }, i) => {
     out.block(i + 1, [`  if (${record.glsl.inside.name}(p, ${data.map(local).join(', ')})) return false;`]);
@@ -132,7 +148,44 @@ export function emitBoundaryDistance(out: SourceBuilder, placed: readonly Placed
 
 /** Whether the sample needs the tile-edge distance: edges, or the limit-set estimate. */
 export const needsEdgeDistance = (scene: Scene): boolean =>
-  scene.tile.edgeWidth > 0 || scene.tile.coloring.mode === 'limit-set';
+  scene.tile.edgeWidth > 0 ||
+  scene.tile.coloring.mode === 'limit-set' ||
+  (scene.tile.coloring.mode === 'measure' && scene.tile.coloring.measure === 'edge');
+
+/** The trap circle of an orbit-trap colouring, else null. */
+export const trapOf = (scene: Scene): Circle | null =>
+  scene.tile.coloring.mode === 'measure' && scene.tile.coloring.measure === 'trap'
+    ? scene.tile.coloring.trap
+    : null;
+
+/** `float orbitTrapDistance(vec2 p, vec3 trap)`: colour.ts orbitTrapDistance, ||p − c| − r|. */
+export const orbitTrapDistanceGlsl = glslFunction(
+  'orbitTrapDistance',
+  `
+float orbitTrapDistance(vec2 p, vec3 trap) {
+  return abs(length(p - trap.xy) - trap.z);
+}`,
+);
+
+/** The GLSL expression of colour.ts measureValue (every input in scope in shadeSample). */
+function measureExpr(measure: Measure): string {
+  switch (measure) {
+    case 'x':
+      return 'p.x';
+    case 'y':
+      return 'p.y';
+    case 'radius':
+      return 'length(p)';
+    case 'argument':
+      return `atan(p.y, p.x) / ${floatLiteral(2 * Math.PI)}`;
+    case 'edge':
+      return 'edgeWorld';
+    case 'speed':
+      return 'log(s)';
+    case 'trap':
+      return 'trap';
+  }
+}
 
 /**
  * `float farDistance(vec2 p, vec3 far)`: far-disk.ts farDistance, R > ρ ? (R − ρ)·R/ρ : 0 with
@@ -152,7 +205,7 @@ float farDistance(vec2 p, vec3 far) {
 /**
  * `vec4 shadeSample(vec2 w, float pixelWorld, float bgAlpha)`: raster.ts's per-sample body —
  * clip test, IIS run (stopping at seeds), edge distance in pixels (max(d, far distance) / s /
- * pixelWorld), shade (its colour in `space`); alpha is bgAlpha on the background outside the clip
+ * pixelWorld), the measure (measure mode), shade (its colour in `space`); alpha is bgAlpha on the background outside the clip
  * disk, else 1. Returns shade's dependencies for the assembler.
  */
 export function shadeSampleGlsl(
@@ -174,13 +227,17 @@ export function shadeSampleGlsl(
     );
   } else lines.push('  bool clipped = false;');
   lines.push('  vec2 p = w;', '  float s = 1.0;', '  int depth = 0;', '  int seed = -1;');
+  const trap = trapOf(scene);
+  if (trap) lines.push(`  float trap = ${GLSL_FAR};`);
+  const runArgs = ['p', 's', 'depth', ...(seeds ? ['seed'] : []), ...(trap ? ['trap'] : [])];
   lines.push(
-    seeds
-      ? '  bool escaped = clipped ? false : runIis(p, s, depth, seed);'
-      : '  bool escaped = clipped ? false : runIis(p, s, depth);',
+    `  bool escaped = clipped ? false : runIis(${runArgs.join(', ')});`,
     `  float edgePixels = ${GLSL_FAR};`,
     `  float limitPixels = ${GLSL_FAR};`,
   );
+  const coloring = scene.tile.coloring;
+  const edgeMeasure = coloring.mode === 'measure' && coloring.measure === 'edge';
+  if (edgeMeasure) lines.push(`  float edgeWorld = ${GLSL_FAR};`);
   const deps: GlslFunction[] = [];
   if (edges) {
     const far = farDisk(scene.elements);
@@ -192,14 +249,17 @@ export function shadeSampleGlsl(
       deps.push(farDistanceGlsl);
     } else lines.push('    float d = sceneBoundaryDistance(p);');
     lines.push('    edgePixels = d / s / pixelWorld;');
+    if (edgeMeasure) lines.push('    edgeWorld = d;');
     if (reach !== null)
       lines.push(`    limitPixels = (d + ${v.float('u_limitReach', reach)}) / s / pixelWorld;`);
     lines.push('  }');
   }
-  lines.push(
-    '  return vec4(shade(clipped, escaped, depth, edgePixels, p, limitPixels, seed), clipped ? bgAlpha : 1.0);',
-    '}',
-  );
+  const shadeArgs = ['clipped', 'escaped', 'depth', 'edgePixels', 'p', 'limitPixels', 'seed'];
+  if (coloring.mode === 'measure') {
+    lines.push(`  float measure = ${measureExpr(coloring.measure)};`);
+    shadeArgs.push('measure');
+  }
+  lines.push(`  return vec4(shade(${shadeArgs.join(', ')}), clipped ? bgAlpha : 1.0);`, '}');
   return glslFunction('shadeSample', lines.join('\n'), [
     ...deps,
     ...(seeds ? [seeds.seedAt] : []),

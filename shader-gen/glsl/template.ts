@@ -10,8 +10,10 @@ import {
   emitBoundaryDistance,
   emitRunIis,
   needsEdgeDistance,
+  orbitTrapDistanceGlsl,
   placeElements,
   shadeSampleGlsl,
+  trapOf,
 } from './iis.glsl.ts';
 import { floatLiteral, intLiteral } from './literal.ts';
 import { seedsGlsl } from './seeds.glsl.ts';
@@ -64,15 +66,23 @@ function sceneParts(scene: Scene, v: SceneValues, withColour: boolean, space: Co
   const seedList = withColour ? (scene.tile.seeds ?? []) : [];
   const seeds = seedList.length > 0 ? seedsGlsl(seedList, v, space) : null;
   const shadeSample = withColour ? shadeSampleGlsl(scene, v, seeds, space) : null;
+  // The orbit trap only colours: the probe variant is the pure IIS loop.
+  const trap = withColour ? trapOf(scene) : null;
+  const trapCircle = trap ? v.vec('u_trap', [trap.c[0], trap.c[1], trap.r]) : null;
   const lineMap: Record<number, string> = {};
   scene.elements.forEach((e, i) => {
     lineMap[i + 1] = e.nodeId;
   });
   /** Writes the functions, the loop and shadeSample (colour only) after the header. */
   const emitBody = (out: SourceBuilder, extra: readonly GlslFunction[]) => {
-    const fns = [...elementFunctions(placed, edges), ...(shadeSample?.deps ?? []), ...extra];
+    const fns = [
+      ...elementFunctions(placed, edges),
+      ...(trap ? [orbitTrapDistanceGlsl] : []),
+      ...(shadeSample?.deps ?? []),
+      ...extra,
+    ];
     for (const code of collectFunctions(fns)) out.push(code, '');
-    emitRunIis(out, placed, maxIter, seeds?.seedAtArgs ?? null);
+    emitRunIis(out, placed, maxIter, seeds?.seedAtArgs ?? null, trapCircle);
     out.push('');
     if (edges) {
       emitBoundaryDistance(out, placed);

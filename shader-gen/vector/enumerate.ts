@@ -105,6 +105,7 @@ const KIND_NAMES: Partial<Record<SceneElement['kind'], string>> = {
   'glide-reflection': 'a glide-reflection fold',
   rotation: 'a rotation fold',
   'spiral-similarity': 'a spiral similarity',
+  maskit: 'a Maskit group',
 };
 
 /** A key equal for curves that agree to `eps` (world units): the enumeration's duplicate test. */

@@ -60,6 +60,17 @@ describe('one sample, nothing blended: no conversion at all', () => {
         'spherical-wedge-parity-edges',
         'strips-hsv-edges',
         'triangle-333-picture',
+        // Measure colourings are shaded in linear light (colour.glsl.ts measureColour).
+        'matrix-escape-speed',
+        'rose-final-radius',
+        'schottky-argument',
+        'schottky-edge-distance',
+        'schottky-orbit-trap-seeds',
+        'strips-final-y',
+        'triangle-333-final-x-edges',
+        'triangle-333-orbit-trap',
+        'maskit-2i-cosine-edges',
+        'maskit-cusp-limit-set',
       ].sort(),
     );
   });

@@ -5,7 +5,7 @@
  */
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
-import { LIMITS, type Scene, type SceneElement } from '../../nodes/core/scene.ts';
+import { type Coloring, LIMITS, type Scene, type SceneElement } from '../../nodes/core/scene.ts';
 import { compile, FRAME_UNIFORMS, shadertoySource } from '../../shader-gen/compile.ts';
 import { elementRecord } from '../../shader-gen/elements/index.ts';
 import { FLOAT32_MAX, floatLiteral } from '../../shader-gen/glsl/literal.ts';
@@ -15,6 +15,7 @@ import {
   EVERY_KIND,
   HAND_MADE_SCENES,
   makeScene,
+  measureColoring,
   reflection,
   TRIANGLE_333,
 } from './support/scenes.ts';
@@ -255,6 +256,16 @@ describe('literals', () => {
     expect(program.uniforms.every((u) => u.value.every(Number.isFinite))).toBe(true);
     expect(program.diagnostics.map((d) => d.code)).toContain('KF405');
     expect(compile(scene, { baked: true }).source).not.toMatch(/Infinity/);
+  });
+
+  it('KF405 also watches what is packed (r² of a radius within range) and a measure colouring’s scale', () => {
+    const inversionScene = makeScene([{ kind: 'inversion', nodeId: 'i', c: [0, 0], r: 1e10 }]);
+    expect(compile(inversionScene).diagnostics.map((d) => d.code)).toContain('KF405');
+    const scaled = makeScene(TRIANGLE_333, {
+      coloring: { ...measureColoring('x'), scale: 1e30 } as Coloring,
+    });
+    expect(compile(scaled).diagnostics.map((d) => d.code)).toContain('KF405');
+    expect(compile(makeScene(TRIANGLE_333, { coloring: measureColoring('x') })).diagnostics).toEqual([]);
   });
 });
 

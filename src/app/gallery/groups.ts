@@ -23,12 +23,19 @@ export const GALLERY_SECTIONS: readonly GallerySection[] = [
       'glide-reflection-frieze',
       'spherical-235',
       'hyperbolic-237',
+      'colour-by-final-point',
       'modular-23inf',
     ],
   },
   {
     title: 'Kleinian and Schottky groups',
-    ids: ['apollonian-gasket', 'schottky-pair', 'schottky-matrix-generators', 'spiral-similarity-pearls'],
+    ids: [
+      'apollonian-gasket',
+      'schottky-pair',
+      'schottky-matrix-generators',
+      'recipe-grandma-maskit',
+      'spiral-similarity-pearls',
+    ],
   },
   {
     title: 'Figures from the paper',
@@ -44,10 +51,12 @@ export const GALLERY_SECTIONS: readonly GallerySection[] = [
       'loxodromic-spiral',
       'fig22-internal-area',
       'fig23-constant-width-circles',
+      'fig41-maskit-limit-set',
+      'fig42-maskit-inversions',
     ],
   },
   { title: 'Pictures', ids: ['image-kaleidoscope-245', 'seed-picture-orbit'] },
-  { title: 'Animation', ids: ['animated-breathing-loxodromic', 'fig39-schottky-waltz'] },
+  { title: 'Animation', ids: ['animated-breathing-loxodromic', 'fig39-schottky-waltz', 'fig40-morph'] },
 ];
 
 export interface GalleryGroup {

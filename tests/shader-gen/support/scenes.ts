@@ -6,6 +6,7 @@
 import {
   type Coloring,
   DEFAULT_TILE,
+  type Measure,
   type Scene,
   type SceneElement,
   type SeedSpec,
@@ -20,7 +21,25 @@ export const COLORINGS: Readonly<Record<Coloring['mode'], Coloring>> = {
   parity: { mode: 'parity', even: [0.93, 0.91, 0.85], odd: [0.13, 0.16, 0.24] },
   image: { mode: 'image', image: BUILTIN_PICTURE, center: [0.45, 0.3], size: 0.9, rotation: 0.3 },
   'limit-set': { mode: 'limit-set', glow: 4 },
+  measure: {
+    mode: 'measure',
+    measure: 'argument',
+    a: [0.5, 0.5, 0.5],
+    b: [0.5, 0.5, 0.5],
+    c: [1, 1, 1],
+    d: [0, 0.1, 0.2],
+    scale: 1,
+    offset: 0.1,
+    trap: { c: [0.4, -0.3], r: 0.25 },
+  },
 };
+
+/** The measure colouring reading `measure`, scaled by `scale`. */
+export const measureColoring = (measure: Measure, scale = 1): Coloring => ({
+  ...(COLORINGS.measure as Extract<Coloring, { mode: 'measure' }>),
+  measure,
+  scale,
+});
 
 export interface SceneOptions {
   readonly coloring?: Coloring;
@@ -150,6 +169,11 @@ export const LOXODROMIC: SceneElement[] = [
   },
 ];
 
+/** The Maskit group at the cusp μ = 2i (its isometric circles tangent: an exact Ford domain). */
+export const MASKIT_2I: SceneElement[] = [{ kind: 'maskit', nodeId: 'mk', mu: [0, 2] }];
+/** Near the 2/5 cusp: the circles overlap, so the step's choice changes along a line (lens). */
+export const MASKIT_CUSP: SceneElement[] = [{ kind: 'maskit', nodeId: 'mk', mu: [0.766588, 1.642139] }];
+
 /** Every element kind at least once, in one scene. */
 export const EVERY_KIND: SceneElement[] = [
   ...TRIANGLE_333,
@@ -160,6 +184,7 @@ export const EVERY_KIND: SceneElement[] = [
   ...MATRIX,
   ...LOXODROMIC,
   ...SPHERICAL_WEDGE,
+  ...MASKIT_2I,
 ];
 
 /** A disk seed and a picture seed outside the Schottky circles (both inside the tile). */
@@ -243,5 +268,50 @@ export const HAND_MADE_SCENES: Readonly<Record<string, Scene>> = {
     maxIterations: 60,
     scale: 5,
     tile: { inner: { c: [0.3, -0.2], r: 1.2 } },
+  }),
+  // Measure colourings (colour.ts measureValue): the final point, edge distance, speed, trap.
+  'schottky-argument': makeScene(SCHOTTKY, { coloring: COLORINGS.measure, maxIterations: 60, scale: 5 }),
+  'triangle-333-final-x-edges': makeScene(TRIANGLE_333, {
+    coloring: measureColoring('x', 0.8),
+    edgeWidth: 1,
+    scale: 3,
+  }),
+  'strips-final-y': makeScene(STRIPS, { coloring: measureColoring('y', 2), scale: 3 }),
+  'rose-final-radius': makeScene(ROSE, {
+    coloring: measureColoring('radius', 3),
+    scale: 2.5,
+    maxIterations: 200,
+  }),
+  'schottky-edge-distance': makeScene(SCHOTTKY, {
+    coloring: measureColoring('edge', 2),
+    maxIterations: 60,
+    scale: 5,
+  }),
+  'matrix-escape-speed': makeScene(MATRIX, { coloring: measureColoring('speed', 0.15), scale: 7 }),
+  'schottky-orbit-trap-seeds': makeScene(SCHOTTKY, {
+    coloring: measureColoring('trap', 1.5),
+    maxIterations: 60,
+    scale: 5,
+    tile: { seeds: [SEED_DISK] },
+  }),
+  'triangle-333-orbit-trap': makeScene(TRIANGLE_333, { coloring: measureColoring('trap', 2), scale: 3 }),
+  // The Maskit group (shader-gen/elements/maskit.ts), exact and with overlapping circles.
+  'maskit-2i-cosine-edges': makeScene(MASKIT_2I, {
+    edgeWidth: 1,
+    maxIterations: 200,
+    center: [0.3, 1],
+    scale: 3,
+  }),
+  'maskit-cusp-hsv': makeScene(MASKIT_CUSP, {
+    coloring: COLORINGS['depth-hsv'],
+    maxIterations: 200,
+    center: [0, 0.8],
+    scale: 2.5,
+  }),
+  'maskit-cusp-limit-set': makeScene(MASKIT_CUSP, {
+    coloring: COLORINGS['limit-set'],
+    maxIterations: 200,
+    center: [0, 0.8],
+    scale: 2.5,
   }),
 };

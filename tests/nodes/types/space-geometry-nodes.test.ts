@@ -98,8 +98,8 @@ describe('sphere-4pt', () => {
 });
 
 describe('sphere-4pt through P, its inverses and Q', () => {
-  const s1 = { center: [-1.5, 0, 0], radius: 1 };
-  const s2 = { center: [1.5, 0, 0], radius: 1 };
+  const s1: Sphere = { center: [-1.5, 0, 0], radius: 1 };
+  const s2: Sphere = { center: [1.5, 0, 0], radius: 1 };
 
   it('passes through P and Q at right angles to S1 and S2 (property)', () => {
     fc.assert(
@@ -114,7 +114,7 @@ describe('sphere-4pt through P, its inverses and Q', () => {
         for (const x of [p, q]) expect(dist3(x, s.center) / s.radius).toBeCloseTo(1, 6);
         // Orthogonal: |c − c_i|² = r² + r_i² (docs/math-3d.md §1).
         for (const b of [s1, s2])
-          expect(dist3(s.center, b.center as Vec3) ** 2 / (s.radius ** 2 + 1)).toBeCloseTo(1, 6);
+          expect(dist3(s.center, b.center) ** 2 / (s.radius ** 2 + 1)).toBeCloseTo(1, 6);
       }),
       SEED,
     );

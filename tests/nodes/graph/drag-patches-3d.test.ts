@@ -73,15 +73,19 @@ describe('dragPatches3d', () => {
             // A point on the sphere: the new radius is the distance dropped at.
             expect(dist3(at, newCentre!)).toBeCloseTo(dist3(to, centre!.at), 9);
           } else if (handle.endsWith('corner')) {
-            sub3(at, newCentre!).forEach((v, i) =>
-              expect(v).toBeCloseTo(Math.abs(to[i]! - centre!.at[i]!), 9),
-            );
+            sub3(at, newCentre!).forEach((v, i) => {
+              expect(v).toBeCloseTo(Math.abs(to[i]! - centre!.at[i]!), 9);
+            });
           } else if (handle.endsWith('.normal')) {
             // An inline plane's normal is stored unit: the handle points where it was dropped.
             const want = normalize3(sub3(to, centre!.at));
-            sub3(at, newCentre!).forEach((v, i) => expect(v).toBeCloseTo(want[i]!, 9));
+            sub3(at, newCentre!).forEach((v, i) => {
+              expect(v).toBeCloseTo(want[i]!, 9);
+            });
           } else {
-            at.forEach((v, i) => expect(v).toBeCloseTo(to[i]!, 9));
+            at.forEach((v, i) => {
+              expect(v).toBeCloseTo(to[i]!, 9);
+            });
           }
         }),
         { ...SEED, numRuns: 60 },
@@ -138,7 +142,7 @@ describe('dragPatches3d', () => {
 /** Finite numbers of every size a user might type, including the awkward ones. */
 const num = fc.oneof(real(-10, 10), real(-1e6, 1e6), fc.constantFrom(0, 1e-12, -1e-12, 1e6, -1));
 const vec = fc.tuple(num, num, num);
-const valueOf: Record<string, fc.Arbitrary<unknown>> = {
+const arbitraryOf: Record<string, fc.Arbitrary<unknown>> = {
   number: num,
   point3: vec,
   sphere: fc.record({ center: vec, radius: num }),
@@ -150,8 +154,8 @@ describe('3D evaluation with random finite parameters', () => {
 
   it.each(types.map((d) => d.type))('%s never yields NaN or an internal error (property)', (type) => {
     const def = registry.get(type)!;
-    const inputs = Object.entries(def.inputs).filter(([, s]) => valueOf[s.type]);
-    const params = fc.record(Object.fromEntries(inputs.map(([k, s]) => [k, valueOf[s.type]!])));
+    const inputs = Object.entries(def.inputs).filter(([, s]) => arbitraryOf[s.type]);
+    const params = fc.record(Object.fromEntries(inputs.map(([k, s]) => [k, arbitraryOf[s.type]!])));
     fc.assert(
       fc.property(params, (p) => {
         const ev = evaluateGraph(withRender(node('n', type, p)), registry);

@@ -163,7 +163,9 @@ describe('plane', () => {
           const p = alone('plane', { point: q, normal: n }).outputs?.plane as Plane;
           expect(Math.hypot(...p.normal)).toBeCloseTo(1, 12);
           const l = Math.hypot(...n);
-          p.normal.forEach((v, i) => expect(v).toBeCloseTo(n[i]! / l, 12));
+          p.normal.forEach((v, i) => {
+            expect(v).toBeCloseTo(n[i]! / l, 12);
+          });
         },
       ),
       SEED,

@@ -8,7 +8,7 @@ import { describe, expect, it } from 'vitest';
 import type { Vec3 } from '../../../nodes/core/scene-3d.ts';
 import { dist3, normalize3, sub3 } from '../../../nodes/geometry/space/vec3.ts';
 import type { GraphDoc } from '../../../nodes/graph/document.ts';
-import type { NodePatch } from '../../../nodes/graph/drag-patches.ts';
+import { type NodePatch, originalParams } from '../../../nodes/graph/drag-patches.ts';
 import { dragPatches3d } from '../../../nodes/graph/drag-patches-3d.ts';
 import { allFinite, evaluateGraph } from '../../../nodes/graph/evaluate.ts';
 import { registry } from '../../../nodes/types/index.ts';
@@ -120,6 +120,19 @@ describe('dragPatches3d', () => {
     ]);
     expect(dragPatches3d(ev, { nodeId: 'm', handle: 'sphere.radius' }, [1, 0, 2])).toEqual([
       { nodeId: 's', params: { radius: 2 } },
+    ]);
+  });
+
+  it('restores the values before a drag (Escape), defaults included', () => {
+    const d = withRender(node('m', 'sphere-inversion'), [], [node('p', 'point-3d', { x: 2 })]);
+    const ev = evaluateGraph(d, registry);
+    const moved = [
+      ...dragPatches3d(ev, { nodeId: 'm', handle: 'sphere.center' }, [1, 1, 1]),
+      ...dragPatches3d(ev, { nodeId: 'p', handle: 'point' }, [3, 4, 5]),
+    ];
+    expect(originalParams(ev, moved)).toEqual([
+      { nodeId: 'm', params: { sphere: { center: [0, 0, 0], radius: 1 } } },
+      { nodeId: 'p', params: { x: 2, y: 0, z: 0 } },
     ]);
   });
 

@@ -154,6 +154,17 @@ export const DIAGNOSTICS = table({
       `input "${port}" is muted: node "${node}" is muted (or fed by a muted node) and passes nothing on`,
   },
   drawnInstead: { code: 'KF315', severity: 'info', text: (detail: string) => detail },
+  cameraInside: {
+    code: 'KF316',
+    severity: 'warning',
+    text: (what: string, why: string) => `the camera is inside ${what}: ${why}`,
+  },
+  seedOutsideDomain: {
+    code: 'KF314',
+    severity: 'warning',
+    text: (seed: string, element: string) =>
+      `seed "${seed}" is not in the fundamental domain: the region of element "${element}" holds part of it, so its images overlap (move the seed out of that region)`,
+  },
   tooManyElements: {
     code: 'KF401',
     severity: 'error',

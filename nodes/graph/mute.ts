@@ -1,6 +1,6 @@
 /**
  * What a muted (bypassed) node passes on (docs/architecture.md "Muted nodes"): each `element`
- * output is the empty list (a muted mirror or generator contributes no elements, so the picture is
+ * (or space `element3`) output is the empty list (a muted mirror or generator contributes no elements, so the picture is
  * the graph without it); any other output passes the value of the node's first input of the same
  * port type through (in declaration order); an output with neither is absent, and its dependants
  * report "input muted" (KF313) instead of an error.
@@ -15,7 +15,8 @@ export function mutedOutputs(
 ): Readonly<Record<string, unknown>> {
   const out: Record<string, unknown> = {};
   for (const [port, spec] of Object.entries(def.outputs)) {
-    if (spec.type === 'element') {
+    // Element lists, plane and space alike: a muted mirror contributes none.
+    if (spec.type === 'element' || spec.type === 'element3') {
       out[port] = [];
       continue;
     }

@@ -20,7 +20,11 @@ export function declaredGroup(meta: Readonly<Record<string, unknown>>): string |
   return tags.some((t) => typeof t === 'string' && t.toLowerCase() === '3d') ? '3D' : undefined;
 }
 
-const modules = import.meta.glob('../../examples/*.kleinflow.json', { eager: true, import: 'default' });
+// 3D examples live in examples/3d/ (see src/cli/examples.ts); their ids are their file names too.
+const modules = import.meta.glob(['../../examples/*.kleinflow.json', '../../examples/3d/*.kleinflow.json'], {
+  eager: true,
+  import: 'default',
+});
 
 /** Examples that load cleanly, sorted by title (a broken example file is skipped, never shown). */
 export const EXAMPLES: readonly Example[] = Object.entries(modules)

@@ -86,4 +86,20 @@ describe('muted nodes', () => {
     expect(ev.nodes.get('out')?.diagnostics.map((d) => d.code)).toEqual(['KF313']);
     expect(evaluateGraph(k(false), registry).scene.clip).not.toBeNull();
   });
+
+  it('a muted sphere inversion leaves the 3D scene exactly as without it, with no message downstream', async () => {
+    const { readFileSync } = await import('node:fs');
+    const file = new URL(
+      '../../../examples/3d/fig11-sphere-inversion-fractal.kleinflow.json',
+      import.meta.url,
+    );
+    const fig11 = JSON.parse(readFileSync(file, 'utf8')) as ReturnType<typeof doc>;
+    const withMuted = { ...fig11, nodes: fig11.nodes.map((n) => (n.id === 'inv3' ? muted(n) : n)) };
+    const ev = evaluateGraph(withMuted, registry);
+    expect(ev.scene3d?.elements).toHaveLength(5);
+    expect(ev.scene3d?.elements.some((e) => e.nodeId === 'inv3')).toBe(false);
+    expect(ev.diagnostics.filter((d) => d.severity !== 'info')).toEqual([]);
+    expect(ev.nodes.get('render')?.diagnostics.map((d) => d.code)).not.toContain('KF313');
+    expect(evaluateGraph(fig11, registry).scene3d?.elements).toHaveLength(6);
+  });
 });

@@ -5,7 +5,7 @@ import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { declaredGroup, type Example } from '../../../../src/app/examples.ts';
 import { GALLERY_SECTIONS, galleryGroups, oneLine } from '../../../../src/app/gallery/groups.ts';
-import { exampleNames } from '../../../../src/cli/examples.ts';
+import { EXAMPLES_3D_DIR, exampleNames } from '../../../../src/cli/examples.ts';
 
 const fake = (id: string, title: string, description = '', group?: string): Example =>
   ({ id, title, description, ...(group ? { group } : {}), doc: {} }) as unknown as Example;
@@ -17,7 +17,7 @@ describe('gallery sections', () => {
   it('place every bundled example in exactly one section (the table or its own group), and name no missing file', () => {
     const ids = GALLERY_SECTIONS.flatMap((s) => s.ids);
     expect(new Set(ids).size).toBe(ids.length);
-    const names = exampleNames();
+    const names = [...exampleNames(), ...exampleNames(EXAMPLES_3D_DIR)];
     expect(ids.filter((id) => !names.includes(id))).toEqual([]);
     const unplaced = names.filter((n) => !ids.includes(n) && !declaredGroup(metaOf(n)));
     expect(unplaced).toEqual([]);

@@ -33,8 +33,9 @@ function firstBeyond(value: unknown, max: number): number | undefined {
 export function firstOutOfGpuRange(scene: Scene, max: number = LIMITS.gpuMaxMagnitude): OutOfRange | null {
   for (const e of scene.elements) {
     // The element's fields and what it packs for the shader (which may square them: an
-    // inversion packs r², so r = 10¹⁰ is within range but its packed r² = 10²⁰ is not).
-    const value = firstBeyond([e, elementRecord(e).glsl.pack(e)], max);
+    // inversion packs r², so r = 10¹⁰ is within range but its packed r² = 10²⁰ is not). The
+    // fields first, so the message names the number the user typed when that is the culprit.
+    const value = firstBeyond(e, max) ?? firstBeyond(elementRecord(e).glsl.pack(e), max);
     if (value !== undefined) return { nodeId: e.nodeId, value };
   }
   const { tile } = scene;

@@ -97,7 +97,7 @@ describe('muted nodes', () => {
     const withMuted = { ...fig11, nodes: fig11.nodes.map((n) => (n.id === 'inv3' ? muted(n) : n)) };
     const ev = evaluateGraph(withMuted, registry);
     expect(ev.scene3d?.elements).toHaveLength(5);
-    expect(ev.scene3d?.elements.some((e) => e.nodeId === 'inv3')).toBe(false);
+    expect(ev.scene3d?.elements.some((e) => (e as { nodeId?: string }).nodeId === 'inv3')).toBe(false);
     expect(ev.diagnostics.filter((d) => d.severity !== 'info')).toEqual([]);
     expect(ev.nodes.get('render')?.diagnostics.map((d) => d.code)).not.toContain('KF313');
     expect(evaluateGraph(fig11, registry).scene3d?.elements).toHaveLength(6);

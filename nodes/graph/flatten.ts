@@ -64,10 +64,7 @@ function expandOneLevel(
       const to = ref(e.to);
       if (from && to) innerEdges.push({ ...e, id: fresh(e.id, node.id), from, to });
     }
-    inputs.set(
-      node.id,
-      new Map(body.inputs.map((p) => [p.name, p.targets.flatMap((t) => ref(t) ?? [])])),
-    );
+    inputs.set(node.id, new Map(body.inputs.map((p) => [p.name, p.targets.flatMap((t) => ref(t) ?? [])])));
     const outs = new Map<string, PortRef>();
     for (const p of body.outputs) {
       const from = ref(p.from);
@@ -82,7 +79,12 @@ function expandOneLevel(
     // A wire to or from a port the group no longer exposes has nothing to stand for: it is dropped.
     if (!from) continue;
     targets.forEach((to, k) => {
-      outEdges.push({ ...e, id: k === 0 && targets.length === 1 ? e.id : fresh(`${e.id}>${k}`, e.id), from, to });
+      outEdges.push({
+        ...e,
+        id: k === 0 && targets.length === 1 ? e.id : fresh(`${e.id}>${k}`, e.id),
+        from,
+        to,
+      });
     });
   }
   return { nodes: outNodes, edges: [...outEdges, ...innerEdges] };

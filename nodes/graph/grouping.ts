@@ -78,7 +78,11 @@ export function groupNodes<G extends Graph>(graph: G, ids: Iterable<string>, gro
  * edge now has are renamed with `freshId`; the nodes move by however far the group node was moved
  * since grouping (so a group dragged elsewhere ungroups where it is).
  */
-export function ungroupNode<G extends Graph>(graph: G, groupId: string, freshId: (prefix: string) => string): G {
+export function ungroupNode<G extends Graph>(
+  graph: G,
+  groupId: string,
+  freshId: (prefix: string) => string,
+): G {
   const at = graph.nodes.findIndex((n) => n.id === groupId);
   const group = graph.nodes[at];
   const body = group?.group;

@@ -67,6 +67,28 @@ describe('flattenGroups', () => {
   });
 });
 
+describe('diagnostics of grouped nodes', () => {
+  it('name the node’s path in the document', () => {
+    const d = grouped();
+    const bad = {
+      ...d,
+      nodes: d.nodes.map((n) =>
+        n.group
+          ? {
+              ...n,
+              group: {
+                ...n.group,
+                nodes: [{ ...n.group.nodes[0], params: { radius: -1 } }, n.group.nodes[1]],
+              },
+            }
+          : n,
+      ),
+    };
+    const problem = evaluateGraph(bad, registry).diagnostics.find((x) => x.nodeId === 'c');
+    expect(problem?.path).toBe('nodes[0].group.nodes[0].params.radius');
+  });
+});
+
 describe('document round trips', () => {
   it('groups, muted nodes, frames and reroute points survive save and load exactly', () => {
     const d = grouped();

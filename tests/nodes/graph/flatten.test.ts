@@ -1,5 +1,6 @@
 /** Flattening groups, and documents with the graph tools' fields through a save and a load. */
 import { describe, expect, it } from 'vitest';
+import { LIMITS } from '../../../nodes/core/limits.ts';
 import type { GraphDoc, GraphNode } from '../../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
 import { flattenGroups } from '../../../nodes/graph/flatten.ts';
@@ -109,6 +110,16 @@ describe('document round trips', () => {
     const r = parseDocumentText(JSON.stringify(old), registry);
     if (!r.ok) throw new Error('does not load');
     expect(JSON.stringify(r.doc)).toBe(JSON.stringify(old));
+  });
+
+  it('nodes inside groups count towards the node limit', () => {
+    const inner = Array.from({ length: LIMITS.maxNodes }, (_, i) => node(`n${i}`, 'point'));
+    const big = {
+      ...doc([{ ...node('g', 'group'), group: { nodes: inner, edges: [], inputs: [], outputs: [] } }]),
+    };
+    const r = parseDocumentText(JSON.stringify(big), registry);
+    expect(r.ok).toBe(false);
+    expect(r.diagnostics[0]).toMatchObject({ code: 'KF105', path: 'nodes' });
   });
 
   it('a damaged group is refused with the path of the problem', () => {

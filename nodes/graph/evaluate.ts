@@ -13,7 +13,7 @@ import type { Handle3dItem, Overlay3dItem, Scene3d } from '../core/scene-3d.ts';
 import { DEFAULT_TILE } from '../core/tile-spec.ts';
 import { type Analysis, analyzeGraph } from './analyze.ts';
 import type { GraphDoc, GraphNode } from './document.ts';
-import { flattenGroups, hasGroups } from './flatten.ts';
+import { documentPath, flattenGroups, hasGroups } from './flatten.ts';
 import { nodeVersion, nodeVersionProblem } from './migrate.ts';
 import { mirrorDiagnostics } from './mirror-check.ts';
 import { mutedOutputs } from './mute.ts';
@@ -160,7 +160,23 @@ export function evaluateGraph(
       // A check, not the picture: a geometry corner case here must never withhold the render.
     }
   }
-  return { scene, scene3d, nodes: results, diagnostics, analysis, origin };
+  const located = flat ? diagnostics.map((d) => inDocument(d, source, analysis, origin)) : diagnostics;
+  return { scene, scene3d, nodes: results, diagnostics: located, analysis, origin };
+}
+
+/** A grouped node's diagnostic with its path in the document, not in the flattened graph. */
+function inDocument(
+  d: Diagnostic,
+  doc: GraphDoc,
+  analysis: Analysis,
+  origin: ReadonlyMap<string, readonly string[]>,
+): Diagnostic {
+  const path = d.nodeId ? origin.get(d.nodeId) : undefined;
+  const index = d.nodeId ? analysis.nodes.get(d.nodeId)?.index : undefined;
+  const flatPrefix = `nodes[${index}]`;
+  if (!path || index === undefined || !d.path?.startsWith(flatPrefix)) return d;
+  const real = documentPath(doc, path);
+  return real ? { ...d, path: real + d.path.slice(flatPrefix.length) } : d;
 }
 
 const NO_EDGES: ReadonlyMap<string, unknown> = new Map();

@@ -89,3 +89,16 @@ function expandOneLevel(
   }
   return { nodes: outNodes, edges: [...outEdges, ...innerEdges] };
 }
+
+/** Where a grouped node lives in the document: `nodes[2].group.nodes[0]` for the path [g, c]. */
+export function documentPath(doc: Pick<GraphDoc, 'nodes'>, path: readonly string[]): string | null {
+  let nodes = doc.nodes;
+  let out = '';
+  for (const [i, id] of path.entries()) {
+    const at = nodes.findIndex((n) => n.id === id);
+    if (at < 0) return null;
+    out += `${i === 0 ? '' : '.group.'}nodes[${at}]`;
+    nodes = nodes[at].group?.nodes ?? [];
+  }
+  return out;
+}

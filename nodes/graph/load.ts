@@ -64,10 +64,11 @@ export function loadDocument(
       ],
     };
   }
-  if (Array.isArray(raw.nodes) && raw.nodes.length > LIMITS.maxNodes) {
+  const count = countNodes(raw.nodes);
+  if (count > LIMITS.maxNodes) {
     return {
       ok: false,
-      diagnostics: [diag('tooManyNodes', { path: 'nodes' }, raw.nodes.length, LIMITS.maxNodes)],
+      diagnostics: [diag('tooManyNodes', { path: 'nodes' }, count, LIMITS.maxNodes)],
     };
   }
   const deep = pathBeyondDepth(raw, LIMITS.maxJsonDepth);
@@ -111,4 +112,20 @@ export function loadDocument(
   }
   const doc = { ...parsed.data, nodes: migrateNodes(parsed.data.nodes, registry) };
   return { ok: true, doc, migratedFrom: migrated.from, diagnostics: [] };
+}
+
+/**
+ * Nodes in raw JSON, those inside groups included (a group must not hide more than the limit),
+ * counted before validation; stops as soon as the count passes the limit.
+ */
+function countNodes(nodes: unknown, depth = 0): number {
+  if (!Array.isArray(nodes)) return 0;
+  let n = nodes.length;
+  if (depth > LIMITS.maxJsonDepth) return n;
+  for (const node of nodes) {
+    if (n > LIMITS.maxNodes) break;
+    const group = (node as { group?: { nodes?: unknown } } | null)?.group;
+    if (group && typeof group === 'object') n += countNodes(group.nodes, depth + 1);
+  }
+  return n;
 }

@@ -89,13 +89,20 @@ export function migrateNodeParams(
 export const nodeVersion = (node: Pick<GraphNode, 'version'>): number => node.version ?? 1;
 
 /**
- * Every node of a known type brought up to its type's version (params migrated, `version` set).
+ * Every node of a known type brought up to its type's version (params migrated, `version` set),
+ * inside groups too.
  * Current nodes and unknown-type placeholders come back as the same objects, so a placeholder
  * round-trips untouched. A node whose migration fails is kept as it was (nothing the user made is
  * lost); evaluation then reports it (KF309, nodeVersionProblem) and does not run it.
  */
 export function migrateNodes<N extends GraphNode>(nodes: readonly N[], registry: NodeRegistry): N[] {
   return nodes.map((node) => {
+    if (node.group) {
+      // A group's nodes are migrated like the document's (docs/architecture.md "Groups").
+      const inner = migrateNodes(node.group.nodes, registry);
+      const same = inner.every((n, i) => n === node.group!.nodes[i]);
+      return same ? node : { ...node, group: { ...node.group, nodes: inner } };
+    }
     const def = registry.get(node.type);
     const from = nodeVersion(node);
     if (!def || from === def.version) return node;

@@ -1,7 +1,8 @@
 /**
  * Graph tools end to end in Chromium: M mutes and unmutes a node (greyed, the picture changes,
- * undo restores it), a frame around two nodes carries them when its title bar is dragged, and
- * nodes grouped with Ctrl+G open, lead back out by the breadcrumb and ungroup again.
+ * undo restores it), a frame around two nodes carries them when its title bar is dragged, nodes
+ * grouped with Ctrl+G open, lead back out by the breadcrumb and ungroup again, and a reroute point
+ * is added to a wire, dragged and removed.
  */
 import type { BrowserContext, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -156,6 +157,27 @@ describe('graph tools', () => {
     expect(await nodeEl(page, kaleido).count()).toBe(1);
     expect(await nodeEl(page, tile).count()).toBe(1);
     expect(thumbDiff(before, await picture())).toBeLessThan(2);
+    expect(problems).toEqual([]);
+  });
+
+  it('double-clicking a wire adds a reroute point you can drag; double-clicking it removes it', async () => {
+    const wire = page.locator('.react-flow__edge').first();
+    const at = await center(wire);
+    await page.mouse.dblclick(at.x, at.y);
+    const dot = page.getByRole('button', { name: 'Reroute point' });
+    await expect.poll(() => dot.count()).toBe(1);
+    const from = await center(dot);
+    await page.mouse.move(from.x, from.y);
+    await page.mouse.down();
+    await page.mouse.move(from.x + 20, from.y + 40, { steps: 4 });
+    await page.mouse.move(from.x + 40, from.y + 80, { steps: 4 });
+    await page.mouse.up();
+    await expect.poll(async () => (await center(dot)).y - from.y).toBeGreaterThan(60);
+    await page.keyboard.press('Control+z');
+    await expect.poll(async () => Math.abs((await center(dot)).y - from.y)).toBeLessThan(3);
+    const back = await center(dot);
+    await page.mouse.dblclick(back.x, back.y);
+    await expect.poll(() => dot.count()).toBe(0);
     expect(problems).toEqual([]);
   });
 });

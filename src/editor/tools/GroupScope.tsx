@@ -15,6 +15,8 @@ export interface GroupScope {
   readonly path: readonly string[];
   /** The label of each open group, outermost first. */
   readonly names: readonly string[];
+  /** The open group's exposed ports ("inputs: a, b · outputs: c"), empty at the top level. */
+  readonly ports: string;
   readonly base: EditorStore;
   readonly store: EditorStore;
   readonly evaluation: Evaluation;
@@ -54,7 +56,14 @@ export function useGroupScope(evaluation: Evaluation, loadKey: number): GroupSco
     const node = level?.nodes.find((n) => n.id === path[i]);
     return node?.label ?? 'Group';
   });
-  return { path, names, base, store, evaluation: scoped, full, frameKey, open, goTo };
+  const body =
+    path.length > 0
+      ? scopeDocument(doc, path.slice(0, -1))?.nodes.find((n) => n.id === path.at(-1))?.group
+      : undefined;
+  const list = (label: string, ps: readonly { name: string; label?: string }[]) =>
+    ps.length > 0 ? [`${label}: ${ps.map((p) => p.label ?? p.name).join(', ')}`] : [];
+  const ports = body ? [...list('inputs', body.inputs), ...list('outputs', body.outputs)].join(' · ') : '';
+  return { path, names, ports, base, store, evaluation: scoped, full, frameKey, open, goTo };
 }
 
 /** "Graph › Group › Inner group": each crumb but the last goes back out to its level. */
@@ -82,6 +91,7 @@ export function GroupBreadcrumb({ scope }: { scope: GroupScope }) {
           </span>
         );
       })}
+      {scope.ports && <span className="kf-breadcrumb__ports">{scope.ports}</span>}
     </nav>
   );
 }

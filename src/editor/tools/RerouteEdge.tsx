@@ -34,7 +34,7 @@ function RerouteEdgeImpl(props: EdgeProps<KfEdge>) {
     <>
       <BaseEdge path={path} style={style} interactionWidth={interactionWidth} />
       {via.map(([x, y], i) => (
-        // biome-ignore lint/a11y/noStaticElementInteractions: a pointer gesture on the canvas; the wire is the document's, undoable
+        // biome-ignore lint/a11y/useSemanticElements: an SVG dot on the canvas cannot be a <button>; dragged with the pointer
         <circle
           // biome-ignore lint/suspicious/noArrayIndexKey: a reroute point is its place on the wire
           key={i}
@@ -44,6 +44,7 @@ function RerouteEdgeImpl(props: EdgeProps<KfEdge>) {
           r={6}
           fill={(style?.stroke as string) ?? '#888'}
           stroke="#111"
+          role="button"
           aria-label="Reroute point"
           onPointerDown={(e) => {
             e.stopPropagation();

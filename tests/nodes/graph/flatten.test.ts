@@ -1,5 +1,6 @@
 /** Flattening groups, and documents with the graph tools' fields through a save and a load. */
 import { describe, expect, it } from 'vitest';
+import { LIMITS } from '../../../nodes/core/limits.ts';
 import type { GraphDoc, GraphNode } from '../../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
 import { flattenGroups } from '../../../nodes/graph/flatten.ts';
@@ -67,6 +68,28 @@ describe('flattenGroups', () => {
   });
 });
 
+describe('diagnostics of grouped nodes', () => {
+  it('name the node’s path in the document', () => {
+    const d = grouped();
+    const bad = {
+      ...d,
+      nodes: d.nodes.map((n) =>
+        n.group
+          ? {
+              ...n,
+              group: {
+                ...n.group,
+                nodes: [{ ...n.group.nodes[0], params: { radius: -1 } }, n.group.nodes[1]],
+              },
+            }
+          : n,
+      ),
+    };
+    const problem = evaluateGraph(bad, registry).diagnostics.find((x) => x.nodeId === 'c');
+    expect(problem?.path).toBe('nodes[0].group.nodes[0].params.radius');
+  });
+});
+
 describe('document round trips', () => {
   it('groups, muted nodes, frames and reroute points survive save and load exactly', () => {
     const d = grouped();
@@ -87,6 +110,16 @@ describe('document round trips', () => {
     const r = parseDocumentText(JSON.stringify(old), registry);
     if (!r.ok) throw new Error('does not load');
     expect(JSON.stringify(r.doc)).toBe(JSON.stringify(old));
+  });
+
+  it('nodes inside groups count towards the node limit', () => {
+    const inner = Array.from({ length: LIMITS.maxNodes }, (_, i) => node(`n${i}`, 'point'));
+    const big = {
+      ...doc([{ ...node('g', 'group'), group: { nodes: inner, edges: [], inputs: [], outputs: [] } }]),
+    };
+    const r = parseDocumentText(JSON.stringify(big), registry);
+    expect(r.ok).toBe(false);
+    expect(r.diagnostics[0]).toMatchObject({ code: 'KF105', path: 'nodes' });
   });
 
   it('a damaged group is refused with the path of the problem', () => {

@@ -69,6 +69,20 @@ describe('migrateNodeParams', () => {
 });
 
 describe('migrateNodes (run once, on load and paste)', () => {
+  it('migrates the nodes inside a group (and groups inside groups) like the document’s', () => {
+    const inner = { ...node('d', 'test-disk', { rad: 2 }), version: 1 };
+    const body = { nodes: [inner], edges: [], inputs: [], outputs: [] };
+    const group = {
+      ...node('g', 'group'),
+      group: { ...body, nodes: [{ ...node('h', 'group'), group: body }] },
+    };
+    const [out] = migrateNodes([group], registry);
+    const migrated = out.group!.nodes[0].group!.nodes[0];
+    expect(migrated).toEqual({ ...inner, version: 3, params: { radius: 2 } });
+    const current = { ...node('g', 'group'), group: { ...body, nodes: [{ ...inner, version: 3 }] } };
+    expect(migrateNodes([current], registry)[0]).toBe(current);
+  });
+
   it('brings old nodes to their type version and leaves current nodes and placeholders as they are', () => {
     const current = { ...node('x', 'test-disk', { radius: 1 }), version: 3 };
     const placeholder = { ...node('u', 'no-such-type', { rad: 1 }), version: 1 };

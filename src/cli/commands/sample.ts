@@ -1,9 +1,13 @@
 /**
- * `kleinflow sample graph.json --points pts.json`: runs the IIS at given points (no clipping, no
- * colour) and prints `{"points":[{"depth":…,"x":…,"y":…,"escaped":…},…]}` in input order, where
- * (x, y) is the final point. For scripts, plots and checking other implementations.
+ * `kleinflow sample graph.json --points pts.json [--trace]`: runs the IIS at given points (no
+ * clipping, no colour) and prints `{"points":[{"depth":…,"x":…,"y":…,"escaped":…},…]}` in input
+ * order, where (x, y) is the final point; `--trace` adds each point's steps and why it stopped
+ * (shader-gen/trace.ts, the interpreter's own loop observed). For scripts, plots and checking other
+ * implementations.
  */
+import { elementNames } from '../../../nodes/graph/element-names.ts';
 import { interpret } from '../../../shader-gen/interpret.ts';
+import { type IisTrace, trace } from '../../../shader-gen/trace.ts';
 import { formatBytes, INPUT_LIMITS } from '../../io/input-limits.ts';
 import { expectPositionals, formatOptions, type OptionSpec, parseArgs, stringOption } from '../args.ts';
 import { type CliCommand, CliError, EXIT, type InputFile, usageError } from '../command.ts';
@@ -13,6 +17,7 @@ import { progressLine } from '../progress.ts';
 
 const OPTIONS: readonly OptionSpec[] = [
   { long: 'points', short: 'p', value: 'FILE', doc: 'JSON array of [x, y] world points (required)' },
+  { long: 'trace', doc: 'add each point\'s steps (element, node, label, x, y, factor) and "stop"' },
 ];
 
 /** Output is written in pieces of about this many characters (then the reader may catch up). */
@@ -23,16 +28,31 @@ const PROGRESS_BYTES = 16 * 1024 * 1024;
 /** A JSON number as JSON.stringify writes it (−0 as 0, non-finite as null). */
 const num = (v: number): string => (Number.isFinite(v) ? String(v) : 'null');
 
+/** `,"steps":[…],"stop":"…"` of one traced point: each step's element index, node id, name, point, scale. */
+function traceFields(t: IisTrace, names: readonly string[]): string {
+  const steps = t.steps.map(
+    (s) =>
+      `{"element":${s.element},"node":${JSON.stringify(s.nodeId)},"label":${JSON.stringify(names[s.element])},"depth":${s.depth},"x":${num(s.x)},"y":${num(s.y)},"factor":${num(s.factor)}}`,
+  );
+  return `,"steps":[${steps.join(',')}],"stop":"${t.stop}"`;
+}
+
 export const sampleCommand: CliCommand = {
   name: 'sample',
   summary: 'print depth, final point and escaped flag of the IIS at given points (JSON)',
   usage: [
-    'Usage: kleinflow sample GRAPH --points POINTS.json',
+    'Usage: kleinflow sample GRAPH --points POINTS.json [--trace]',
     '',
     'POINTS.json holds [[x, y], ...] in world coordinates. Prints, in the same order,',
     '{"points":[{"depth":D,"x":X,"y":Y,"escaped":E}, ...]} where (X, Y) is the final point of the',
     'IIS loop, D the number of steps and E whether it reached the tile (false: still moving at',
     'max iterations, on or near the limit set). The clip disk and colours do not apply.',
+    '',
+    'With --trace each point also gets "steps": every application, in order, as',
+    '{"element":I,"node":ID,"label":NAME,"depth":D,"x":X,"y":Y,"factor":S}: the element\'s index in',
+    'graph order, the node that made it and its name, the depth, point and accumulated length scale',
+    'after the step; and "stop": "fundamental-domain" (reached the tile) or "limit" (still inside an',
+    "element at max iterations). The editor's Inspect shows the same, with seeds and the clip disk.",
     '',
     'The points are read and the results written as a stream: any number of points works in',
     'bounded memory, and output starts at once (--points - reads standard input). One entry may',
@@ -47,7 +67,8 @@ export const sampleCommand: CliCommand = {
     const [graphPath] = expectPositionals(parsed, ['GRAPH']);
     const pointsPath = stringOption(parsed, 'points');
     if (!pointsPath) throw usageError('missing --points POINTS.json');
-    const { scene } = await loadScene(io, graphPath);
+    const { scene, evaluation } = await loadScene(io, graphPath);
+    const names = parsed.options.trace ? elementNames(scene.elements, evaluation!.analysis) : null;
     let file: InputFile;
     try {
       file = await io.open(pointsPath);
@@ -75,8 +96,10 @@ export const sampleCommand: CliCommand = {
       });
       for await (const batch of batches) {
         for (const p of batch) {
-          const r = interpret(scene, p);
-          out += `${count === 0 ? '' : ','}{"depth":${r.depth},"x":${num(r.final[0])},"y":${num(r.final[1])},"escaped":${r.escaped}}`;
+          const traced = names ? trace(scene, p) : null;
+          const r = traced ?? interpret(scene, p);
+          const steps = traced && names ? traceFields(traced, names) : '';
+          out += `${count === 0 ? '' : ','}{"depth":${r.depth},"x":${num(r.final[0])},"y":${num(r.final[1])},"escaped":${r.escaped}${steps}}`;
           count++;
           if (out.length >= OUT_PIECE) await flush();
         }

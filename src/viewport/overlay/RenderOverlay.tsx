@@ -34,6 +34,8 @@ export interface RenderOverlayProps {
   /** On pointer-up after a drag: one undo step. */
   onCommit(patches: NodePatch[]): void;
   showLabels?: boolean;
+  /** Inspect mode: a click explains the pixel, so handles do not grab (Alt-click never grabs either). */
+  inspecting?: boolean;
 }
 
 const FALLBACK_COLOR = '#ffffff';
@@ -69,8 +71,9 @@ export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
     onHoverNode: props.onHoverNode,
     onPreview: props.onPreview,
     onCommit: props.onCommit,
+    inspecting: props.inspecting ?? false,
   });
-  const cursor = drag ? 'grabbing' : hoverHandle ? 'grab' : undefined;
+  const cursor = props.inspecting ? 'crosshair' : drag ? 'grabbing' : hoverHandle ? 'grab' : undefined;
   return (
     <svg
       ref={ref}

@@ -4,7 +4,7 @@
  * pixel (agreeing, disagreeing with a note, or unavailable and why), the final point and scale, and
  * the word of elements applied — numbered like the markers on the picture. Escape closes it.
  */
-import type { JSX } from 'react';
+import { type JSX, useCallback } from 'react';
 import { MAX_DRAWN_STEPS } from '../../viewport/overlay/orbit-path.ts';
 import type { GpuCheck, Inspection } from './inspection.ts';
 
@@ -15,14 +15,15 @@ interface Props {
   onClose(): void;
 }
 
-/** A number for people: 4 significant digits, no exponent for ordinary sizes. */
-export const fmt = (v: number): string => {
+/** A number for people: `digits` significant digits, no exponent for ordinary sizes, a true minus sign. */
+export const fmt = (v: number, digits = 4): string => {
   if (!Number.isFinite(v)) return String(v);
   const a = Math.abs(v);
-  if (a !== 0 && (a >= 1e6 || a < 1e-4)) return v.toExponential(3);
-  return String(+v.toPrecision(4));
+  const text =
+    a !== 0 && (a >= 1e6 || a < 1e-4) ? v.toExponential(digits - 1) : String(+v.toPrecision(digits));
+  return text.replace(/-/g, '−');
 };
-const point = (p: readonly [number, number]) => `(${fmt(p[0])}, ${fmt(p[1])})`;
+const point = (p: readonly [number, number], digits = 4) => `(${fmt(p[0], digits)}, ${fmt(p[1], digits)})`;
 
 const STOP_TITLE = {
   'fundamental-domain': 'reached the tile',
@@ -57,8 +58,21 @@ function GpuLine({ gpu, depth }: { gpu: GpuCheck; depth: number }) {
 export function InspectPanel({ inspection, side, onClose }: Props): JSX.Element {
   const { trace: t, word } = inspection;
   const shown = word.slice(0, MAX_DRAWN_STEPS);
+  // Pan/zoom listens natively on the pane: a press, a drag or a wheel in the panel (Close, selecting
+  // text, scrolling the word) must not pan or zoom the picture behind it.
+  const keepEvents = useCallback((el: HTMLElement | null) => {
+    if (!el) return undefined;
+    const stop = (e: Event) => e.stopPropagation();
+    el.addEventListener('pointerdown', stop);
+    el.addEventListener('wheel', stop);
+    return () => {
+      el.removeEventListener('pointerdown', stop);
+      el.removeEventListener('wheel', stop);
+    };
+  }, []);
   return (
     <section
+      ref={keepEvents}
       className={`kf-inspect kf-inspect--${side}`}
       aria-label="Explain this pixel"
       data-testid="inspect-panel"
@@ -95,13 +109,13 @@ export function InspectPanel({ inspection, side, onClose }: Props): JSX.Element 
           <ol className="kf-inspect__word" aria-label="Word">
             {shown.map((l) => (
               <li key={l.step} data-power={l.power}>
-                <span className="kf-inspect__dot" style={{ background: l.color }} aria-hidden="true" />
                 <span className="kf-inspect__name">
+                  <span className="kf-inspect__dot" style={{ background: l.color }} aria-hidden="true" />
                   {l.name}
                   {l.power > 1 && <sup title={`a fold by ${l.power} steps`}>{l.power}</sup>}
                 </span>
                 <span className="kf-inspect__to">
-                  → {point(l.at)} ×{fmt(l.factor)}
+                  → {point(l.at, 3)} ×{fmt(l.factor, 3)}
                 </span>
               </li>
             ))}

@@ -42,6 +42,25 @@ export interface Inspection {
 const FLOAT32_MARGIN = 1e-5;
 
 const FALLBACK_COLOR = '#ffffff';
+/**
+ * The mirrors of one node (a kaleidoscope's three) share its colour on the construction, but the
+ * orbit must tell them apart: they take these, in order (the logo's three first).
+ */
+const SIBLING_COLORS = ['#f2c14e', '#5b8def', '#e85d75', '#6cc7a0', '#b58cf0', '#f08c5b'];
+
+/** Each element's colour on the orbit: its node's, or a sibling colour when the node gives several. */
+function elementColors(evaluation: Evaluation): string[] {
+  const { scene, analysis } = evaluation;
+  const perNode = new Map<string, number>();
+  for (const e of scene.elements) perNode.set(e.nodeId, (perNode.get(e.nodeId) ?? 0) + 1);
+  const seen = new Map<string, number>();
+  return scene.elements.map(({ nodeId }) => {
+    const k = seen.get(nodeId) ?? 0;
+    seen.set(nodeId, k + 1);
+    if ((perNode.get(nodeId) ?? 1) > 1) return SIBLING_COLORS[k % SIBLING_COLORS.length];
+    return analysis.nodes.get(nodeId)?.def?.color ?? FALLBACK_COLOR;
+  });
+}
 
 export function stopSentence(t: IisTrace, maxIterations: number, seedName: string | null): string {
   const steps = `${t.depth} step${t.depth === 1 ? '' : 's'}`;
@@ -63,7 +82,7 @@ export function inspect(evaluation: Evaluation, probe: PixelInspection): Inspect
   const { scene, analysis } = evaluation;
   const t = tracePicture(scene, probe.world);
   const names = elementNames(scene.elements, analysis);
-  const colorOf = (id: string) => analysis.nodes.get(id)?.def?.color ?? FALLBACK_COLOR;
+  const colors = elementColors(evaluation);
   let depth = 0;
   const word = t.steps.map((s, i): WordLetter => {
     const power = s.depth - depth;
@@ -72,7 +91,7 @@ export function inspect(evaluation: Evaluation, probe: PixelInspection): Inspect
       step: i + 1,
       name: names[s.element],
       nodeId: s.nodeId,
-      color: colorOf(s.nodeId),
+      color: colors[s.element],
       power,
       at: [s.x, s.y],
       factor: s.factor,

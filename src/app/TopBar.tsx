@@ -141,9 +141,14 @@ export function TopBar(p: Props) {
             className={`kf-button${p.inspecting ? ' kf-button--active' : ''}`}
             onClick={p.onInspect}
             aria-pressed={p.inspecting}
+            aria-label="Inspect"
             title="Inspect: click a point of the picture to see its orbit, step by step (Alt-click works any time; Esc leaves)"
           >
-            Inspect
+            <svg viewBox="0 0 16 16" width="14" height="14" aria-hidden="true">
+              <circle cx="8" cy="8" r="4.5" fill="none" stroke="currentColor" strokeWidth="1.5" />
+              <path d="M8 0.5v3M8 12.5v3M0.5 8h3M12.5 8h3" stroke="currentColor" strokeWidth="1.5" />
+            </svg>
+            <span className="kf-toolbar__label">Inspect</span>
           </button>
           <button
             type="button"

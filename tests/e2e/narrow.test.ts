@@ -32,6 +32,7 @@ const COMMANDS = [
   'Undo',
   'Redo',
   'Play animation',
+  'Inspect',
   'Help',
 ];
 

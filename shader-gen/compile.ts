@@ -16,11 +16,14 @@ import {
 import { type UniformEntry, uniformRows } from './glsl/values.ts';
 import { firstOutOfGpuRange } from './gpu-range.ts';
 
-export { FRAME_UNIFORMS } from './glsl/template.ts';
+export { FRAME_UNIFORMS, INSPECT_STOP } from './glsl/template.ts';
 export type { UniformEntry } from './glsl/values.ts';
 
 export interface CompileOptions {
-  /** color: linear RGBA of one sample; probe: vec4(depth, final.x, final.y, escaped) (RGBA32F). */
+  /**
+   * color: linear RGBA of one sample; probe: vec4(depth, final.x, final.y, escaped) (RGBA32F);
+   * inspect: vec4(depth, final.x, final.y, stop) with the clip disk and seeds (INSPECT_STOP).
+   */
   variant?: Variant;
   /** Every scene value inlined as a literal (no scene uniforms). */
   baked?: boolean;

@@ -36,20 +36,23 @@ export function prepare(elements: readonly SceneElement[]): PreparedElements {
 /**
  * Runs the loop on `st` in place; returns whether the point escaped (reached the tile). A closed-form
  * element may add several steps at once, so depth can pass maxIter by that last fold. `visit`, when
- * given, sees the state at the start of every pass (every point of the path, the final one included);
- * when it returns true the run stops there, not escaped (orbit seeds: docs/math.md "tested at the start
- * of every step").
+ * given, sees the state at the start of every pass (every point of the path, the final one included)
+ * with the index of the element whose step led there (−1 at the start point); when it returns true
+ * the run stops there, not escaped (orbit seeds: docs/math.md "tested at the start of every step").
+ * It is the one observer of the loop: raster.ts stops at seeds with it, path-margin.ts measures the
+ * path and trace.ts records every step, so none of them runs a copy of the loop.
  */
 export function runIis(
   prepared: PreparedElements,
   maxIter: number,
   st: IisState,
-  visit?: (st: IisState) => boolean | undefined,
+  visit?: (st: IisState, applied: number) => boolean | undefined,
 ): boolean {
   const { elements, kinds } = prepared;
   const n = elements.length;
+  let applied = -1;
   for (;;) {
-    if (visit?.(st) === true) return false;
+    if (visit?.(st, applied) === true) return false;
     if (st.depth >= maxIter) {
       for (let i = 0; i < n; i++) if (kinds[i].inside(elements[i], st.x, st.y)) return false;
       return true;
@@ -57,6 +60,7 @@ export function runIis(
     let i = 0;
     while (i < n && !kinds[i].step(elements[i], st)) i++;
     if (i === n) return true;
+    applied = i;
   }
 }
 

@@ -12,6 +12,7 @@ import { type PreparedElements, prepare, runIis } from './interpret.ts';
 import type { PictureMap } from './picture.ts';
 import { seedAt } from './seeds.ts';
 import { linearToSrgb, type Rgb } from './srgb.ts';
+import { outsideClip } from './trace.ts';
 import { sampleOffset } from './view.ts';
 
 export interface RasterOptions {
@@ -69,7 +70,7 @@ export function sampleColour(
 ): Rgb {
   const { tile, clip } = scene;
   const { prepared, far } = ctx;
-  const clipped = clip !== null && (x - clip.c[0]) ** 2 + (y - clip.c[1]) ** 2 > clip.r * clip.r;
+  const clipped = outsideClip(clip, x, y);
   st.x = x;
   st.y = y;
   st.s = 1;

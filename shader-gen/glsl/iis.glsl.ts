@@ -146,6 +146,21 @@ export function emitBoundaryDistance(out: SourceBuilder, placed: readonly Placed
   out.push('  return d;', '}');
 }
 
+/**
+ * Statements setting `bool clipped` for the world point `w`: trace.ts outsideClip, |w − c|² > r²
+ * (false when the scene has no clip disk).
+ */
+export function clipTestGlsl(scene: Scene, v: SceneValues): string[] {
+  if (!scene.clip) return ['  bool clipped = false;'];
+  const clip = v.vec('u_clip', [scene.clip.c[0], scene.clip.c[1], scene.clip.r]);
+  return [
+    `  vec3 clip = ${clip};`,
+    '  float cx = w.x - clip.x;',
+    '  float cy = w.y - clip.y;',
+    '  bool clipped = cx * cx + cy * cy > clip.z * clip.z;',
+  ];
+}
+
 /** Whether the sample needs the tile-edge distance: edges, or the limit-set estimate. */
 export const needsEdgeDistance = (scene: Scene): boolean =>
   scene.tile.edgeWidth > 0 ||
@@ -216,16 +231,7 @@ export function shadeSampleGlsl(
 ): GlslFunction {
   const limitSet = scene.tile.coloring.mode === 'limit-set';
   const edges = needsEdgeDistance(scene);
-  const lines = ['vec4 shadeSample(vec2 w, float pixelWorld, float bgAlpha) {'];
-  if (scene.clip) {
-    const clip = v.vec('u_clip', [scene.clip.c[0], scene.clip.c[1], scene.clip.r]);
-    lines.push(
-      `  vec3 clip = ${clip};`,
-      '  float cx = w.x - clip.x;',
-      '  float cy = w.y - clip.y;',
-      '  bool clipped = cx * cx + cy * cy > clip.z * clip.z;',
-    );
-  } else lines.push('  bool clipped = false;');
+  const lines = ['vec4 shadeSample(vec2 w, float pixelWorld, float bgAlpha) {', ...clipTestGlsl(scene, v)];
   lines.push('  vec2 p = w;', '  float s = 1.0;', '  int depth = 0;', '  int seed = -1;');
   const trap = trapOf(scene);
   if (trap) lines.push(`  float trap = ${GLSL_FAR};`);

@@ -6,6 +6,7 @@
 import type { Scene } from '../../nodes/core/scene.ts';
 import { type ColourSpace, shadesWithoutBlending, toSrgbGlsl } from './colour.glsl.ts';
 import {
+  clipTestGlsl,
   elementFunctions,
   emitBoundaryDistance,
   emitRunIis,
@@ -22,7 +23,16 @@ import { SourceBuilder } from './source.ts';
 import { declaration, PICTURE_SAMPLER, SceneValues, type UniformEntry } from './values.ts';
 import { pixelToWorldGlsl, sampleOffsetGlsl } from './view.glsl.ts';
 
-export type Variant = 'color' | 'probe';
+/**
+ * color: linear RGBA of one sample. probe: the pure IIS loop, vec4(depth, final.x, final.y,
+ * escaped) — what parity compares. inspect: what the picture decides at the point ("Explain this
+ * pixel", shader-gen/trace.ts tracePicture): the clip disk and the orbit seeds apply, and w is the
+ * stop reason, INSPECT_STOP.
+ */
+export type Variant = 'color' | 'probe' | 'inspect';
+
+/** The inspect variant's w: 0 limit, 1 reached the tile, 2 outside the clip disk, 3 + k seed k. */
+export const INSPECT_STOP = { limit: 0, tile: 1, clipped: 2, seed: 3 } as const;
 
 /** Uniforms the runtime sets per frame, declared in every WebGL variant (names fixed). */
 export const FRAME_UNIFORMS = [
@@ -58,12 +68,13 @@ export interface EmittedShader {
 }
 
 /** The scene-dependent parts, with the uniforms they read registered in `v`; colours in `space`. */
-function sceneParts(scene: Scene, v: SceneValues, withColour: boolean, space: ColourSpace = 'linear') {
+function sceneParts(scene: Scene, v: SceneValues, variant: Variant, space: ColourSpace = 'linear') {
+  const withColour = variant === 'color';
   const placed = placeElements(scene.elements, v);
   const maxIter = v.int('u_maxIterations', scene.maxIterations);
   const edges = withColour && needsEdgeDistance(scene);
-  // Seeds only colour: the probe variant is the pure IIS loop (what parity compares).
-  const seedList = withColour ? (scene.tile.seeds ?? []) : [];
+  // The probe variant is the pure IIS loop (what parity compares): no seeds.
+  const seedList = variant === 'probe' ? [] : (scene.tile.seeds ?? []);
   const seeds = seedList.length > 0 ? seedsGlsl(seedList, v, space) : null;
   const shadeSample = withColour ? shadeSampleGlsl(scene, v, seeds, space) : null;
   // The orbit trap only colours: the probe variant is the pure IIS loop.
@@ -75,10 +86,12 @@ function sceneParts(scene: Scene, v: SceneValues, withColour: boolean, space: Co
   });
   /** Writes the functions, the loop and shadeSample (colour only) after the header. */
   const emitBody = (out: SourceBuilder, extra: readonly GlslFunction[]) => {
+    // Without shadeSample (inspect), runIis still calls seedAt.
+    const shadeFns = shadeSample?.deps ?? (seeds ? [seeds.seedAt] : []);
     const fns = [
       ...elementFunctions(placed, edges),
       ...(trap ? [orbitTrapDistanceGlsl] : []),
-      ...(shadeSample?.deps ?? []),
+      ...shadeFns,
       ...extra,
     ];
     for (const code of collectFunctions(fns)) out.push(code, '');
@@ -90,7 +103,7 @@ function sceneParts(scene: Scene, v: SceneValues, withColour: boolean, space: Co
     }
     if (shadeSample) out.push(shadeSample.code, '');
   };
-  return { emitBody, lineMap, pictures: v.pictures() };
+  return { emitBody, lineMap, pictures: v.pictures(), withSeeds: seeds !== null };
 }
 
 /**
@@ -111,7 +124,9 @@ const HEADER = ['precision highp float;', 'precision highp int;'];
 
 export function fragmentShader(scene: Scene, variant: Variant, baked: boolean): EmittedShader {
   const v = new SceneValues(baked);
-  const { emitBody, lineMap, pictures } = sceneParts(scene, v, variant === 'color');
+  const { emitBody, lineMap, pictures, withSeeds } = sceneParts(scene, v, variant);
+  // Registered before the declarations are written (the inspect variant's main reads u_clip).
+  const clipTest = variant === 'inspect' ? clipTestGlsl(scene, v) : [];
   const uniforms = v.entries();
   const out = new SourceBuilder().push('#version 300 es', ...HEADER, '');
   out.push('// Frame uniforms (set by the runtime).');
@@ -123,7 +138,9 @@ export function fragmentShader(scene: Scene, variant: Variant, baked: boolean): 
   out.push(
     variant === 'color'
       ? 'out vec4 outColor; // linear RGB; alpha u_bgAlpha on the background'
-      : 'out vec4 outProbe; // (depth, final.x, final.y, escaped)',
+      : variant === 'probe'
+        ? 'out vec4 outProbe; // (depth, final.x, final.y, escaped)'
+        : 'out vec4 outProbe; // (depth, final.x, final.y, stop: 0 limit, 1 tile, 2 clipped, 3 + seed)',
     '',
   );
   emitBody(out, [pixelToWorldGlsl]);
@@ -133,7 +150,20 @@ export function fragmentShader(scene: Scene, variant: Variant, baked: boolean): 
     '  vec2 w = pixelToWorld(u_view, u_resolution, px, u_jitter);',
   );
   if (variant === 'color') out.push('  outColor = shadeSample(w, u_view.z / u_resolution.y, u_bgAlpha);');
-  else {
+  else if (variant === 'inspect') {
+    const S = INSPECT_STOP;
+    out.push(
+      ...clipTest,
+      `  if (clipped) { outProbe = vec4(0.0, w, ${floatLiteral(S.clipped)}); return; }`,
+      '  vec2 p = w;',
+      '  float s = 1.0;',
+      '  int depth = 0;',
+      '  int seed = -1;',
+      withSeeds ? '  bool escaped = runIis(p, s, depth, seed);' : '  bool escaped = runIis(p, s, depth);',
+      `  float stop = escaped ? ${floatLiteral(S.tile)} : seed >= 0 ? ${floatLiteral(S.seed)} + float(seed) : ${floatLiteral(S.limit)};`,
+      '  outProbe = vec4(float(depth), p, stop);',
+    );
+  } else {
     out.push(
       '  vec2 p = w;',
       '  float s = 1.0;',
@@ -156,7 +186,7 @@ export function shadertoyShader(scene: Scene): string {
   const count = Math.max(1, Math.round(scene.samples));
   const direct = count === 1 && shadesWithoutBlending(scene.tile);
   const v = new SceneValues(true);
-  const { emitBody, pictures } = sceneParts(scene, v, true, direct ? 'srgb' : 'linear');
+  const { emitBody, pictures } = sceneParts(scene, v, 'color', direct ? 'srgb' : 'linear');
   const [cx, cy] = scene.view.center;
   const view = `vec3(${[cx, cy, scene.view.scale].map(floatLiteral).join(', ')})`;
   const out = new SourceBuilder(false).push(

@@ -69,6 +69,8 @@ export function App({ initialMessages, autosaveHold }: Props) {
   const [walkthrough, setWalkthrough] = useState(false);
   const [gallery, setGallery] = useState(false);
   const [presenting, setPresenting] = useState(false);
+  const [inspecting, setInspecting] = useState(false);
+  const stopInspecting = useCallback(() => setInspecting(false), []);
   const [frameKey, setFrameKey] = useState(0);
   const viewport = useRef<Viewport | null>(null);
   const fileInput = useRef<HTMLInputElement>(null);
@@ -190,6 +192,8 @@ export function App({ initialMessages, autosaveHold }: Props) {
         onPlay={() => store.setPlaying(!playing)}
         onHelp={() => setHelp(true)}
         onPresent={() => setPresenting(true)}
+        inspecting={inspecting}
+        onInspect={() => setInspecting(!inspecting)}
       />
       <Banner
         messages={messages}
@@ -207,6 +211,8 @@ export function App({ initialMessages, autosaveHold }: Props) {
             onDiagnostics={setRenderDiagnostics}
             onFrame={setRenderInfo}
             onViewport={onViewport}
+            inspecting={inspecting}
+            onInspectingOff={stopInspecting}
           />
         }
       />

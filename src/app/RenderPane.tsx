@@ -11,14 +11,18 @@ import { registry } from '../../nodes/types/index.ts';
 import { isTyping } from '../editor/typing.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
 import { fitBounds, pictureBounds } from '../viewport/fit-view.ts';
+import { OrbitOverlay } from '../viewport/overlay/OrbitOverlay.tsx';
 import { type NodePatch, RenderOverlay } from '../viewport/overlay/RenderOverlay.tsx';
 import { attachPanZoom } from '../viewport/pan-zoom.ts';
 import { Viewport } from '../viewport/viewport.ts';
+import { InspectPanel } from './inspect/InspectPanel.tsx';
+import { usePixelInspect } from './inspect/use-pixel-inspect.ts';
 import { renderHint } from './render-hint.ts';
 import { exposeForTests } from './test-hooks.ts';
 
 /** Pan/zoom settles into the document this long after the last wheel tick or drag. */
 const VIEW_STORE_DELAY_MS = 300;
+const noop = () => {};
 
 export interface RenderInfo {
   readonly samples: number;
@@ -36,6 +40,9 @@ interface Props {
   onViewport(v: Viewport | null): void;
   /** Presenting or embedded: no handles to drag, so nothing here can change the graph. */
   readonly readOnly?: boolean;
+  /** Inspect mode (toolbar toggle): a click explains the pixel; handles do not drag. */
+  readonly inspecting?: boolean;
+  onInspectingOff?(): void;
 }
 
 export function RenderPane({
@@ -46,6 +53,8 @@ export function RenderPane({
   onFrame,
   onViewport,
   readOnly = false,
+  inspecting = false,
+  onInspectingOff = noop,
 }: Props) {
   const store = useStore();
   const doc = useEditorState((s) => s.doc);
@@ -152,10 +161,26 @@ export function RenderPane({
     viewport.current?.setView(view);
   }, [view]);
 
+  // After the effects that hand the viewport its scene and view: the probe reads what is on screen.
+  const inspected = usePixelInspect({
+    pane,
+    viewport,
+    evaluation,
+    view,
+    width: size.width,
+    height: size.height,
+    mode: inspecting,
+    onModeOff: onInspectingOff,
+  });
+
   const hint = useMemo(() => renderHint(doc, evaluation, registry), [doc, evaluation]);
   const patchChange = (patches: NodePatch[]) => ({ type: 'set-params' as const, patches });
   return (
-    <div className={hint ? 'kf-render kf-render--idle' : 'kf-render'} ref={pane} data-testid="render-pane">
+    <div
+      className={`kf-render${hint ? ' kf-render--idle' : ''}${inspecting ? ' kf-render--inspecting' : ''}`}
+      ref={pane}
+      data-testid="render-pane"
+    >
       <canvas ref={canvas} className="kf-render__canvas" aria-label="Rendered picture" />
       {size.width > 0 && (
         <RenderOverlay
@@ -169,7 +194,20 @@ export function RenderPane({
           onPreview={(patches) => store.preview(patchChange(patches))}
           onCommit={(patches) => store.commit(patchChange(patches), 'drag in the render')}
           readOnly={readOnly}
+          inspecting={inspecting}
         />
+      )}
+      {inspected.anchor && inspected.inspection && size.width > 0 && (
+        <OrbitOverlay
+          start={inspected.inspection.trace.start}
+          steps={inspected.inspection.word}
+          view={view}
+          width={size.width}
+          height={size.height}
+        />
+      )}
+      {inspected.inspection && (
+        <InspectPanel inspection={inspected.inspection} side={inspected.side} onClose={inspected.close} />
       )}
       {bounds && (
         <button

@@ -22,6 +22,9 @@ interface Props {
   onPlay(): void;
   onHelp(): void;
   onPresent(): void;
+  /** Inspect mode ("Explain this pixel"): a click on the picture traces that pixel. */
+  readonly inspecting: boolean;
+  onInspect(): void;
 }
 
 /** Every toolbar command but Present, in groups, for the phone's menu. */
@@ -47,6 +50,11 @@ function commandGroups(p: Props): MenuGroup[] {
       label: 'View',
       items: [
         { label: p.playing ? 'Pause animation' : 'Play animation', onSelect: p.onPlay },
+        {
+          label: p.inspecting ? 'Stop inspecting' : 'Inspect a pixel',
+          hint: 'Alt click',
+          onSelect: p.onInspect,
+        },
         { label: 'Help', hint: '?', onSelect: p.onHelp },
       ],
     },
@@ -128,6 +136,20 @@ export function TopBar(p: Props) {
           <Menu label="Export" title="Export a picture or the shader" items={p.exportItems} />
           <PresentButton onPresent={p.onPresent} />
           <span className="kf-toolbar__gap" />
+          <button
+            type="button"
+            className={`kf-button${p.inspecting ? ' kf-button--active' : ''}`}
+            onClick={p.onInspect}
+            aria-pressed={p.inspecting}
+            aria-label="Inspect"
+            title="Inspect: click a point of the picture to see its orbit, step by step (Alt-click works any time; Esc leaves)"
+          >
+            <svg viewBox="0 0 16 16" width="14" height="14" aria-hidden="true">
+              <circle cx="8" cy="8" r="4.5" fill="none" stroke="currentColor" strokeWidth="1.5" />
+              <path d="M8 0.5v3M8 12.5v3M0.5 8h3M12.5 8h3" stroke="currentColor" strokeWidth="1.5" />
+            </svg>
+            <span className="kf-toolbar__label">Inspect</span>
+          </button>
           <button
             type="button"
             className="kf-button kf-button--icon"

@@ -41,6 +41,10 @@ export const SHORTCUTS: readonly { group: string; items: readonly Shortcut[] }[]
       { keys: ['Wheel', 'Pinch'], action: 'Zoom about the cursor' },
       { keys: ['Shift drag handle'], action: 'Snap while dragging' },
       { keys: ['F'], action: 'Fit: show the whole picture' },
+      {
+        keys: ['Alt click', 'Inspect button'],
+        action: 'Explain this pixel: its orbit, step by step (Esc closes)',
+      },
     ],
   },
   {

@@ -20,7 +20,8 @@ export interface RenderTarget {
   readonly mode: AccumulationMode;
 }
 
-export type TargetKind = 'accumulation' | 'srgb8';
+/** accumulation: see accumulationFormat; srgb8: 8-bit sRGB readback; probe: exact RGBA32F (needs EXT_color_buffer_float). */
+export type TargetKind = 'accumulation' | 'srgb8' | 'probe';
 
 /**
  * The accumulation format: RGBA32F when float targets can be blended (EXT_float_blend), else
@@ -50,7 +51,9 @@ export function createTarget(
   const { internal, type, mode } =
     kind === 'accumulation'
       ? accumulationFormat(gl)
-      : { internal: gl.SRGB8_ALPHA8, type: gl.UNSIGNED_BYTE, mode: 'mean' as const };
+      : kind === 'probe'
+        ? { internal: gl.RGBA32F, type: gl.FLOAT, mode: 'mean' as const }
+        : { internal: gl.SRGB8_ALPHA8, type: gl.UNSIGNED_BYTE, mode: 'mean' as const };
   gl.bindTexture(gl.TEXTURE_2D, texture);
   gl.texImage2D(gl.TEXTURE_2D, 0, internal, width, height, 0, gl.RGBA, type, null);
   // texelFetch only: no filtering, no mipmaps.

@@ -57,12 +57,7 @@ export class Renderer {
     pictures: readonly string[] = [],
   ): void {
     const gl = this.gl;
-    gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
-    gl.viewport(0, 0, width, height);
-    bindProgram(gl, gp.program);
-    if (gp.uploaded !== uniforms) uploadUniforms(gl, gp, uniforms);
-    setFrameUniforms(gl, gp, frame);
-    if (pictures.length > 0) this.pictures.bind(gp, pictures);
+    this.prepareDraw(gp, uniforms, target, width, height, frame, pictures);
     gl.enable(gl.BLEND);
     gl.blendEquation(gl.FUNC_ADD);
     if (target.mode === 'sum') {
@@ -75,10 +70,52 @@ export class Renderer {
       gl.blendColor(0, 0, 0, 1 / (k + 1));
       gl.blendFunc(gl.CONSTANT_ALPHA, gl.ONE_MINUS_CONSTANT_ALPHA);
     }
+    this.drawTriangle();
+    gl.disable(gl.BLEND);
+  }
+
+  /**
+   * Draws `frame` into `target`'s first width×height pixels as the program writes it, with no
+   * blending: a probe's exact floats (pixel-probe.ts).
+   */
+  drawExact(
+    gp: GpuProgram,
+    uniforms: readonly UniformEntry[],
+    target: RenderTarget,
+    width: number,
+    height: number,
+    frame: FrameParams,
+    pictures: readonly string[] = [],
+  ): void {
+    this.prepareDraw(gp, uniforms, target, width, height, frame, pictures);
+    this.gl.disable(this.gl.BLEND);
+    this.drawTriangle();
+  }
+
+  /** Binds the target, the program, its uniforms, the frame's uniforms and the pictures. */
+  private prepareDraw(
+    gp: GpuProgram,
+    uniforms: readonly UniformEntry[],
+    target: RenderTarget,
+    width: number,
+    height: number,
+    frame: FrameParams,
+    pictures: readonly string[],
+  ): void {
+    const gl = this.gl;
+    gl.bindFramebuffer(gl.FRAMEBUFFER, target.framebuffer);
+    gl.viewport(0, 0, width, height);
+    bindProgram(gl, gp.program);
+    if (gp.uploaded !== uniforms) uploadUniforms(gl, gp, uniforms);
+    setFrameUniforms(gl, gp, frame);
+    if (pictures.length > 0) this.pictures.bind(gp, pictures);
+  }
+
+  private drawTriangle(): void {
+    const gl = this.gl;
     gl.bindVertexArray(this.vao);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
     gl.bindVertexArray(null);
-    gl.disable(gl.BLEND);
   }
 
   /**

@@ -7,7 +7,9 @@
  * screen and are reported with node ids. A lost WebGL context is rebuilt when the browser restores it.
  */
 import type { Scene, View } from '../../nodes/core/scene.ts';
+import { pixelToWorld } from '../../nodes/core/view.ts';
 import { sampleOffset } from '../../shader-gen/view.ts';
+import { type GpuPixelResult, type PixelInspection, probePixel } from './pixel-probe.ts';
 import { createTarget, disposeTarget, type RenderTarget } from './render-target.ts';
 import { Renderer } from './renderer.ts';
 import { type SceneProgram, SceneProgramBuilder } from './scene-program.ts';
@@ -15,6 +17,7 @@ import { requestSrgbDrawingBuffer } from './srgb-canvas.ts';
 import { renderTiled } from './tiled-render.ts';
 import type { RenderToPixelsOptions, ViewportOptions, ViewportStats } from './viewport-types.ts';
 
+export type { PixelInspection } from './pixel-probe.ts';
 export type { RenderToPixelsOptions, ViewportOptions, ViewportStats } from './viewport-types.ts';
 
 const CONTEXT_ATTRIBUTES: WebGLContextAttributes = {
@@ -169,6 +172,27 @@ export class Viewport {
     } finally {
       disposeTarget(r.gl, scratch);
     }
+  }
+
+  /**
+   * "Explain this pixel" at a CSS point of the canvas: the drawing-buffer pixel under it, the world
+   * point at its centre (what the picture's first sample shows) and the GPU's depth there
+   * (pixel-probe.ts); null before a scene is set.
+   */
+  inspectAt(cssX: number, cssY: number): PixelInspection | null {
+    const scene = this.scene;
+    if (!scene) return null;
+    const width = this.gl.drawingBufferWidth;
+    const height = this.gl.drawingBufferHeight;
+    const clamp = (v: number, n: number) => Math.min(n - 1, Math.max(0, Math.floor(v)));
+    const px = clamp((cssX * width) / Math.max(1, this.canvas.clientWidth), width);
+    const py = clamp(height - (cssY * height) / Math.max(1, this.canvas.clientHeight), height);
+    const view = this.view(scene);
+    const at = { px, py, width, height };
+    const gpu: GpuPixelResult = this.renderer
+      ? probePixel(this.renderer, scene, view, at)
+      : { ok: false, reason: 'the WebGL context is lost' };
+    return { pixel: at, world: pixelToWorld(view, width, height, px, py), gpu };
   }
 
   dispose(): void {

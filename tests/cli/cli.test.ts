@@ -150,6 +150,51 @@ describe('kleinflow sample', () => {
     expect(r.stderr).toMatch(message);
   });
 
+  it('--trace prints every step (element, node label, point, factor) and why it stopped', () => {
+    const pts: [number, number][] = [
+      [0.9, -0.1],
+      [0.1, 0.2],
+      [0.2, 0.04],
+    ];
+    const r = runCli(['sample', EXAMPLE, '--points', file('trace-pts.json', JSON.stringify(pts)), '--trace']);
+    expect(r.stderr).toBe('');
+    expect(r.status).toBe(0);
+    const loaded = parseDocumentText(readFileSync(EXAMPLE, 'utf8'), registry);
+    if (!loaded.ok) throw new Error('example does not load');
+    const { scene } = evaluateGraph(loaded.doc, registry);
+    const out = JSON.parse(r.stdout) as {
+      points: {
+        depth: number;
+        x: number;
+        y: number;
+        escaped: boolean;
+        stop: string;
+        steps: Record<string, unknown>[];
+      }[];
+    };
+    out.points.forEach((p, i) => {
+      const want = interpret(scene, pts[i]);
+      // The traced result is the untraced one, plus the steps.
+      expect([p.depth, p.x, p.y, p.escaped]).toEqual([want.depth, ...want.final, want.escaped]);
+      expect(p.stop).toBe('fundamental-domain');
+      expect(p.steps).toHaveLength(want.depth); // reflections only: one step per depth
+      p.steps.forEach((s, k) => {
+        expect(Object.keys(s)).toEqual(['element', 'node', 'label', 'depth', 'x', 'y', 'factor']);
+        expect(s.node).toBe('k');
+        expect(s.label).toBe(`Triangle kaleidoscope ${(s.element as number) + 1}`);
+        expect(s.depth).toBe(k + 1);
+      });
+      const last = p.steps.at(-1);
+      if (last) expect([last.x, last.y, last.factor]).toEqual([...want.final, want.scale]);
+    });
+    expect(out.points[0].steps.length).toBeGreaterThan(3);
+    expect(out.points[2].steps).toEqual([]);
+    expect(out.points[2].depth).toBe(0);
+    // Without --trace nothing changes.
+    const plain = runCli(['sample', EXAMPLE, '--points', join(dir, 'trace-pts.json')]);
+    expect(plain.stdout).not.toContain('steps');
+  });
+
   it('needs --points', () => {
     const r = runCli(['sample', EXAMPLE]);
     expect(r.status).toBe(2);

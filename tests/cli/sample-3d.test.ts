@@ -128,4 +128,10 @@ describe('kleinflow sample, 3D graph', () => {
       /is a 3D graph \(its render node is Render 3D\): this command works on 2D graphs/,
     );
   });
+
+  it('--trace is refused on a 3D graph in one line (usage), not ignored', () => {
+    const r = runCli(['sample', FIG11, '--trace', '--points', file('pts.json', '[[0,0,0]]')]);
+    expect(r.status).toBe(2);
+    expect(r.stderr).toMatch(/--trace works on 2D graphs/);
+  });
 });

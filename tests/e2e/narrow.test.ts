@@ -35,6 +35,7 @@ const COMMANDS = [
   'Undo',
   'Redo',
   'Play animation',
+  'Inspect',
   'Help',
 ];
 

@@ -1,6 +1,6 @@
 /**
  * Every shader we generate is valid GLSL ES 3.00 (glslangValidator, one batch call) and uses no
- * identifier WebGL forbids: uniform, baked and probe variants of every example and of hand-made
+ * identifier WebGL forbids: uniform, baked, probe and inspect variants of every example and of hand-made
  * scenes with every element kind and colouring mode, the Shadertoy versions, the vertex shader and
  * the hand-written bench shaders. `#line` markers make compiler errors point at the right node.
  */
@@ -22,6 +22,8 @@ const VARIANTS: Record<string, CompileOptions> = {
   'color-baked': { variant: 'color', baked: true },
   probe: { variant: 'probe' },
   'probe-baked': { variant: 'probe', baked: true },
+  inspect: { variant: 'inspect' },
+  'inspect-baked': { variant: 'inspect', baked: true },
 };
 
 function shadersOf(name: string, scene: Scene): ShaderToCheck[] {
@@ -67,7 +69,7 @@ describe('generated GLSL passes glslangValidator and WebGL identifier rules', ()
   it('covers every example, every hand-made scene and every variant', () => {
     expect(examples.length).toBeGreaterThan(0);
     expect(shaders.length).toBe(
-      (examples.length + Object.keys(HAND_MADE_SCENES).length) * 6 +
+      (examples.length + Object.keys(HAND_MADE_SCENES).length) * (Object.keys(VARIANTS).length + 2) +
         HAND_WRITTEN.reduce((n, h) => n + (h.colour ? 4 : 2), 0) +
         1,
     );

@@ -1,12 +1,16 @@
 /**
  * `kleinflow sample graph.json --points pts.json`: runs the IIS at given points (no clipping, no
  * colour) and prints `{"points":[{"depth":…,"x":…,"y":…,"escaped":…},…]}` in input order, where
- * (x, y) is the final point. A 3D graph takes [x, y, z] points and adds z and the signed distance
- * to the seeds' orbit. For scripts, plots and checking other implementations.
+ * (x, y) is the final point; `--trace` adds each point's steps and why it stopped
+ * (shader-gen/trace.ts, the interpreter's own loop observed). A 3D graph takes [x, y, z] points and
+ * adds z and the signed distance to the seeds' orbit. For scripts, plots and checking other
+ * implementations.
  */
 import type { Scene3d, Vec3 } from '../../../nodes/core/scene-3d.ts';
 import { sampleSpace } from '../../../nodes/core/seed-3d.ts';
+import { elementNames } from '../../../nodes/graph/element-names.ts';
 import { interpret } from '../../../shader-gen/interpret.ts';
+import { type IisTrace, trace } from '../../../shader-gen/trace.ts';
 import { formatBytes, INPUT_LIMITS } from '../../io/input-limits.ts';
 import { expectPositionals, formatOptions, type OptionSpec, parseArgs, stringOption } from '../args.ts';
 import { type CliCommand, CliError, EXIT, type InputFile, usageError } from '../command.ts';
@@ -20,6 +24,10 @@ const OPTIONS: readonly OptionSpec[] = [
     short: 'p',
     value: 'FILE',
     doc: 'JSON array of [x, y] world points, [x, y, z] for a 3D graph (required)',
+  },
+  {
+    long: 'trace',
+    doc: 'add each point\'s steps (element, node, label, x, y, factor) and "stop" (2D graphs)',
   },
 ];
 
@@ -39,16 +47,36 @@ function sample3d(scene: Scene3d, p: Vec3): string {
   return `{"depth":${r.depth},"x":${num(x)},"y":${num(y)},"z":${num(z)},"escaped":${r.escaped},"distance":${d}}`;
 }
 
-/** Every point of the file as one JSON object each, 2D or 3D as the graph is. */
-function sampler(path: string, file: InputFile, picture: AnyScene, onBytes?: (b: number) => void) {
+/** `,"steps":[…],"stop":"…"` of one traced point: each step's element index, node id, name, point, scale. */
+function traceFields(t: IisTrace, names: readonly string[]): string {
+  const steps = t.steps.map(
+    (s) =>
+      `{"element":${s.element},"node":${JSON.stringify(s.nodeId)},"label":${JSON.stringify(names[s.element])},"depth":${s.depth},"x":${num(s.x)},"y":${num(s.y)},"factor":${num(s.factor)}}`,
+  );
+  return `,"steps":[${steps.join(',')}],"stop":"${t.stop}"`;
+}
+
+/**
+ * Every point of the file as one JSON object each, 2D or 3D as the graph is; `names` (the
+ * elements' names) asks for each 2D point's trace.
+ */
+function sampler(
+  path: string,
+  file: InputFile,
+  picture: AnyScene,
+  names: readonly string[] | null,
+  onBytes?: (b: number) => void,
+) {
   if (picture.kind === '3d') {
     const scene = picture.scene3d;
     return mapBatches(streamPoints(path, file.chunks, { dimension: 3, onBytes }), (p) => sample3d(scene, p));
   }
   const scene = picture.scene;
   return mapBatches(streamPoints(path, file.chunks, { onBytes }), (p) => {
-    const r = interpret(scene, p);
-    return `{"depth":${r.depth},"x":${num(r.final[0])},"y":${num(r.final[1])},"escaped":${r.escaped}}`;
+    const traced = names ? trace(scene, p) : null;
+    const r = traced ?? interpret(scene, p);
+    const steps = traced && names ? traceFields(traced, names) : '';
+    return `{"depth":${r.depth},"x":${num(r.final[0])},"y":${num(r.final[1])},"escaped":${r.escaped}${steps}}`;
   });
 }
 
@@ -72,6 +100,12 @@ export const sampleCommand: CliCommand = {
     'point to the nearest image of a seed (negative inside), estimated as the seed distance at the',
     'final point divided by the accumulated scale factor; null when there are no seeds.',
     '',
+    'With --trace (2D graphs) each point also gets "steps": every application, in order, as',
+    '{"element":I,"node":ID,"label":NAME,"depth":D,"x":X,"y":Y,"factor":S}: the element\'s index in',
+    'graph order, the node that made it and its name, the depth, point and accumulated length scale',
+    'after the step; and "stop": "fundamental-domain" (reached the tile) or "limit" (still inside an',
+    "element at max iterations). The editor's Inspect shows the same, with seeds and the clip disk.",
+    '',
     'The points are read and the results written as a stream: any number of points works in',
     'bounded memory, and output starts at once (--points - reads standard input). One entry may',
     `be at most ${formatBytes(INPUT_LIMITS.pointEntryChars)}; GRAPH at most ${formatBytes(INPUT_LIMITS.documentBytes)} (a PNG ${formatBytes(INPUT_LIMITS.pngBytes)}). A points file of`,
@@ -85,7 +119,13 @@ export const sampleCommand: CliCommand = {
     const [graphPath] = expectPositionals(parsed, ['GRAPH']);
     const pointsPath = stringOption(parsed, 'points');
     if (!pointsPath) throw usageError('missing --points POINTS.json');
-    const { picture } = await loadAnyScene(io, graphPath);
+    const { picture, evaluation } = await loadAnyScene(io, graphPath);
+    if (parsed.options.trace && picture.kind === '3d')
+      throw usageError('--trace works on 2D graphs; this is a 3D graph (a render-3d node)');
+    const names =
+      parsed.options.trace && picture.kind === '2d'
+        ? elementNames(picture.scene.elements, evaluation!.analysis)
+        : null;
     let file: InputFile;
     try {
       file = await io.open(pointsPath);
@@ -108,7 +148,13 @@ export const sampleCommand: CliCommand = {
       await io.stdout.drain?.();
     };
     try {
-      const results = sampler(pointsPath, file, picture, progress && ((b) => progress.update(b / size!)));
+      const results = sampler(
+        pointsPath,
+        file,
+        picture,
+        names,
+        progress && ((b) => progress.update(b / size!)),
+      );
       for await (const batch of results) {
         for (const line of batch) {
           out += `${count === 0 ? '' : ','}${line}`;

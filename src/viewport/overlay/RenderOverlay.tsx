@@ -36,6 +36,8 @@ export interface RenderOverlayProps {
   showLabels?: boolean;
   /** Presenting or embedded: the construction is drawn, but there is nothing to grab. */
   readOnly?: boolean;
+  /** Inspect mode: a click explains the pixel, so handles do not grab (Alt-click never grabs either). */
+  inspecting?: boolean;
 }
 
 const FALLBACK_COLOR = '#ffffff';
@@ -71,8 +73,9 @@ export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
     onHoverNode: props.onHoverNode,
     onPreview: props.onPreview,
     onCommit: props.onCommit,
+    inspecting: props.inspecting ?? false,
   });
-  const cursor = drag ? 'grabbing' : hoverHandle ? 'grab' : undefined;
+  const cursor = props.inspecting ? 'crosshair' : drag ? 'grabbing' : hoverHandle ? 'grab' : undefined;
   return (
     <svg
       ref={ref}

@@ -30,22 +30,24 @@ export function pxPerWorld(s: Screen): number {
 }
 
 /**
- * The part of the infinite line through a and b (CSS px) inside the rectangle
- * [−m, W+m] × [−m, H+m], or null when it misses it. Parametric clipping (Liang–Barsky):
- * p(t) = a + t(b − a), each slab bound narrows [t0, t1].
+ * The part of p(t) = a + t(b − a), t in [tMin, tMax], inside the rectangle [−m, W+m] × [−m, H+m]
+ * (CSS px), or null when it misses it. Parametric clipping (Liang–Barsky): each slab bound narrows
+ * [t0, t1].
  */
-export function clipLineToRect(
+function clipParametric(
   a: Vec2,
   b: Vec2,
   width: number,
   height: number,
   margin: number,
+  tMin: number,
+  tMax: number,
 ): [Vec2, Vec2] | null {
   const dx = b[0] - a[0];
   const dy = b[1] - a[1];
   if (dx === 0 && dy === 0) return null;
-  let t0 = -Infinity;
-  let t1 = Infinity;
+  let t0 = tMin;
+  let t1 = tMax;
   const slabs: [number, number, number, number][] = [
     [a[0], dx, -margin, width + margin],
     [a[1], dy, -margin, height + margin],
@@ -66,6 +68,14 @@ export function clipLineToRect(
     [a[0] + t1 * dx, a[1] + t1 * dy],
   ];
 }
+
+/** The part of the infinite line through a and b (CSS px) inside the rectangle grown by `margin`. */
+export const clipLineToRect = (a: Vec2, b: Vec2, width: number, height: number, margin: number) =>
+  clipParametric(a, b, width, height, margin, -Infinity, Infinity);
+
+/** The part of the segment a–b (CSS px) inside the rectangle grown by `margin` (the orbit's path). */
+export const clipSegmentToRect = (a: Vec2, b: Vec2, width: number, height: number, margin: number) =>
+  clipParametric(a, b, width, height, margin, 0, 1);
 
 /**
  * Whether a circle's rim (centre c, radius r, CSS px) crosses the rectangle grown by `margin`:

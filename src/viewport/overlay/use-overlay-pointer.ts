@@ -23,6 +23,8 @@ export interface PointerInputs {
   readonly onHoverNode: (id: string | null) => void;
   readonly onPreview: (patches: NodePatch[]) => void;
   readonly onCommit: (patches: NodePatch[]) => void;
+  /** Inspect mode: no handle grabs (a click explains the pixel instead). */
+  readonly inspecting: boolean;
 }
 
 /** What the overlay draws about the drag in progress. */
@@ -132,6 +134,8 @@ export function useOverlayPointer(
       }
       // Only the first finger (or the main mouse button) grabs: a second finger means a pinch.
       if (!e.isPrimary || (e.pointerType === 'mouse' && e.button !== 0)) return;
+      // Inspect mode and Alt-click explain the pixel under the pointer: they never grab a handle.
+      if (latest.current.inspecting || e.altKey) return;
       const { handles, evaluation, screen } = latest.current;
       const css = localPoint(el, e);
       const i = hitHandle(

@@ -1,0 +1,132 @@
+/**
+ * The "Explain this pixel" panel, docked in the render pane on the side away from the clicked
+ * point: where the point is, why its run stopped and at which depth, the GPU's depth at the same
+ * pixel (agreeing, disagreeing with a note, or unavailable and why), the final point and scale, and
+ * the word of elements applied — numbered like the markers on the picture. Escape closes it.
+ */
+import { type JSX, useCallback } from 'react';
+import { MAX_DRAWN_STEPS } from '../../viewport/overlay/orbit-path.ts';
+import type { GpuCheck, Inspection } from './inspection.ts';
+
+interface Props {
+  readonly inspection: Inspection;
+  /** Which side of the pane it docks on (away from the point). */
+  readonly side: 'left' | 'right';
+  onClose(): void;
+}
+
+/** A number for people: `digits` significant digits, no exponent for ordinary sizes, a true minus sign. */
+export const fmt = (v: number, digits = 4): string => {
+  if (!Number.isFinite(v)) return String(v);
+  const a = Math.abs(v);
+  const text =
+    a !== 0 && (a >= 1e6 || a < 1e-4) ? v.toExponential(digits - 1) : String(+v.toPrecision(digits));
+  return text.replace(/-/g, '−');
+};
+const point = (p: readonly [number, number], digits = 4) => `(${fmt(p[0], digits)}, ${fmt(p[1], digits)})`;
+
+const STOP_TITLE = {
+  'fundamental-domain': 'reached the tile',
+  limit: 'hit the limit',
+  seed: 'in an orbit seed',
+  clipped: 'outside the clip disk',
+} as const;
+
+function GpuLine({ gpu, depth }: { gpu: GpuCheck; depth: number }) {
+  if (gpu.kind === 'agrees')
+    return (
+      <p className="kf-inspect__gpu kf-inspect__gpu--agrees" data-testid="inspect-gpu">
+        GPU depth: {gpu.depth} (agrees)
+      </p>
+    );
+  if (gpu.kind === 'unavailable')
+    return (
+      <p className="kf-inspect__gpu kf-inspect__gpu--unavailable" data-testid="inspect-gpu">
+        GPU depth: not available — {gpu.reason}.
+      </p>
+    );
+  return (
+    <div className="kf-inspect__gpu kf-inspect__gpu--disagrees" role="alert" data-testid="inspect-gpu">
+      <p>
+        GPU depth: {gpu.depth} ({STOP_TITLE[gpu.stop]}) — disagrees with the CPU's {depth}.
+      </p>
+      <p className="kf-inspect__note">{gpu.note}</p>
+    </div>
+  );
+}
+
+export function InspectPanel({ inspection, side, onClose }: Props): JSX.Element {
+  const { trace: t, word } = inspection;
+  const shown = word.slice(0, MAX_DRAWN_STEPS);
+  // Pan/zoom listens natively on the pane: a press, a drag or a wheel in the panel (Close, selecting
+  // text, scrolling the word) must not pan or zoom the picture behind it.
+  const keepEvents = useCallback((el: HTMLElement | null) => {
+    if (!el) return undefined;
+    const stop = (e: Event) => e.stopPropagation();
+    el.addEventListener('pointerdown', stop);
+    el.addEventListener('wheel', stop);
+    return () => {
+      el.removeEventListener('pointerdown', stop);
+      el.removeEventListener('wheel', stop);
+    };
+  }, []);
+  return (
+    <section
+      ref={keepEvents}
+      className={`kf-inspect kf-inspect--${side}`}
+      aria-label="Explain this pixel"
+      data-testid="inspect-panel"
+    >
+      <header className="kf-inspect__head">
+        <h2>Explain this pixel</h2>
+        <button
+          type="button"
+          className="kf-inspect__close"
+          aria-label="Close"
+          title="Close (Esc)"
+          onClick={onClose}
+        >
+          ×
+        </button>
+      </header>
+      <dl className="kf-inspect__facts">
+        <dt>Point</dt>
+        <dd>{point(t.start)}</dd>
+        <dt>Depth</dt>
+        <dd>
+          <strong data-testid="inspect-depth">{t.depth}</strong> — {STOP_TITLE[t.stop]}
+        </dd>
+        <dt>Final</dt>
+        <dd>
+          {point(t.final)}, scale ×{fmt(t.scale)}
+        </dd>
+      </dl>
+      <p className="kf-inspect__stop">{inspection.stopText}</p>
+      <GpuLine gpu={inspection.gpu} depth={t.depth} />
+      {word.length > 0 && (
+        <>
+          <h3 className="kf-inspect__word-title">Word: the elements applied, in order</h3>
+          <ol className="kf-inspect__word" aria-label="Word">
+            {shown.map((l) => (
+              <li key={l.step} data-power={l.power}>
+                <span className="kf-inspect__name">
+                  <span className="kf-inspect__dot" style={{ background: l.color }} aria-hidden="true" />
+                  {l.name}
+                  {l.power > 1 && <sup title={`a fold by ${l.power} steps`}>{l.power}</sup>}
+                </span>
+                <span className="kf-inspect__to">
+                  → {point(l.at, 3)} ×{fmt(l.factor, 3)}
+                </span>
+              </li>
+            ))}
+          </ol>
+          {word.length > shown.length && (
+            <p className="kf-inspect__note">
+              Showing the first {shown.length} of {word.length} steps (here and on the picture).
+            </p>
+          )}
+        </>
+      )}
+    </section>
+  );
+}

@@ -115,10 +115,12 @@ describe('meshScene3d', () => {
   });
 
   it('asks for bounds when plane mirrors make the orbit unbounded, and refuses a bad resolution', async () => {
-    const plane: MeshScene = {
-      ...fig11,
-      elements: [{ kind: 'plane-reflection', nodeId: 'p', plane: { point: [0, 0, 3], normal: [0, 0, -1] } }],
+    const mirror: NodeElement3d = {
+      kind: 'plane-reflection',
+      nodeId: 'p',
+      plane: { point: [0, 0, 3], normal: [0, 0, -1] },
     };
+    const plane: MeshScene = { ...fig11, elements: [mirror] };
     const r = await meshScene3d(plane, { resolution: 16 });
     expect(r?.ok === false && r.error).toMatch(/unbounded.*give bounds/);
     const b = await meshScene3d(plane, { resolution: 12, bounds: { min: [-1, -1, -1], max: [1, 1, 1] } });

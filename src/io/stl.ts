@@ -9,7 +9,7 @@ const HEADER = 80;
 const PER_TRIANGLE = 50;
 
 /** The mesh as binary STL bytes; `header` (ASCII, cut to 80 bytes) names the source. */
-export function writeStl(mesh: Mesh, header = 'Kleinflow mesh'): Uint8Array {
+export function writeStl(mesh: Mesh, header = 'Kleinflow mesh'): Uint8Array<ArrayBuffer> {
   const n = mesh.triangles.length / 3;
   const bytes = new Uint8Array(HEADER + 4 + n * PER_TRIANGLE);
   const view = new DataView(bytes.buffer);

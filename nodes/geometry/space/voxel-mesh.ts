@@ -60,6 +60,17 @@ export function orbitBounds(scene: MeshScene): Bounds3 | null {
   return { min, max };
 }
 
+/** "X0,Y0,Z0,X1,Y1,Z1" (the CLI's --bounds, the editor's Bounds field) as a box, or why not. */
+export function parseBounds(text: string): Result<Bounds3> {
+  const v = text.split(',').map((t) => (t.trim() === '' ? Number.NaN : Number(t)));
+  if (v.length !== 6 || !v.every(Number.isFinite))
+    return fail(`expects six numbers X0,Y0,Z0,X1,Y1,Z1, got "${text}"`);
+  const min: Vec3 = [v[0], v[1], v[2]];
+  const max: Vec3 = [v[3], v[4], v[5]];
+  if (!min.every((m, a) => m < max[a])) return fail('each of X0, Y0, Z0 must be below X1, Y1, Z1');
+  return ok({ min, max });
+}
+
 /** A grid with cubic cells, `resolution` of them along the longest side, plus one empty cell of padding all round. */
 export function gridFor(bounds: Bounds3, resolution: number): VoxelGrid {
   const size = sub3(bounds.max, bounds.min);

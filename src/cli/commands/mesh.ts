@@ -3,12 +3,12 @@
  * (the orbit of its seeds) as a closed triangle mesh in binary STL, for 3D printing (paper §5.3.2;
  * docs/math-3d.md "Voxel mesh (paper §5.3.2)").
  */
-import type { Vec3 } from '../../../nodes/geometry/space/vec3.ts';
 import {
   type Bounds3,
   MAX_MESH_RESOLUTION,
   MIN_MESH_RESOLUTION,
   meshScene3d,
+  parseBounds,
 } from '../../../nodes/geometry/space/voxel-mesh.ts';
 import { writeStl } from '../../io/stl.ts';
 import {
@@ -40,15 +40,10 @@ const OPTIONS: readonly OptionSpec[] = [
   },
 ];
 
-function parseBounds(text: string): Bounds3 {
-  const v = text.split(',').map((s) => Number(s.trim()));
-  if (v.length !== 6 || !v.every(Number.isFinite))
-    throw usageError(`--bounds expects six numbers X0,Y0,Z0,X1,Y1,Z1, got "${text}"`);
-  const min: Vec3 = [v[0], v[1], v[2]];
-  const max: Vec3 = [v[3], v[4], v[5]];
-  if (!min.every((m, a) => m < max[a]))
-    throw usageError(`--bounds: each of X0, Y0, Z0 must be below X1, Y1, Z1`);
-  return { min, max };
+function boundsOption(text: string): Bounds3 {
+  const b = parseBounds(text);
+  if (!b.ok) throw usageError(`--bounds ${b.error}`);
+  return b.value;
 }
 
 export const meshCommand: CliCommand = {
@@ -75,7 +70,7 @@ export const meshCommand: CliCommand = {
         ? DEFAULT_MESH_RESOLUTION
         : parseIntegerOption('resolution', resText, MIN_MESH_RESOLUTION, MAX_MESH_RESOLUTION);
     const boundsText = stringOption(parsed, 'bounds');
-    const bounds = boundsText === undefined ? undefined : parseBounds(boundsText);
+    const bounds = boundsText === undefined ? undefined : boundsOption(boundsText);
 
     const { picture } = await loadAnyScene(io, graphPath);
     if (picture.kind !== '3d') throw new CliError(`${graphPath}: not a 3D graph (it has no render-3d node)`);

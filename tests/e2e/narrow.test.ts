@@ -11,7 +11,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { repoRoot, type ServedApp, serveDevApp } from './app-server.ts';
 
 const shots = join(repoRoot, 'test-artifacts');
-/** The gallery shows the 2D examples and the 3D ones (examples/3d). */
+/** The gallery's examples: examples/ and the 3D ones in examples/3d/. */
 const EXAMPLE_TITLES = ['examples', 'examples/3d'].flatMap((dir) =>
   readdirSync(join(repoRoot, dir))
     .filter((f) => f.endsWith('.kleinflow.json'))

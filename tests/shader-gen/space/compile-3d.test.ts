@@ -1,9 +1,10 @@
 /**
  * The 3D GLSL generator (shader-gen/space/compile-3d.ts): every program it writes — uniform and
  * baked, colour and probe, every 3D example, the hand-built scenes, every colouring mode, the
- * Shadertoy version — passes glslangValidator and the WebGL identifier rules; the source depends
+ * Shadertoy version, and the hand-written bench tracer — pass glslangValidator and the WebGL identifier rules; the source depends
  * only on the scene's structure, so value edits re-use the program; baking leaves no scene uniform.
  */
+import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { LIMITS } from '../../../nodes/core/limits.ts';
 import type { Coloring3d, Scene3d } from '../../../nodes/core/scene-3d.ts';
@@ -66,6 +67,11 @@ describe('compile3d', () => {
     })),
     { name: `${name}.shadertoy`, source: shadertoyWrapper(shadertoySource3d(scene)), stage: 'frag' as const },
   ]);
+  shaders.push({
+    name: 'hand-written-fig11-trace',
+    source: readFileSync(new URL('../../bench/hand-written/fig11-trace.frag', import.meta.url), 'utf8'),
+    stage: 'frag',
+  });
   const results = validateShaders(shaders);
 
   for (const shader of shaders) {

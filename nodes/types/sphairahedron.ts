@@ -12,7 +12,7 @@ import {
   infiniteSeedBox,
   infiniteSphairahedron,
 } from '../geometry/space/sphairahedron.ts';
-import { CUBE_TYPE_IDS, cubeTypeById } from '../geometry/space/sphairahedron-types.ts';
+import { SPHAIRAHEDRON_TYPE_IDS, sphairahedronTypeById } from '../geometry/space/sphairahedron-types.ts';
 import { fail, fmt } from './shared.ts';
 import { point3Input, radiusTo, sphereHandles } from './space-shared.ts';
 
@@ -22,7 +22,7 @@ export const sphairahedronNode = defineNode({
   label: 'Sphairahedron',
   category: '3D',
   color: '#7e57c2',
-  doc: 'The inversions in the six faces of a cube-type sphairahedron (a polyhedron with spherical faces, every dihedral angle π/n) and a seed whose orbit draws its limit set: the quasi-sphere (finite: the faces inverted in a sphere you can drag) or a fractal terrain (infinite: a prism closed by three spheres).',
+  doc: 'The inversions in the faces of a sphairahedron (a polyhedron with spherical faces, every dihedral angle π/n; cube type or pentahedral prism) and a seed whose orbit draws its limit set: the quasi-sphere (finite: the faces inverted in a sphere you can drag) or a fractal terrain (infinite: a prism closed by three spheres).',
   inputs: {
     zb: {
       type: 'number',
@@ -31,7 +31,13 @@ export const sphairahedronNode = defineNode({
       step: 0.01,
       doc: 'height of the second sphere (the first is at 0)',
     },
-    zc: { type: 'number', label: 'zc', default: 0, step: 0.01, doc: 'height of the third sphere' },
+    zc: {
+      type: 'number',
+      label: 'zc',
+      default: 0,
+      step: 0.01,
+      doc: 'height of the third sphere (cube types only)',
+    },
     center: point3Input(
       'inversion centre',
       0,
@@ -56,9 +62,9 @@ export const sphairahedronNode = defineNode({
     shape: {
       kind: 'enum',
       default: 'cube-333-a',
-      options: CUBE_TYPE_IDS,
+      options: SPHAIRAHEDRON_TYPE_IDS,
       label: 'type',
-      doc: 'the prism (333, 244, 236: its angles π/n) and the dihedral angles of the spheres',
+      doc: 'cube (six faces: three planes, three spheres) or pentahedral prism (five: three planes, two spheres); the prism (333, 244, 236: its angles π/n) and the dihedral angles of the spheres',
     },
     form: {
       kind: 'enum',
@@ -69,7 +75,7 @@ export const sphairahedronNode = defineNode({
     },
   },
   evaluate: ({ inputs, params, nodeId }) => {
-    const type = cubeTypeById(params.shape);
+    const type = sphairahedronTypeById(params.shape);
     if (!type) return fail(`unknown sphairahedron type "${params.shape}"`);
     const inf = infiniteSphairahedron(type, inputs.zb, inputs.zc);
     if (!inf.ok) return fail(inf.error);

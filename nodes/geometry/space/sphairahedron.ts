@@ -5,7 +5,13 @@
  * formulas and where they come from: docs/math-3d.md "Sphairahedra (paper §5.3)".
  */
 import type { Element3d } from './iis-3d.ts';
-import { CUBE_TYPES, type CubeTypeAngles } from './sphairahedron-types.ts';
+import {
+  CUBE_TYPES,
+  type CubeTypeAngles,
+  type PentahedralPrismAngles,
+  SPHAIRAHEDRON_TYPES,
+  type SphairahedronType,
+} from './sphairahedron-types.ts';
 import {
   fail,
   invertSphere,
@@ -17,17 +23,20 @@ import {
 } from './sphere.ts';
 import { add3, dist3, dot3, scale3, sub3, type Vec3 } from './vec3.ts';
 
-export type { CubeTypeAngles } from './sphairahedron-types.ts';
+export type { CubeTypeAngles, PentahedralPrismAngles, SphairahedronType } from './sphairahedron-types.ts';
 
-/** The prism's corners lie on the unit circle (z = 0); the spheres sit at heights 0, zb, zc. */
+/**
+ * The prism's corners lie on the unit circle (z = 0). Cube type: the spheres S1, S2, S3 sit at
+ * heights 0, zb, zc. Pentahedral prism: the corner sphere S_c at height 0, the central S_m at zb.
+ */
 export interface InfiniteSphairahedron {
-  readonly type: CubeTypeAngles;
+  readonly type: SphairahedronType;
   /** The triangle's corners V1, V2, V3 (anticlockwise, z = 0). */
   readonly corners: readonly [Vec3, Vec3, Vec3];
   /** F1, F2, F3: F_k is the side opposite V_k, its normal points into the prism (the kept side). */
   readonly planes: readonly [Plane, Plane, Plane];
-  /** S1, S2, S3: S_k sits in corner V_k. */
-  readonly spheres: readonly [Sphere, Sphere, Sphere];
+  /** Cube type: S1, S2, S3, S_k in corner V_k. Pentahedral prism: S_c (corner V1), then S_m. */
+  readonly spheres: readonly Sphere[];
   /**
    * Height of the "initial hyperplane": inside the prism, every point below it that is outside the
    * balls belongs to the lower piece of the complement (the far side of the quasi-sphere).
@@ -36,7 +45,7 @@ export interface InfiniteSphairahedron {
 }
 
 export interface FiniteSphairahedron {
-  /** The six faces: images of F1, F2, F3, then of S1, S2, S3. Each region is the ball. */
+  /** The faces: images of F1, F2, F3, then of the spheres. Each region is the ball. */
   readonly spheres: readonly Sphere[];
   /** The image of the half-space below the initial hyperplane: a ball, the orbit seed. */
   readonly seed: Sphere;
@@ -135,19 +144,24 @@ function floorTop(corners: readonly Vec3[], spheres: readonly Sphere[]): Result<
 }
 
 /**
- * The infinite sphairahedron of a cube type with shape parameters zb, zc (the heights of S2 and S3;
+ * The infinite sphairahedron of a type: cube (shape parameters zb, zc) or pentahedral prism (zb;
+ * zc unused). Cube type, with zb, zc (the heights of S2 and S3;
  * S1 is at height 0). Centres c_k = V_k + r_k·w_k + z_k·e_z; the sphere–sphere angles give, for each
  * pair (i, j) with ΔV = V_i − V_j, the linear equation
  *   2 r_i (ΔV·w_i) − 2 r_j (ΔV·w_j) = −|ΔV|² − (z_i − z_j)²
  * (the terms in r² cancel because the vertices are ideal), solved for r_1, r_2, r_3.
  */
 export function infiniteSphairahedron(
-  type: CubeTypeAngles,
+  type: SphairahedronType,
   zb: number,
   zc: number,
 ): Result<InfiniteSphairahedron> {
   if (!Number.isFinite(zb) || !Number.isFinite(zc))
     return fail('the shape parameters must be finite numbers');
+  return type.kind === 'cube' ? infiniteCube(type, zb, zc) : infinitePentahedralPrism(type, zb);
+}
+
+function infiniteCube(type: CubeTypeAngles, zb: number, zc: number): Result<InfiniteSphairahedron> {
   const corners = prismCorners(type.prism);
   const planes = prismPlanes(corners);
   const w = [0, 1, 2].map((k) => cornerDirection(planes, k, type.spherePlane[k]));
@@ -188,6 +202,38 @@ export function infiniteSphairahedron(
   return ok({ type, corners, planes, spheres, floorTop: floor.value });
 }
 
+/**
+ * The infinite pentahedral prism: the central sphere S_m at distance r·cos(π/m_i) from every plane
+ * F_i is a 3 × 3 linear system in its horizontal centre and radius,
+ *   n_i·(x, y) − r cos(π/m_i) = n_i·q_i   (i = 1, 2, 3),
+ * so its radius is fixed by the prism; it sits at height zb. The corner sphere S_c in V1 has centre
+ * V1 + r_c w_1 (as for the cube) at height 0, and the angle γ with S_m gives, with Δ = V1 − c_m
+ * (horizontal) and |w_1| = 1,  r_c (2Δ·w_1 − 2 r_m cos γ) = r_m² − |Δ|² − zb².
+ */
+function infinitePentahedralPrism(type: PentahedralPrismAngles, zb: number): Result<InfiniteSphairahedron> {
+  const corners = prismCorners(type.prism);
+  const planes = prismPlanes(corners);
+  const rows = planes.map((p, i): Vec3 => [p.normal[0], p.normal[1], -Math.cos(Math.PI / type.central[i])]);
+  const rhs = planes.map((p) => dot3(p.normal, p.point)) as unknown as Vec3;
+  const central = solve3(rows, rhs);
+  if (!central || !(central[2] > 1e-6)) return fail('the central sphere is not determined for this type');
+  const rm = central[2];
+  const cm: Vec3 = [central[0], central[1], zb];
+  const w = cornerDirection(planes, 0, type.corner);
+  const delta = sub3(corners[0], [cm[0], cm[1], 0]);
+  const a = 2 * dot3(delta, w) - 2 * rm * Math.cos(Math.PI / type.sphereSphere);
+  const rc = Math.abs(a) < 1e-12 ? Number.NaN : (rm * rm - dot3(delta, delta) - zb * zb) / a;
+  if (!(rc > 1e-6))
+    return fail('the corner sphere would need a radius ≤ 0: zb is outside this type’s parameter space');
+  const corner: Sphere = { center: add3(corners[0], scale3(w, rc)), radius: rc };
+  if (planeSignedDistance(planes[0], corner.center) <= rc)
+    return fail('the corner sphere reaches across the opposite side F1 of the prism');
+  const spheres = [corner, { center: cm, radius: rm }];
+  const floor = floorTop(corners, spheres);
+  if (!floor.ok) return floor;
+  return ok({ type, corners, planes, spheres, floorTop: floor.value });
+}
+
 /** Relative margin that keeps the inversion centre visibly away from the faces. */
 const CENTRE_MARGIN = 1e-6;
 
@@ -202,10 +248,10 @@ export function inversionCentreProblem(inf: InfiniteSphairahedron, o: Vec3): str
   for (let k = 0; k < 3; k++)
     if (planeSignedDistance(inf.planes[k], o) <= CENTRE_MARGIN)
       return `the inversion centre is outside the prism (beyond plane F${k + 1}): that face would turn inside out`;
-  for (let k = 0; k < 3; k++)
+  for (let k = 0; k < inf.spheres.length; k++)
     if (dist3(o, inf.spheres[k].center) - inf.spheres[k].radius <= CENTRE_MARGIN)
       return `the inversion centre is inside sphere S${k + 1}: that face would turn inside out`;
-  for (let k = 0; k < 3; k++)
+  for (let k = 0; k < inf.spheres.length; k++)
     if (ballTop(inf.spheres[k], o[0], o[1]) > o[2])
       return `the inversion centre is under sphere S${k + 1}: it must be above the spheres, inside the infinite sphairahedron`;
   return null;
@@ -260,4 +306,4 @@ export function defaultInversionSphere(inf: InfiniteSphairahedron): Sphere {
   return { center: [(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, top + 1], radius: 1.5 };
 }
 
-export { CUBE_TYPES };
+export { CUBE_TYPES, SPHAIRAHEDRON_TYPES };

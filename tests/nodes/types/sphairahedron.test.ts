@@ -36,6 +36,17 @@ describe('sphairahedron node', () => {
     expect(s.handles.filter((h) => h.nodeId === 's')).toEqual([]);
   });
 
+  it('pentahedral prism: five faces (three planes, two spheres), finite and infinite', () => {
+    const finite = evaluateGraph(graph({ shape: 'prism-333-a', zb: -0.8, center: [0, 0, 2.5] }), registry);
+    expect(finite.diagnostics.filter((d) => d.severity === 'error')).toEqual([]);
+    expect(finite.scene3d!.elements.map((e) => e.kind)).toEqual(Array(5).fill('sphere-inversion'));
+    const infinite = evaluateGraph(graph({ shape: 'prism-244-a', form: 'infinite', zb: 0.8 }), registry);
+    expect(infinite.scene3d!.elements.map((e) => e.kind)).toEqual([
+      ...Array(3).fill('plane-reflection'),
+      ...Array(2).fill('sphere-inversion'),
+    ]);
+  });
+
   it('an inversion centre inside a sphere face is an error on the node, naming the face', () => {
     const ev = evaluateGraph(graph({ center: [0.5, 0, 0] }), registry);
     const errors = ev.diagnostics.filter((d) => d.severity === 'error' && d.nodeId === 's');

@@ -9,7 +9,6 @@ import { describe, expect, it } from 'vitest';
 import { iis3d } from '../../../../nodes/geometry/space/iis-3d.ts';
 import {
   CUBE_TYPES,
-  type CubeTypeAngles,
   defaultInversionSphere,
   finiteElements,
   finiteSphairahedron,
@@ -18,6 +17,8 @@ import {
   infiniteSeedBox,
   infiniteSphairahedron,
   inversionCentreProblem,
+  SPHAIRAHEDRON_TYPES,
+  type SphairahedronType,
 } from '../../../../nodes/geometry/space/sphairahedron.ts';
 import {
   invertInSphere,
@@ -71,8 +72,17 @@ function sphereSphereAngle(s1: Sphere, s2: Sphere): number {
 }
 
 /** The 12 edges of the cube type with their claimed angle (face indices: F1..F3 = 0..2, S1..S3 = 3..5). */
-function claimedEdges(t: CubeTypeAngles): [number, number, number][] {
+function claimedEdges(t: SphairahedronType): [number, number, number][] {
   const out: [number, number, number][] = [];
+  if (t.kind === 'pentahedral-prism') {
+    // S_c = 3 (corner V1), S_m = 4 (central): the prism's 9 edges.
+    for (let k = 0; k < 3; k++) {
+      out.push([idx(k + 1), idx(k + 2), angle(t.prism[k])]);
+      out.push([4, k, angle(t.central[k])]);
+    }
+    out.push([3, 1, angle(t.corner[0])], [3, 2, angle(t.corner[1])], [3, 4, angle(t.sphereSphere)]);
+    return out;
+  }
   for (let k = 0; k < 3; k++) {
     out.push([idx(k + 1), idx(k + 2), angle(t.prism[k])]);
     out.push([3 + k, idx(k + 1), angle(t.spherePlane[k][0])]);
@@ -83,7 +93,7 @@ function claimedEdges(t: CubeTypeAngles): [number, number, number][] {
 }
 
 const shapeParams = fc.record({
-  type: fc.constantFrom(...CUBE_TYPES),
+  type: fc.constantFrom(...SPHAIRAHEDRON_TYPES),
   zb: real(-0.8, 0.8),
   zc: real(-0.8, 0.8),
 });
@@ -114,6 +124,33 @@ describe('the cube-type angle table', () => {
       expect(infiniteSphairahedron(t, 0, 0).ok).toBe(true);
     },
   );
+});
+
+describe('the pentahedral prism angle table', () => {
+  const prisms = SPHAIRAHEDRON_TYPES.filter((t) => t.kind === 'pentahedral-prism');
+  it.each(prisms.map((t) => [t.id, t] as const))('%s: every vertex is ideal', (_, t) => {
+    const sum = (...ns: number[]) => ns.reduce((s, n) => s + 1 / n, 0);
+    expect(sum(...t.prism)).toBeCloseTo(1, 12); // the vertex at infinity
+    expect(sum(t.prism[0], ...t.corner)).toBeCloseTo(1, 12); // F2, F3, S_c on the edge at V1
+    expect(sum(t.prism[1], t.central[0], t.central[2])).toBeCloseTo(1, 12); // F1, F3, S_m at V2
+    expect(sum(t.prism[2], t.central[0], t.central[1])).toBeCloseTo(1, 12); // F1, F2, S_m at V3
+    expect(sum(t.corner[0], t.central[1], t.sphereSphere)).toBeCloseTo(1, 12); // F2, S_c, S_m
+    expect(sum(t.corner[1], t.central[2], t.sphereSphere)).toBeCloseTo(1, 12); // F3, S_c, S_m
+    expect(infiniteSphairahedron(t, 0.6, 0).ok).toBe(true);
+  });
+
+  it('prism 333, all π/3: the corner sphere has radius zb²/3 and the central one radius 1', () => {
+    const t = SPHAIRAHEDRON_TYPES.find((x) => x.id === 'prism-333-a')!;
+    fc.assert(
+      fc.property(real(0.3, 1.4), (zb) => {
+        const r = infiniteSphairahedron(t, zb, 0);
+        if (!r.ok) throw new Error(r.error);
+        expect(r.value.spheres[0].radius).toBeCloseTo((zb * zb) / 3, 10);
+        expect(r.value.spheres[1].radius).toBeCloseTo(1, 10);
+      }),
+      SEED,
+    );
+  });
 });
 
 describe('infiniteSphairahedron', () => {
@@ -152,13 +189,20 @@ describe('infiniteSphairahedron', () => {
     );
   });
 
-  it('each sphere touches the prism edge through its corner (the ideal vertex there)', () => {
+  it('each sphere touches the prism edges of its ideal vertices there', () => {
     fc.assert(
       fc.property(built, (inf) => {
-        inf.spheres.forEach((s, k) => {
-          const h = Math.hypot(s.center[0] - inf.corners[k][0], s.center[1] - inf.corners[k][1]);
-          expect(h).toBeCloseTo(s.radius, 10);
-        });
+        const touches = (s: Sphere, k: number) =>
+          expect(Math.hypot(s.center[0] - inf.corners[k][0], s.center[1] - inf.corners[k][1])).toBeCloseTo(
+            s.radius,
+            10,
+          );
+        if (inf.type.kind === 'cube') inf.spheres.forEach(touches);
+        else {
+          touches(inf.spheres[0], 0);
+          touches(inf.spheres[1], 1);
+          touches(inf.spheres[1], 2);
+        }
       }),
       SEED,
     );
@@ -197,13 +241,15 @@ describe('the inversion centre check', () => {
   it('refuses a centre inside a ball, outside the prism, or under the spheres', () => {
     fc.assert(
       fc.property(built, fc.integer({ min: 0, max: 2 }), unit3, real(0, 0.95), (inf, k, dir, f) => {
-        const s = inf.spheres[k];
+        const s = inf.spheres[k % inf.spheres.length];
         const inBall = add3(s.center, scale3(dir, f * s.radius));
         expect(inversionCentreProblem(inf, inBall)).toMatch(/inside sphere S|outside the prism/);
         const c = centroid(inf);
         const outside = add3(c, scale3(inf.planes[k].normal, -3));
         expect(inversionCentreProblem(inf, [outside[0], outside[1], 5])).toMatch(/outside the prism/);
-        const below: Vec3 = [c[0], c[1], inf.floorTop - 1 - f];
+        // Below every ball, under the centroid (which the balls cover).
+        const bottom = Math.min(...inf.spheres.map((sp) => sp.center[2] - sp.radius));
+        const below: Vec3 = [c[0], c[1], bottom - 0.5 - f];
         expect(inversionCentreProblem(inf, below)).toMatch(/under sphere S/);
       }),
       SEED,
@@ -279,8 +325,8 @@ describe('the seeds lie on the far side of the limit set', () => {
   });
 
   it('the default inversion sphere is valid for every type', () => {
-    for (const t of CUBE_TYPES) {
-      const inf = infiniteSphairahedron(t, 0, 0);
+    for (const t of SPHAIRAHEDRON_TYPES) {
+      const inf = infiniteSphairahedron(t, t.kind === 'cube' ? 0 : 0.6, 0);
       if (!inf.ok) throw new Error(inf.error);
       expect(finiteSphairahedron(inf.value, defaultInversionSphere(inf.value)).ok).toBe(true);
     }

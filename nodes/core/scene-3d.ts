@@ -26,7 +26,7 @@ export type NodeElement3d = Element3d & { readonly nodeId: string };
  * An orbit seed in space (paper Figs. 11–12, 24): its images under the group are the surfaces the
  * tracer draws. `nodeId` names the node that made it (messages, handles).
  */
-export type Seed3d =
+export type Seed3d = (
   | { readonly kind: 'sphere'; readonly nodeId: string; readonly sphere: Sphere; readonly color: Color }
   /** An axis-aligned box: centre and half-extents along x, y, z (Fig. 24, "orbit of a cube"). */
   | {
@@ -35,7 +35,15 @@ export type Seed3d =
       readonly center: Vec3;
       readonly halfSize: Vec3;
       readonly color: Color;
-    };
+    }
+) & {
+  /**
+   * Set when only the seed's part in the fundamental domain is meant and it reaches into mirror
+   * regions by design (the sphairahedron's half-space below its floor, docs/math-3d.md
+   * "Sphairahedra (paper §5.3)"): the render does not warn that it is outside the domain.
+   */
+  readonly clipped?: true;
+};
 export type Seed3dKind = Seed3d['kind'];
 
 /** A pinhole camera looking from `position` at `target`; z is up; `fovDeg` is the vertical field of view. */

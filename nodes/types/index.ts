@@ -37,6 +37,7 @@ import { rotationNode } from './rotation.ts';
 import { seedBoxNode } from './seed-box.ts';
 import { seedSphereNode } from './seed-sphere.ts';
 import { seedDiskNode, seedImageNode } from './seeds.ts';
+import { sphairahedronNode } from './sphairahedron.ts';
 import { sphereNode } from './sphere.ts';
 import { sphere4ptNode } from './sphere-4pt.ts';
 import { sphereInversionNode } from './sphere-inversion.ts';
@@ -100,6 +101,7 @@ export const NODE_TYPES = [
   compoundParabolic3dNode,
   seedSphereNode,
   seedBoxNode,
+  sphairahedronNode,
   render3dNode,
 ] as const;
 

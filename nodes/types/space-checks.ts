@@ -64,6 +64,7 @@ function holderOf(seed: Seed3d, elements: readonly NodeElement3d[]): NodeElement
 export function seedDiagnostics(seeds: readonly Seed3d[], elements: readonly NodeElement3d[]): Diagnostic[] {
   const out: Diagnostic[] = [];
   for (const seed of seeds) {
+    if (seed.clipped) continue;
     const holder = holderOf(seed, elements);
     if (holder) out.push(diag('seedOutsideDomain', { port: 'seeds' }, seed.nodeId, holder.nodeId));
   }

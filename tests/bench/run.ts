@@ -16,6 +16,8 @@ const BENCHES = [
   './source.ts',
   './editor.ts',
   './animation.ts',
+  './trace3d.ts',
+  './mesh.ts',
 ] as const;
 
 async function main(): Promise<void> {

@@ -68,6 +68,8 @@ export const GALLERY_SECTIONS: readonly GallerySection[] = [
       'fig18-compound-parabolic',
       'fig19-two-sphere-generator',
       'fig20-compound-loxodromic',
+      'fig26-quasi-sphere',
+      'fig28-fractal-terrain',
     ],
   },
 ];

@@ -25,6 +25,7 @@ import { openPastedText } from './pasted-document.ts';
 import { clearFragment, readStartupLink, shareLinkFor } from './share-link.ts';
 import { Toast, type ToastMessage } from './Toast.tsx';
 import { useAnimationExport } from './use-animation-export.tsx';
+import { useStlExport } from './use-stl-export.tsx';
 
 interface Options {
   readonly store: EditorStore;
@@ -199,6 +200,7 @@ export function useDocumentIo({ store, scene, load, viewport, locked = false }: 
     viewSize: renderSize,
     say,
   });
+  const stl = useStlExport({ store, say });
   const svg = () => {
     const { doc } = store.getState();
     const r = exportSvgFile(doc, currentScene.current, doc.view, renderSize());
@@ -208,6 +210,7 @@ export function useDocumentIo({ store, scene, load, viewport, locked = false }: 
     { label: 'PNG image…', hint: 'any size, graph inside', onSelect: () => setExporting(true) },
     animation.item,
     { label: 'SVG (circles and lines)', hint: 'vector, mirrors only', onSelect: () => svg() },
+    stl.item,
     { label: 'Copy share link', hint: 'graph in the URL', onSelect: () => void copyLink() },
     { label: 'GLSL shader (.frag)', hint: 'WebGL2, values baked', onSelect: () => glsl('webgl2') },
     { label: 'Shadertoy (.shadertoy.glsl)', hint: 'paste into Shadertoy', onSelect: () => glsl('shadertoy') },
@@ -237,6 +240,7 @@ export function useDocumentIo({ store, scene, load, viewport, locked = false }: 
         />
       )}
       {animation.ui}
+      {stl.ui}
     </>
   );
   const notify = useCallback((text: string) => say('ok', text), [say]);

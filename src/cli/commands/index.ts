@@ -6,6 +6,7 @@ import type { CliCommand } from '../command.ts';
 import { checkCommand } from './check.ts';
 import { convertCommand } from './convert.ts';
 import { glslCommand } from './glsl.ts';
+import { meshCommand } from './mesh.ts';
 import { renderCommand } from './render.ts';
 import { sampleCommand } from './sample.ts';
 import { svgCommand } from './svg.ts';
@@ -17,4 +18,5 @@ export const COMMANDS: readonly CliCommand[] = [
   checkCommand,
   convertCommand,
   svgCommand,
+  meshCommand,
 ];

@@ -1,0 +1,133 @@
+/**
+ * The STL export dialog (3D printing, paper §5.3.2): voxel resolution and an optional box; a
+ * progress bar with Cancel while the solid is sampled and meshed on the CPU. The mesh is closed
+ * and consistently oriented (docs/math-3d.md "Voxel mesh (paper §5.3.2)").
+ */
+import { useState } from 'react';
+import {
+  type Bounds3,
+  MAX_MESH_RESOLUTION,
+  MIN_MESH_RESOLUTION,
+  parseBounds,
+} from '../../../nodes/geometry/space/voxel-mesh.ts';
+import { useModalDialog } from '../use-modal-dialog.ts';
+import { useExportRun } from './use-export-run.ts';
+
+export interface StlExportOptions {
+  readonly resolution: number;
+  readonly bounds?: Bounds3;
+}
+
+interface Props {
+  /** Meshes and downloads; resolves false when cancelled. `onProgress` returning false cancels. */
+  run(o: StlExportOptions, onProgress: (f: number) => boolean): Promise<boolean>;
+  onClose(): void;
+}
+
+export const DEFAULT_STL_RESOLUTION = 64;
+
+export function StlExportDialog({ run, onClose }: Props) {
+  const dialog = useModalDialog(onClose);
+  const [resolution, setResolution] = useState(DEFAULT_STL_RESOLUTION);
+  const [boundsText, setBoundsText] = useState('');
+  const { progress, error, ...exportRun } = useExportRun(onClose);
+  const busy = progress !== null;
+  const bounds = boundsText.trim() === '' ? null : parseBounds(boundsText);
+  const boundsError = bounds && !bounds.ok ? `Bounds: ${bounds.error}` : null;
+
+  const start = async () => {
+    if (bounds && !bounds.ok) return;
+    await exportRun.start((onProgress) =>
+      run({ resolution, ...(bounds?.ok ? { bounds: bounds.value } : {}) }, onProgress),
+    );
+  };
+  const close = exportRun.close;
+
+  return (
+    <dialog
+      ref={dialog.ref}
+      className="kf-dialog kf-export"
+      aria-label="Export STL"
+      onCancel={(e) => {
+        e.preventDefault();
+        close();
+      }}
+    >
+      <header className="kf-dialog__header">
+        <h2>Export STL</h2>
+        <button type="button" className="kf-icon-button" aria-label="Close export" onClick={close}>
+          ×
+        </button>
+      </header>
+      <p className="kf-dialog__lead">
+        A closed mesh of the solid (the seeds’ orbit) for 3D printing, sampled on a voxel grid on the CPU.
+      </p>
+      <div className="kf-export__grid">
+        <label htmlFor="kf-stl-resolution">Resolution</label>
+        <span>
+          <input
+            id="kf-stl-resolution"
+            type="number"
+            min={MIN_MESH_RESOLUTION}
+            max={MAX_MESH_RESOLUTION}
+            value={resolution}
+            disabled={busy}
+            onChange={(e) =>
+              setResolution(
+                Math.min(
+                  MAX_MESH_RESOLUTION,
+                  Math.max(MIN_MESH_RESOLUTION, Math.round(Number(e.target.value)) || 0),
+                ),
+              )
+            }
+          />
+          <span className="kf-export__note"> voxels along the longest side (time grows with its cube)</span>
+        </span>
+        <label htmlFor="kf-stl-bounds">Box</label>
+        <span>
+          <input
+            id="kf-stl-bounds"
+            type="text"
+            placeholder="auto — or x0, y0, z0, x1, y1, z1"
+            value={boundsText}
+            disabled={busy}
+            onChange={(e) => setBoundsText(e.target.value)}
+          />
+          <span className="kf-export__note"> needed when plane mirrors repeat the solid without end</span>
+        </span>
+      </div>
+      {busy && (
+        <div className="kf-export__progress">
+          <progress max={1} value={progress} aria-label="Export progress" />
+          <span>{progress < 1 ? `Meshing… ${Math.round(progress * 100)}%` : 'Writing the STL…'}</span>
+        </div>
+      )}
+      {(boundsError ?? error) && (
+        <p className="kf-export__error" role="alert">
+          {boundsError ?? error}
+        </p>
+      )}
+      <footer className="kf-export__actions">
+        {busy ? (
+          <button type="button" className="kf-button" onClick={exportRun.cancel}>
+            Cancel
+          </button>
+        ) : (
+          <>
+            <button type="button" className="kf-button" onClick={close}>
+              Close
+            </button>
+            <button
+              type="button"
+              className="kf-button kf-button--primary"
+              disabled={boundsError !== null}
+              onClick={() => void start()}
+            >
+              Export {resolution}³
+            </button>
+          </>
+        )}
+      </footer>
+    </dialog>
+  );
+}

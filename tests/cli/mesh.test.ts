@@ -1,0 +1,109 @@
+/**
+ * `kleinflow mesh` through the real binary: the Fig. 26 quasi-sphere as binary STL that parses
+ * back into a closed, consistently oriented mesh, progress on stderr; an unbounded graph without
+ * --bounds, a 2D graph and bad options are refused in one line.
+ */
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { readStl } from '../../src/io/stl.ts';
+import { ROOT, runCli } from './run-cli.ts';
+
+const example3d = (name: string) => join(ROOT, `examples/3d/${name}.kleinflow.json`);
+let dir = '';
+
+beforeAll(() => {
+  dir = mkdtempSync(join(tmpdir(), 'kleinflow-mesh-'));
+});
+afterAll(() => {
+  rmSync(dir, { recursive: true, force: true });
+});
+
+/** Vertices are float32 in the file: edges are matched by their coordinates. */
+function edgeCounts(triangles: ReturnType<typeof readStl>['triangles']) {
+  const key = (v: readonly number[]) => v.join(',');
+  const directed = new Map<string, number>();
+  for (const t of triangles)
+    for (let e = 0; e < 3; e++) {
+      const k = `${key(t.vertices[e])}>${key(t.vertices[(e + 1) % 3])}`;
+      directed.set(k, (directed.get(k) ?? 0) + 1);
+    }
+  let bad = 0;
+  for (const [k, n] of directed) {
+    const [a, b] = k.split('>');
+    if (n !== 1 || directed.get(`${b}>${a}`) !== 1) bad++;
+  }
+  return { edges: directed.size, bad };
+}
+
+describe('kleinflow mesh', () => {
+  it('writes the quasi-sphere as a closed, oriented binary STL, with progress on stderr', () => {
+    const out = join(dir, 'quasi.stl');
+    const r = runCli(['mesh', example3d('fig26-quasi-sphere'), '--out', out, '--resolution', '20']);
+    expect(r.status).toBe(0);
+    expect(r.stderr).toMatch(/meshing 25%/);
+    const said = /wrote .* \((\d+) triangles, (\d+) vertices/.exec(r.stdout);
+    expect(said).not.toBeNull();
+    const { header, triangles } = readStl(new Uint8Array(readFileSync(out)));
+    expect(header).toMatch(/^Kleinflow mesh/);
+    expect(triangles.length).toBe(Number(said?.[1]));
+    expect(triangles.length).toBeGreaterThan(500);
+    const { edges, bad } = edgeCounts(triangles);
+    expect(bad).toBe(0);
+    expect(edges).toBe(3 * triangles.length);
+  });
+
+  it('asks for --bounds on the infinite sphairahedron, and meshes a slab of it when given', () => {
+    const out = join(dir, 'terrain.stl');
+    const refused = runCli(['mesh', example3d('fig28-fractal-terrain'), '--out', out, '--resolution', '16']);
+    expect(refused.status).toBe(1);
+    expect(refused.stderr).toMatch(/unbounded.*--bounds|give bounds/);
+    const r = runCli([
+      'mesh',
+      example3d('fig28-fractal-terrain'),
+      '--out',
+      out,
+      '--resolution',
+      '16',
+      '--bounds',
+      '-1,-1,-0.6,1,1,0.6',
+    ]);
+    expect(r.status).toBe(0);
+    const { triangles } = readStl(new Uint8Array(readFileSync(out)));
+    expect(edgeCounts(triangles).bad).toBe(0);
+  });
+
+  it('refuses a 2D graph, a bad resolution, bad bounds and a missing --out in one line each', () => {
+    const flat = runCli([
+      'mesh',
+      join(ROOT, 'examples/apollonian-gasket.kleinflow.json'),
+      '-o',
+      join(dir, 'x.stl'),
+    ]);
+    expect(flat.status).toBe(1);
+    expect(flat.stderr).toMatch(/not a 3D graph/);
+    const res = runCli([
+      'mesh',
+      example3d('fig26-quasi-sphere'),
+      '-o',
+      join(dir, 'x.stl'),
+      '--resolution',
+      '2',
+    ]);
+    expect(res.status).not.toBe(0);
+    expect(res.stderr).toMatch(/--resolution must be between/);
+    const bounds = runCli([
+      'mesh',
+      example3d('fig26-quasi-sphere'),
+      '-o',
+      join(dir, 'x.stl'),
+      '--bounds',
+      '1,2,3',
+    ]);
+    expect(bounds.stderr).toMatch(/--bounds expects six numbers/);
+    const noOut = runCli(['mesh', example3d('fig26-quasi-sphere')]);
+    expect(noOut.stderr).toMatch(/missing --out/);
+    for (const run of [flat, res, bounds, noOut]) expect(run.stderr).not.toMatch(/\n\s+at /);
+  });
+});

@@ -157,8 +157,3 @@ export function pan(camera: Camera3d, pane: PaneSize, dx: number, dy: number): C
   const move = scale3(sub3(scale3(up, dy), scale3(right, dx)), perPixel);
   return { ...camera, position: add3(camera.position, move), target: add3(camera.target, move) };
 }
-
-export const sameCamera = (a: Camera3d, b: Camera3d): boolean =>
-  a.fovDeg === b.fovDeg &&
-  a.position.every((v, i) => v === b.position[i]) &&
-  a.target.every((v, i) => v === b.target[i]);

@@ -7,6 +7,7 @@ import type { HandleItem, OverlayShape } from './overlay.ts';
 import type { PortInputMap, PortValueMap } from './port-values.ts';
 import type { ManyPortType, PortType } from './ports.ts';
 import type { Scene } from './scene.ts';
+import type { Handle3dItem, Overlay3dShape, Scene3d, Vec3 } from './scene-3d.ts';
 import type { Color, Vec2 } from './values.ts';
 
 export interface InputSpec {
@@ -135,6 +136,9 @@ export interface EvalContext<In = InputValues, Pa = ParamValues> {
 /** What the render node adds to the Scene (the single output of the graph). */
 export type RenderSettings = Pick<Scene, 'elements' | 'tile' | 'maxIterations' | 'samples' | 'clip'>;
 
+/** What the 3D render node adds to the Scene3d (the evaluator adds overlays, handles and its id). */
+export type Render3dSettings = Omit<Scene3d, 'kind' | 'renderNodeId' | 'overlays' | 'handles'>;
+
 export interface EvalOutcome<Out = OutputValues> {
   /** Output values by port name; a missing output has no value (dependants report why). */
   readonly outputs?: Out;
@@ -143,6 +147,8 @@ export interface EvalOutcome<Out = OutputValues> {
   readonly readout?: string;
   /** Only the render node sets this. */
   readonly render?: RenderSettings;
+  /** Only the render-3d node sets this. */
+  readonly render3d?: Render3dSettings;
 }
 
 /** A drag's result: new document-form values of some of the node's inputs and params. */
@@ -162,7 +168,9 @@ interface NodeMeta {
     | 'Kaleidoscopes'
     | 'Colour'
     | 'Animation'
-    | 'Output';
+    | 'Output'
+    /** Nodes of space: points, spheres, planes, 3D generators and seeds, the 3D render. */
+    | '3D';
   readonly color: string;
   /** One line shown in the palette, inspector and README. */
   readonly doc: string;
@@ -211,6 +219,25 @@ export interface NodeDefinition<I extends InputSpecs, O extends OutputSpecs, P e
     to: Vec2,
     ctx: EvalContext<InputValuesOf<I>, ParamValuesOf<P>>,
   ) => DragPatch<keyof I | keyof P>;
+  /** The 3D view's wireframe of the node (after success), like `overlay` for the plane. */
+  readonly overlay3d?: (
+    ctx: EvalContext<InputValuesOf<I>, ParamValuesOf<P>>,
+    outputs: OutputValuesOf<NoInfer<O>>,
+  ) => readonly Overlay3dShape[];
+  /** Draggable points in space; like `handles`, also asked of a node that failed. */
+  readonly handles3d?: (
+    ctx: EvalContext<InputValuesOf<I>, ParamValuesOf<P>>,
+    outputs: Partial<OutputValuesOf<NoInfer<O>>>,
+  ) => readonly Omit<Handle3dItem, 'nodeId'>[];
+  /**
+   * A drag of a 3D handle to `to` → new document-form values of this node's inputs / params; a key
+   * naming a wired point3 input moves the upstream node instead (nodes/graph/drag-patches-3d.ts).
+   */
+  readonly drag3d?: (
+    handle: string,
+    to: Vec3,
+    ctx: EvalContext<InputValuesOf<I>, ParamValuesOf<P>>,
+  ) => DragPatch<keyof I | keyof P>;
 }
 
 /**
@@ -227,6 +254,9 @@ export interface NodeDef extends NodeMeta {
   overlay?(ctx: EvalContext, outputs: OutputValues): readonly OverlayShape[];
   handles?(ctx: EvalContext, outputs: OutputValues): readonly Omit<HandleItem, 'nodeId'>[];
   drag?(handle: string, to: Vec2, ctx: EvalContext): DragPatch;
+  overlay3d?(ctx: EvalContext, outputs: OutputValues): readonly Overlay3dShape[];
+  handles3d?(ctx: EvalContext, outputs: OutputValues): readonly Omit<Handle3dItem, 'nodeId'>[];
+  drag3d?(handle: string, to: Vec3, ctx: EvalContext): DragPatch;
 }
 
 /**

@@ -147,6 +147,17 @@ export const DIAGNOSTICS = table({
     severity: 'warning',
     text: (n: number, max: number) => `${n} seeds are wired; only the first ${max} are drawn`,
   },
+  cameraInside: {
+    code: 'KF313',
+    severity: 'warning',
+    text: (what: string, why: string) => `the camera is inside ${what}: ${why}`,
+  },
+  seedOutsideDomain: {
+    code: 'KF314',
+    severity: 'warning',
+    text: (seed: string, element: string) =>
+      `seed "${seed}" is not in the fundamental domain: the region of element "${element}" holds part of it, so its images overlap (move the seed out of that region)`,
+  },
   tooManyElements: {
     code: 'KF401',
     severity: 'error',

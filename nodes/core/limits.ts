@@ -32,4 +32,9 @@ export const LIMITS = {
   maxPictureSide: 4096,
   /** Orbit seeds a tile may have (each one is tested at every step of every sample). */
   maxSeeds: 16,
+  /** 3D render: sphere-tracing steps per ray (each runs the whole IIS), and the default. */
+  maxMarchSteps: 2_000,
+  defaultMarchSteps: 200,
+  /** 3D render: the default IIS budget per distance estimate (each march step runs it). */
+  defaultMaxIterations3d: 30,
 } as const;

@@ -3,7 +3,9 @@
  * it becomes the runtime value (PortValueMap). Colours are "#rrggbb" on disk, [r, g, b] at run time.
  */
 import { z } from 'zod';
+import { normalize3 } from '../geometry/space/vec3.ts';
 import type { ManyPortType, PortType } from './ports.ts';
+import type { NodeElement3d, Plane, Seed3d, Sphere, Vec3 } from './scene-3d.ts';
 import type { SceneElement } from './scene-elements.ts';
 import type { SeedSpec, TileSpec } from './tile-spec.ts';
 import type { Circle, Color, ImageRef, Line, Vec2 } from './values.ts';
@@ -19,6 +21,12 @@ export interface PortValueMap {
   color: Color;
   image: ImageRef;
   seed: SeedSpec;
+  point3: Vec3;
+  sphere: Sphere;
+  /** Its normal is a unit vector (the inline schema and the plane node normalise it). */
+  plane: Plane;
+  element3: readonly NodeElement3d[];
+  seed3: Seed3d;
 }
 
 /** One value of a many-type's list (an element output already carries a list). */
@@ -31,6 +39,12 @@ export type PortInputMap = {
 
 const finite = z.number().finite();
 const vec2 = z.tuple([finite, finite]);
+const vec3 = z.tuple([finite, finite, finite]);
+/** A plane as written: any non-zero normal, normalised on reading (the runtime Plane's is unit). */
+const plane = z
+  .object({ point: vec3, normal: vec3 })
+  .refine((p) => Math.hypot(...p.normal) > 0, 'the plane normal must not be zero')
+  .transform((p): Plane => ({ point: p.point, normal: normalize3(p.normal) }));
 
 export const hexColor = z
   .string()
@@ -62,6 +76,11 @@ export const PORT_VALUE_SCHEMA: Readonly<Record<PortType, z.ZodType | null>> = {
   color: hexColor,
   image: z.object({ src: z.string(), width: finite, height: finite }),
   seed: null,
+  point3: vec3,
+  sphere: z.object({ center: vec3, radius: finite }),
+  plane,
+  element3: null,
+  seed3: null,
 };
 
 /** Runtime value → the JSON that PORT_VALUE_SCHEMA reads back (the inverse of parsing). */

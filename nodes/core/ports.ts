@@ -12,6 +12,13 @@ export const PORT_TYPES = [
   'color',
   'image',
   'seed',
+  // Space (docs/math-3d.md): distinct from the plane's types, so a 3D element never wires into the
+  // 2D render (or the reverse): the connection is refused as a type mismatch.
+  'point3',
+  'sphere',
+  'plane',
+  'element3',
+  'seed3',
 ] as const;
 export type PortType = (typeof PORT_TYPES)[number];
 
@@ -53,6 +60,31 @@ export const PORT_TYPE_INFO = {
     many: true,
     accepts: ONLY_ITSELF,
     doc: 'one or more orbit seeds (disks or picture rectangles) whose images the tile paints',
+  },
+  point3: { color: '#f7dc6f', many: false, accepts: ONLY_ITSELF, doc: 'a point of space (x, y, z)' },
+  sphere: {
+    color: '#3fa7d6',
+    many: false,
+    accepts: ONLY_ITSELF,
+    doc: 'a sphere in space (centre and radius)',
+  },
+  plane: {
+    color: '#2bb3a3',
+    many: false,
+    accepts: ONLY_ITSELF,
+    doc: 'a plane in space (a point and a normal; a mirror keeps the side the normal points to)',
+  },
+  element3: {
+    color: '#c2185b',
+    many: true,
+    accepts: ONLY_ITSELF,
+    doc: 'one or more 3D IIS elements (sphere inversions, plane reflections, 3D generators)',
+  },
+  seed3: {
+    color: '#ba68c8',
+    many: true,
+    accepts: ONLY_ITSELF,
+    doc: 'one or more 3D orbit seeds (spheres, boxes) whose images the 3D render draws',
   },
 } satisfies Readonly<Record<PortType, PortTypeInfo>>;
 

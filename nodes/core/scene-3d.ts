@@ -17,6 +17,12 @@ export type { Plane, Sphere } from '../geometry/space/sphere.ts';
 export type { Vec3 } from '../geometry/space/vec3.ts';
 
 /**
+ * An element as a node outputs it: the id of the node that made it travels with it (messages name
+ * that node, e.g. the element whose region holds a seed). A Scene3d's elements are these.
+ */
+export type NodeElement3d = Element3d & { readonly nodeId: string };
+
+/**
  * An orbit seed in space (paper Figs. 11–12, 24): its images under the group are the surfaces the
  * tracer draws. `nodeId` names the node that made it (messages, handles).
  */

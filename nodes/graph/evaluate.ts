@@ -2,13 +2,14 @@
  * Evaluation: a document → per-node results and the Scene. Nodes run in deterministic topological
  * order; a failing node has no outputs and its dependants say why, the rest go on.
  */
-import type { EvalContext, NodeDef, RenderSettings } from '../core/define-node.ts';
+import type { EvalContext, NodeDef, Render3dSettings, RenderSettings } from '../core/define-node.ts';
 import { type Diagnostic, diag, hasErrors } from '../core/diagnostics.ts';
 import type { HandleItem, OverlayItem } from '../core/overlay.ts';
 import { ownEntry, setOwn } from '../core/port-lookup.ts';
 import { PORT_TYPE_INFO } from '../core/ports.ts';
 import type { NodeRegistry } from '../core/registry.ts';
 import { EMPTY_SCENE_DEFAULTS, type Scene } from '../core/scene.ts';
+import type { Handle3dItem, Overlay3dItem, Scene3d } from '../core/scene-3d.ts';
 import { DEFAULT_TILE } from '../core/tile-spec.ts';
 import { type Analysis, analyzeGraph } from './analyze.ts';
 import type { GraphDoc } from './document.ts';
@@ -24,8 +25,24 @@ export interface NodeEvaluation {
   readonly ctx?: EvalContext;
 }
 
+/** Node types that draw the picture; a graph should have one (the first by id is drawn). */
+export const RENDER_NODE_TYPES: ReadonlySet<string> = new Set(['render', 'render-3d']);
+
+type ChosenRender =
+  | { readonly id: string; readonly settings: RenderSettings; readonly settings3d?: undefined }
+  | { readonly id: string; readonly settings?: undefined; readonly settings3d: Render3dSettings };
+
+/** The 3D wireframe and handles, gathered like the 2D overlay. */
+interface Collected3d {
+  readonly overlays: Overlay3dItem[];
+  readonly handles: Handle3dItem[];
+}
+
 export interface Evaluation {
+  /** The plane's picture; empty (no elements, no render node) when the render node is render-3d. */
   readonly scene: Scene;
+  /** The 3D picture when the chosen render node is render-3d, else null (2D documents: always). */
+  readonly scene3d: Scene3d | null;
   readonly nodes: ReadonlyMap<string, NodeEvaluation>;
   /** Every diagnostic: document structure first, then per node in evaluation order. */
   readonly diagnostics: readonly Diagnostic[];
@@ -62,7 +79,8 @@ export function evaluateGraph(
   const results = new Map<string, NodeEvaluation>();
   const overlays: OverlayItem[] = [];
   const handles: HandleItem[] = [];
-  const renders: { id: string; settings: RenderSettings }[] = [];
+  const renders: ChosenRender[] = [];
+  const space: Collected3d = { overlays: [], handles: [] };
   const time = options.time ?? 0;
 
   for (const id of analysis.order) {
@@ -83,8 +101,10 @@ export function evaluateGraph(
     results.set(id, result);
     if (!result.ctx) continue;
     if (result.render) renders.push({ id, settings: result.render });
+    else if (result.render3d) renders.push({ id, settings3d: result.render3d });
     if (result.ctx.params.visible === false) continue;
     collectOverlay(def, id, node.label, result.ctx, result.outputs, overlays, handles);
+    collectOverlay3d(def, id, node.label, result.ctx, result.outputs, space);
   }
   for (const id of analysis.blocked) results.set(id, { diagnostics: [] });
 
@@ -92,7 +112,7 @@ export function evaluateGraph(
   for (const id of analysis.order) diagnostics.push(...results.get(id)!.diagnostics);
 
   renders.sort((a, b) => (a.id < b.id ? -1 : a.id > b.id ? 1 : 0));
-  const renderNodes = [...analysis.nodes.values()].filter((n) => n.node.type === 'render');
+  const renderNodes = [...analysis.nodes.values()].filter((n) => RENDER_NODE_TYPES.has(n.node.type));
   // A whole-document problem: its path is the document itself (every diagnostic says where).
   if (renderNodes.length === 0 && doc.nodes.length > 0)
     diagnostics.push(diag('noRender', { path: '(document)' }));
@@ -100,7 +120,9 @@ export function evaluateGraph(
     const used = renders[0]?.id ?? renderNodes.map((n) => n.node.id).sort()[0];
     diagnostics.push(diag('manyRenders', { nodeId: used }, used));
   }
-  const chosen = renders[0];
+  const first = renders[0];
+  // A 3D render leaves the plane's scene empty, so 2D code (compiler, interpreter) never sees 3D data.
+  const chosen = first?.settings ? first : undefined;
   const scene: Scene = {
     elements: chosen?.settings.elements ?? [],
     tile: chosen?.settings.tile ?? DEFAULT_TILE,
@@ -112,6 +134,9 @@ export function evaluateGraph(
     handles,
     renderNodeId: chosen?.id ?? null,
   };
+  const scene3d: Scene3d | null = first?.settings3d
+    ? { kind: '3d', ...first.settings3d, renderNodeId: first.id, ...space }
+    : null;
   // The mirrors' kept sides and corner angles: a wrong picture never comes without a message.
   if (chosen) {
     try {
@@ -120,7 +145,7 @@ export function evaluateGraph(
       // A check, not the picture: a geometry corner case here must never withhold the render.
     }
   }
-  return { scene, nodes: results, diagnostics, analysis };
+  return { scene, scene3d, nodes: results, diagnostics, analysis };
 }
 
 const NO_EDGES: ReadonlyMap<string, unknown> = new Map();
@@ -133,7 +158,7 @@ function evaluateNode(
   analysis: Analysis,
   results: ReadonlyMap<string, NodeEvaluation>,
   time: number,
-): NodeEvaluation & { render?: RenderSettings } {
+): NodeEvaluation & { render?: RenderSettings; render3d?: Render3dSettings } {
   const edgesByPort = analysis.incoming.get(nodeId);
   const resolved = resolveParams(def, { id: nodeId, params: rawParams }, edgesByPort ?? NO_EDGES, [
     'nodes',
@@ -199,7 +224,14 @@ function evaluateNode(
       return { diagnostics, readout, ctx };
     }
   }
-  return { outputs: outcome.outputs, readout, diagnostics, ctx, render: outcome.render };
+  return {
+    outputs: outcome.outputs,
+    readout,
+    diagnostics,
+    ctx,
+    render: outcome.render,
+    render3d: outcome.render3d,
+  };
 }
 
 /**
@@ -216,13 +248,6 @@ function collectOverlay(
   overlays: OverlayItem[],
   handles: HandleItem[],
 ): void {
-  const attempt = (f: () => void) => {
-    try {
-      f();
-    } catch {
-      // An overlay is decoration: a failure here must not hide the node's real result.
-    }
-  };
   if (outputs) {
     attempt(() => {
       for (const shape of def.overlay?.(ctx, outputs) ?? []) {
@@ -236,6 +261,42 @@ function collectOverlay(
       if (Array.isArray(h.at) && allFinite(h.at)) handles.push({ ...h, nodeId: id });
     }
   });
+}
+
+/** Runs an overlay callback: an overlay is decoration, a failure here must not hide the node's result. */
+function attempt(f: () => void): void {
+  try {
+    f();
+  } catch {
+    // skipped: see above
+  }
+}
+
+/** The 3D counterpart of collectOverlay (nodes with `overlay3d` / `handles3d`). */
+function collectOverlay3d(
+  def: NodeDef,
+  id: string,
+  label: string | undefined,
+  ctx: EvalContext,
+  outputs: Readonly<Record<string, unknown>> | undefined,
+  into: Collected3d,
+): void {
+  if (outputs && def.overlay3d) {
+    attempt(() => {
+      for (const shape of def.overlay3d?.(ctx, outputs) ?? []) {
+        if (allFinite(shape))
+          into.overlays.push({ nodeId: id, color: def.color, shape, ...(label ? { label } : {}) });
+      }
+    });
+  }
+  if (def.handles3d) {
+    attempt(() => {
+      for (const h of def.handles3d?.(ctx, outputs ?? {}) ?? []) {
+        if (Array.isArray(h.at) && h.at.length === 3 && allFinite(h.at))
+          into.handles.push({ ...h, nodeId: id });
+      }
+    });
+  }
 }
 
 /** Edges into a many-input, ordered by their source node's evaluation order ("graph order"). */

@@ -5,6 +5,8 @@ import { circleNode } from './circle.ts';
 import { circle3ptNode } from './circle-3pt.ts';
 import { circleCenterPointNode } from './circle-center-point.ts';
 import { colorNode, cosinePaletteNode } from './colour.ts';
+import { compoundLoxodromic3dNode } from './compound-loxodromic-3d.ts';
+import { compoundParabolic3dNode } from './compound-parabolic-3d.ts';
 import { hyperbolicPolygonNode } from './hyperbolic-polygon.ts';
 import { imageNode } from './image.ts';
 import { intersectCirclesNode, intersectLineCircleNode, intersectLinesNode } from './intersections.ts';
@@ -17,15 +19,25 @@ import { parallelLineNode, perpendicularBisectorNode, perpendicularLineNode } fr
 import { loxodromicNode } from './loxodromic.ts';
 import { angleNode, distanceNode } from './measures.ts';
 import { mobiusNode } from './mobius.ts';
+import { mobius3dNode } from './mobius-3d.ts';
 import { mobiusMatrixNode } from './mobius-matrix.ts';
 import { numberNode } from './number.ts';
+import { planeNode } from './plane.ts';
+import { planeReflectionNode } from './plane-reflection.ts';
 import { pointNode } from './point.ts';
+import { point3dNode } from './point-3d.ts';
 import { invertPointNode, midpointNode, reflectPointNode } from './point-constructions.ts';
 import { rectangleKaleidoscopeNode } from './rectangle-kaleidoscope.ts';
 import { reflectionNode } from './reflection.ts';
 import { renderNode } from './render.ts';
+import { render3dNode } from './render-3d.ts';
 import { rotationNode } from './rotation.ts';
+import { seedBoxNode } from './seed-box.ts';
+import { seedSphereNode } from './seed-sphere.ts';
 import { seedDiskNode, seedImageNode } from './seeds.ts';
+import { sphereNode } from './sphere.ts';
+import { sphere4ptNode } from './sphere-4pt.ts';
+import { sphereInversionNode } from './sphere-inversion.ts';
 import { spiralSimilarityNode } from './spiral-similarity.ts';
 import { glideReflectionNode, parallelMirrorsNode, translationNode } from './strip.ts';
 import { tileNode } from './tile.ts';
@@ -73,6 +85,18 @@ export const NODE_TYPES = [
   sineNode,
   circularMotionNode,
   renderNode,
+  point3dNode,
+  sphereNode,
+  sphere4ptNode,
+  planeNode,
+  sphereInversionNode,
+  planeReflectionNode,
+  mobius3dNode,
+  compoundLoxodromic3dNode,
+  compoundParabolic3dNode,
+  seedSphereNode,
+  seedBoxNode,
+  render3dNode,
 ] as const;
 
 export const registry = createRegistry(NODE_TYPES);

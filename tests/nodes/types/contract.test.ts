@@ -21,6 +21,7 @@ const CATEGORIES = [
   'Colour',
   'Animation',
   'Output',
+  '3D',
 ];
 const nonEmpty = (s: unknown) => typeof s === 'string' && s.trim().length > 0;
 const finitePoint = (p: unknown) =>

@@ -1,0 +1,39 @@
+/**
+ * Facts about a 3D orbit seed that the nodes, the CLI and tests share: its signed distance and the
+ * points that stand for it when checking where it lies (docs/math-3d.md §7).
+ */
+import { boxSignedDistance } from '../geometry/space/box.ts';
+import { add3, dist3, scale3 } from '../geometry/space/vec3.ts';
+import type { Seed3d, Vec3 } from './scene-3d.ts';
+
+/** Signed distance from x to the seed's surface (negative inside): |x − c| − r for a sphere, a box's own. */
+export function seedSignedDistance(seed: Seed3d, x: Vec3): number {
+  return seed.kind === 'sphere'
+    ? dist3(x, seed.sphere.center) - seed.sphere.radius
+    : boxSignedDistance(seed.center, seed.halfSize, x);
+}
+
+const AXES: readonly Vec3[] = [
+  [1, 0, 0],
+  [-1, 0, 0],
+  [0, 1, 0],
+  [0, -1, 0],
+  [0, 0, 1],
+  [0, 0, -1],
+];
+
+/**
+ * Points that stand for a seed: its centre and its extreme points (a sphere's six axis points, a
+ * box's eight corners). A seed lies in the fundamental domain when no element moves any of them.
+ */
+export function seedSamplePoints(seed: Seed3d): Vec3[] {
+  if (seed.kind === 'sphere') {
+    const { center, radius } = seed.sphere;
+    return [center, ...AXES.map((a) => add3(center, scale3(a, radius)))];
+  }
+  const corners: Vec3[] = [];
+  const [hx, hy, hz] = seed.halfSize;
+  for (const sx of [-hx, hx])
+    for (const sy of [-hy, hy]) for (const sz of [-hz, hz]) corners.push(add3(seed.center, [sx, sy, sz]));
+  return [seed.center, ...corners];
+}

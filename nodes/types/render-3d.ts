@@ -1,0 +1,196 @@
+/**
+ * The 3D render node: the elements and orbit seeds of space, the camera, the sphere-tracing budget,
+ * the lighting and the colouring (docs/math-3d.md §7). Its evaluate returns the settings; the
+ * evaluator makes them the Evaluation's `scene3d`. Out-of-range numbers are clamped with a
+ * message (never an error: the picture keeps drawing while a slider passes through).
+ */
+import { defineNode } from '../core/define-node.ts';
+import { type Diagnostic, diag } from '../core/diagnostics.ts';
+import { LIMITS } from '../core/limits.ts';
+import { toHex } from '../core/port-values.ts';
+import {
+  type Coloring3d,
+  DEFAULT_CAMERA_3D,
+  DEFAULT_LIGHTING_3D,
+  type Lighting3d,
+  type NodeElement3d,
+  type Seed3d,
+} from '../core/scene-3d.ts';
+import { DEFAULT_COLORING } from '../core/tile-spec.ts';
+import { dist3, len3 } from '../geometry/space/vec3.ts';
+import { fail, fmt } from './shared.ts';
+import { cameraDiagnostics, seedDiagnostics } from './space-checks.ts';
+import { element3Input, point3Input } from './space-shared.ts';
+
+const [cx, cy, cz] = DEFAULT_CAMERA_3D.position;
+const [tx, ty, tz] = DEFAULT_CAMERA_3D.target;
+const [lx, ly, lz] = DEFAULT_LIGHTING_3D.direction;
+
+/** A number input clamped by the node (no min/max in the spec: out of range is a warning, not an error). */
+const setting = (label: string, value: number, doc: string, more?: true) =>
+  ({ type: 'number', label, default: value, doc, ...(more ? { more } : {}) }) as const;
+
+const colour = (hex: string, label: string) =>
+  ({ type: 'color', label, default: hex, when: { param: 'coloring', is: ['cosine'] } }) as const;
+
+/** Clamps v into [lo, hi] (rounded when `integer`), saying so when it changes. */
+function clampTo(
+  name: string,
+  v: number,
+  lo: number,
+  hi: number,
+  out: Diagnostic[],
+  integer = false,
+): number {
+  const c = Math.min(hi, Math.max(lo, integer ? Math.round(v) : v));
+  if (c !== v)
+    out.push(
+      diag(
+        'clamped',
+        { port: name },
+        `${name} ${fmt(v)} is outside ${fmt(lo)}…${fmt(hi)}${integer ? ' (whole numbers)' : ''}: ${fmt(c)} is used`,
+      ),
+    );
+  return c;
+}
+
+export const render3dNode = defineNode({
+  type: 'render-3d',
+  version: 1,
+  label: 'Render 3D',
+  category: 'Output',
+  color: '#ffffff',
+  doc: 'The 3D picture: sphere-traces the orbits of the seeds under every 3D element wired in (tested in graph order), lit and coloured.',
+  inputs: {
+    elements: element3Input('elements'),
+    seeds: { type: 'seed3', label: 'seeds', optional: true, doc: 'the shapes whose images are drawn' },
+    camera: point3Input('camera', cx, cy, cz, 'where the eye is (z is up)'),
+    target: point3Input('look at', tx, ty, tz, 'the point the camera looks at'),
+    fov: setting('field of view °', DEFAULT_CAMERA_3D.fovDeg, 'vertical field of view, 1°…170°'),
+    maxIterations: setting(
+      'max iterations',
+      LIMITS.defaultMaxIterations3d,
+      'IIS steps per distance estimate',
+    ),
+    marchSteps: setting('march steps', LIMITS.defaultMarchSteps, 'sphere-tracing steps per ray', true),
+    deScale: setting(
+      'DE scale',
+      0.9,
+      'each march step goes this fraction (≤ 1) of the distance estimate',
+      true,
+    ),
+    samples: setting('samples / pixel', 4, 'anti-aliasing samples when the view is still', true),
+    step: {
+      type: 'number',
+      label: 'colour step',
+      default: 0.1,
+      doc: 'colour change per inversion (turns of the wheel, or palette steps)',
+      when: { param: 'coloring', is: ['depth-wheel', 'cosine'] },
+    },
+    scale: {
+      type: 'number',
+      label: 'colour scale',
+      default: 1,
+      doc: 'world units per colour cycle',
+      when: { param: 'coloring', is: ['surface', 'final-point'] },
+    },
+    a: colour(toHex(DEFAULT_COLORING.a), 'a (centre)'),
+    b: colour(toHex(DEFAULT_COLORING.b), 'b (swing)'),
+    c: colour(toHex(DEFAULT_COLORING.c), 'c (frequency)'),
+    d: colour(toHex(DEFAULT_COLORING.d), 'd (phase)'),
+    light: point3Input('light direction', lx, ly, lz, 'direction towards the light'),
+    ambient: setting('ambient', DEFAULT_LIGHTING_3D.ambient, '0…1', true),
+    diffuse: setting('diffuse', DEFAULT_LIGHTING_3D.diffuse, '0…1', true),
+    specular: setting('specular', DEFAULT_LIGHTING_3D.specular, '0…1', true),
+    shininess: setting('shininess', DEFAULT_LIGHTING_3D.shininess, 'highlight exponent, 1…512', true),
+    occlusion: setting('occlusion', DEFAULT_LIGHTING_3D.occlusion, 'ambient-occlusion strength, 0…1', true),
+    shadow: setting('shadow', DEFAULT_LIGHTING_3D.shadow, 'soft-shadow strength, 0…1', true),
+  },
+  outputs: {},
+  params: {
+    coloring: {
+      kind: 'enum',
+      default: 'depth-wheel',
+      options: ['depth-wheel', 'cosine', 'surface', 'final-point'],
+      label: 'colouring',
+      doc: 'depth-wheel: the seed colour turned by the depth; cosine: a palette by depth; surface: by the hit point; final-point: by where the IIS ends',
+    },
+    background: { kind: 'color', default: '#101018', label: 'background' },
+  },
+  evaluate: ({ inputs: i, params }) => {
+    const diagnostics: Diagnostic[] = [];
+    if (!(dist3(i.camera, i.target) > 0))
+      return fail('the camera and the point it looks at coincide: there is no view direction');
+    let elements: readonly NodeElement3d[] = i.elements;
+    if (elements.length > LIMITS.maxElements) {
+      diagnostics.push({
+        ...diag('tooManyElements', { port: 'elements' }, elements.length, LIMITS.maxElements),
+        severity: 'warning',
+      });
+      elements = elements.slice(0, LIMITS.maxElements);
+    }
+    let seeds: readonly Seed3d[] = i.seeds;
+    if (seeds.length > LIMITS.maxSeeds) {
+      diagnostics.push(diag('tooManySeeds', { port: 'seeds' }, seeds.length, LIMITS.maxSeeds));
+      seeds = seeds.slice(0, LIMITS.maxSeeds);
+    }
+    if (seeds.length === 0)
+      diagnostics.push({
+        ...diag('clamped', { port: 'seeds' }, 'no seeds wired in: there is nothing to draw'),
+        severity: 'info',
+      });
+    const camera = {
+      position: i.camera,
+      target: i.target,
+      fovDeg: clampTo('fov', i.fov, 1, 170, diagnostics),
+    };
+    diagnostics.push(
+      ...cameraDiagnostics(camera.position, elements, seeds),
+      ...seedDiagnostics(seeds, elements),
+    );
+    const light = len3(i.light) > 0 ? i.light : DEFAULT_LIGHTING_3D.direction;
+    if (light !== i.light)
+      diagnostics.push(
+        diag('clamped', { port: 'light' }, 'the light direction is zero: the default direction is used'),
+      );
+    const unit = (name: string, v: number) => clampTo(name, v, 0, 1, diagnostics);
+    const lighting: Lighting3d = {
+      direction: light,
+      ambient: unit('ambient', i.ambient),
+      diffuse: unit('diffuse', i.diffuse),
+      specular: unit('specular', i.specular),
+      shininess: clampTo('shininess', i.shininess, 1, 512, diagnostics),
+      occlusion: unit('occlusion', i.occlusion),
+      shadow: unit('shadow', i.shadow),
+    };
+    const coloring: Coloring3d =
+      params.coloring === 'cosine'
+        ? { mode: 'cosine', a: i.a, b: i.b, c: i.c, d: i.d, step: i.step }
+        : params.coloring === 'depth-wheel'
+          ? { mode: 'depth-wheel', step: i.step }
+          : { mode: params.coloring, scale: i.scale > 0 ? i.scale : 1 };
+    if ((params.coloring === 'surface' || params.coloring === 'final-point') && !(i.scale > 0))
+      diagnostics.push(
+        diag('clamped', { port: 'scale' }, `colour scale ${fmt(i.scale)} is not positive: 1 is used`),
+      );
+    const settings = {
+      elements,
+      seeds,
+      camera,
+      maxIterations: clampTo('maxIterations', i.maxIterations, 1, LIMITS.maxIterations, diagnostics, true),
+      marchSteps: clampTo('marchSteps', i.marchSteps, 1, LIMITS.maxMarchSteps, diagnostics, true),
+      deScale: clampTo('deScale', i.deScale, 0.01, 1, diagnostics),
+      lighting,
+      coloring,
+      background: params.background,
+      samples: clampTo('samples', i.samples, 1, LIMITS.maxSamples, diagnostics, true),
+    };
+    const plural = (n: number, w: string) => `${n} ${w}${n === 1 ? '' : 's'}`;
+    return {
+      outputs: {},
+      diagnostics,
+      readout: `${plural(elements.length, 'element')}, ${plural(seeds.length, 'seed')}`,
+      render3d: settings,
+    };
+  },
+});

@@ -1,0 +1,44 @@
+import { defineNode } from '../core/define-node.ts';
+import type { Seed3d } from '../core/scene-3d.ts';
+import { add3, sub3 } from '../geometry/space/vec3.ts';
+import { fail } from './shared.ts';
+import { fmt3, MIN_RADIUS, point3Input } from './space-shared.ts';
+
+export const seedBoxNode = defineNode({
+  type: 'seed-box',
+  version: 1,
+  label: 'Seed box',
+  category: '3D',
+  color: '#ba68c8',
+  doc: 'A 3D orbit seed: an axis-aligned box (centre, half size along x, y, z); the 3D render draws it and all its images (the paper’s Fig. 24).',
+  inputs: {
+    center: point3Input('centre', 0, 0, 0),
+    halfSize: point3Input('half size', 0.4, 0.4, 0.4, 'half the box’s extent along x, y and z'),
+    color: { type: 'color', label: 'colour', default: '#f4a259' },
+  },
+  outputs: { seed: { type: 'seed3', label: 'seed' } },
+  params: {},
+  evaluate: ({ inputs, nodeId }) => {
+    if (!inputs.halfSize.every((h) => h > 0))
+      return fail(`the box needs a positive half size along x, y and z, got ${fmt3(inputs.halfSize)}`);
+    const seed: Seed3d = {
+      kind: 'box',
+      nodeId,
+      center: inputs.center,
+      halfSize: inputs.halfSize,
+      color: inputs.color,
+    };
+    return { outputs: { seed }, readout: `half size ${fmt3(inputs.halfSize)}` };
+  },
+  overlay3d: (_ctx, out) =>
+    out.seed.kind === 'box' ? [{ shape: 'box', center: out.seed.center, halfSize: out.seed.halfSize }] : [],
+  handles3d: ({ inputs }) => [
+    { handle: 'center', at: inputs.center },
+    { handle: 'corner', at: add3(inputs.center, inputs.halfSize) },
+  ],
+  /** The corner sets the half size: its offset from the centre per axis (kept positive). */
+  drag3d: (handle, to, ctx) =>
+    handle === 'center'
+      ? { center: [...to] }
+      : { halfSize: sub3(to, ctx.inputs.center).map((v) => Math.max(MIN_RADIUS, Math.abs(v))) },
+});

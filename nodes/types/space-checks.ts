@@ -1,0 +1,64 @@
+/**
+ * Warnings of the 3D render node about where things sit in the IIS regions (docs/math-3d.md §7):
+ * a camera inside a region the IIS moves or inside a seed, and a seed not in the fundamental domain.
+ */
+import { type Diagnostic, diag } from '../core/diagnostics.ts';
+import type { NodeElement3d, Seed3d, Vec3 } from '../core/scene-3d.ts';
+import { seedSamplePoints, seedSignedDistance } from '../core/seed-3d.ts';
+import { elementHolding } from './space-shared.ts';
+
+export function cameraDiagnostics(
+  camera: Vec3,
+  elements: readonly NodeElement3d[],
+  seeds: readonly Seed3d[],
+): Diagnostic[] {
+  const out: Diagnostic[] = [];
+  const holder = elementHolding(elements, camera);
+  if (holder)
+    out.push(
+      diag(
+        'cameraInside',
+        { port: 'camera' },
+        `the region of element "${holder.nodeId}"`,
+        'that region is moved by the IIS, so what the camera sees first is folded (move the camera out, e.g. outside the inversion sphere)',
+      ),
+    );
+  const seed = seeds.find((s) => seedSignedDistance(s, camera) < 0);
+  if (seed)
+    out.push(
+      diag(
+        'cameraInside',
+        { port: 'camera' },
+        `seed "${seed.nodeId}"`,
+        'it sees only the inside of that seed',
+      ),
+    );
+  return out;
+}
+
+/**
+ * The element whose region holds part of the seed: exactly for an inversion sphere (the seed
+ * reaches into its ball: signed distance from the mirror's centre below its radius), else by the
+ * seed's centre and extreme points.
+ */
+function holderOf(seed: Seed3d, elements: readonly NodeElement3d[]): NodeElement3d | undefined {
+  const mirror = elements.find(
+    (e) => e.kind === 'sphere-inversion' && seedSignedDistance(seed, e.sphere.center) < e.sphere.radius,
+  );
+  if (mirror) return mirror;
+  for (const p of seedSamplePoints(seed)) {
+    const holder = elementHolding(elements, p);
+    if (holder) return holder;
+  }
+  return undefined;
+}
+
+/** One warning per seed that some element's region holds part of (it is not in the fundamental domain). */
+export function seedDiagnostics(seeds: readonly Seed3d[], elements: readonly NodeElement3d[]): Diagnostic[] {
+  const out: Diagnostic[] = [];
+  for (const seed of seeds) {
+    const holder = holderOf(seed, elements);
+    if (holder) out.push(diag('seedOutsideDomain', { port: 'seeds' }, seed.nodeId, holder.nodeId));
+  }
+  return out;
+}

@@ -194,3 +194,28 @@ export function placeHandles3d(
 /** SVG path data of a polyline. */
 export const pathData = (line: readonly ScreenPoint[]): string =>
   line.map(([x, y], i) => `${i === 0 ? 'M' : 'L'}${x.toFixed(1)} ${y.toFixed(1)}`).join('');
+
+/** Pixel distance from p to the segment a–b: |p − (a + t(b − a))| with t the clamped projection. */
+function segmentDistance(p: ScreenPoint, a: ScreenPoint, b: ScreenPoint): number {
+  const dx = b[0] - a[0];
+  const dy = b[1] - a[1];
+  const l2 = dx * dx + dy * dy;
+  const t = l2 > 0 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2)) : 0;
+  return Math.hypot(p[0] - (a[0] + t * dx), p[1] - (a[1] + t * dy));
+}
+
+/** The node of the drawn item nearest to p within `tolerance` pixels (dots and lines), or null. */
+export function itemNear(items: readonly Screen3dItem[], p: ScreenPoint, tolerance: number): string | null {
+  let best: string | null = null;
+  let bestDistance = tolerance;
+  for (const item of items) {
+    let d = item.dot ? Math.hypot(p[0] - item.dot[0], p[1] - item.dot[1]) : Infinity;
+    for (const line of item.lines)
+      for (let i = 1; i < line.length; i++) d = Math.min(d, segmentDistance(p, line[i - 1], line[i]));
+    if (d <= bestDistance) {
+      best = item.nodeId;
+      bestDistance = d;
+    }
+  }
+  return best;
+}

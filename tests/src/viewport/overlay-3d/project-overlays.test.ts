@@ -5,6 +5,7 @@ import type { Camera3d, Overlay3dItem } from '../../../../nodes/core/scene-3d.ts
 import { cross3, dist3, len3, sub3, type Vec3 } from '../../../../nodes/geometry/space/vec3.ts';
 import { halfHeightAt1, rayThrough } from '../../../../src/viewport/camera-3d.ts';
 import {
+  itemNear,
   pathData,
   placeHandles3d,
   placeOverlays3d,
@@ -115,5 +116,26 @@ describe('handles', () => {
     );
     expect(handles.map((h) => h.nodeId)).toEqual(['a', 'b']);
     expect(handles[0].x).toBeCloseTo(250, 9);
+  });
+});
+
+describe('hover', () => {
+  it('finds the item whose drawn lines or dot pass within the tolerance', () => {
+    const items = placeOverlays3d(
+      [
+        {
+          nodeId: 'ball',
+          color: '#f00',
+          shape: { shape: 'sphere', sphere: { center: [0, 0, 0], radius: 1 } },
+        },
+        { nodeId: 'dot', color: '#0f0', shape: { shape: 'point', at: [0, 0, 0] } },
+      ],
+      camera,
+      pane,
+    );
+    const rim = items[0].lines[0][0];
+    expect(itemNear(items, [rim[0] + 2, rim[1]], 5)).toBe('ball');
+    expect(itemNear(items, [251, 201], 5)).toBe('dot');
+    expect(itemNear(items, [5, 5], 5)).toBeNull();
   });
 });

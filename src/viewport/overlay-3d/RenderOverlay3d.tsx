@@ -114,7 +114,24 @@ export function RenderOverlay3d(props: RenderOverlay3dProps): JSX.Element {
     onCommit: props.onCommit,
   });
   const hot = drag ? drag.target.nodeId : hoveredNodeId;
+  // Keys: the node id and how many of that node's items came before (a node may draw several).
+  const wireframes: JSX.Element[] = [];
+  const labels: JSX.Element[] = [];
+  const seen = new Map<string, number>();
   const labelled = new Set<string>();
+  for (const item of items) {
+    const n = seen.get(item.nodeId) ?? 0;
+    seen.set(item.nodeId, n + 1);
+    wireframes.push(<Wireframe key={`${item.nodeId}:${n}`} item={item} hot={item.nodeId === hot} />);
+    const at = item.label && !labelled.has(item.nodeId) ? labelAt(item) : null;
+    if (at) labelled.add(item.nodeId);
+    if (at)
+      labels.push(
+        <text key={item.nodeId} x={at[0]} y={at[1]} className="kf-overlay-label">
+          {item.label}
+        </text>,
+      );
+  }
   return (
     <svg
       ref={ref}
@@ -133,11 +150,7 @@ export function RenderOverlay3d(props: RenderOverlay3dProps): JSX.Element {
         cursor: drag ? 'grabbing' : hoverHandle ? 'grab' : undefined,
       }}
     >
-      <g>
-        {items.map((item, i) => (
-          <Wireframe key={`${item.nodeId}:${i}`} item={item} hot={item.nodeId === hot} />
-        ))}
-      </g>
+      <g>{wireframes}</g>
       <g
         fontSize={OVERLAY_PX.labelFont}
         fontFamily="system-ui, sans-serif"
@@ -148,16 +161,7 @@ export function RenderOverlay3d(props: RenderOverlay3dProps): JSX.Element {
         paintOrder="stroke"
         strokeLinejoin="round"
       >
-        {items.map((item, i) => {
-          const at = item.label && !labelled.has(item.nodeId) ? labelAt(item) : null;
-          if (!at) return null;
-          labelled.add(item.nodeId);
-          return (
-            <text key={`label:${item.nodeId}:${i}`} x={at[0]} y={at[1]} className="kf-overlay-label">
-              {item.label}
-            </text>
-          );
-        })}
+        {labels}
       </g>
       <HandleKnobs
         handles={handles}

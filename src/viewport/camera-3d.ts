@@ -1,8 +1,8 @@
 /**
  * The 3D view's camera maths (pure): the pinhole camera's pixel ↔ ray mapping and the orbit,
- * zoom-about-the-cursor and pan moves of the pointer controls (docs/math-3d.md "§7 The view's
- * camera"). Pixels here are CSS pixels of the pane, x right and y DOWN from its top-left corner,
- * the way pointer events and the SVG overlay count them.
+ * zoom-about-the-cursor and pan moves of the pointer controls (docs/math-3d.md "The 3D view:
+ * camera moves and overlay projection"). Pixels here are CSS pixels of the pane, x right and y
+ * DOWN from its top-left corner, the way pointer events and the SVG overlay count them.
  */
 import type { Camera3d } from '../../nodes/core/scene-3d.ts';
 import {

@@ -2,7 +2,8 @@
  * The 3D overlay on screen (pure): each Overlay3dItem as SVG-ready pane pixels through the view's
  * camera (camera-3d.ts) — a point as a dot, a sphere as its outline (the exact silhouette ellipse,
  * sampled), a plane as a small square patch with its normal, a box as its twelve edges — and each
- * Handle3dItem as a dot. Anything behind the camera is left out or clipped at the near plane.
+ * Handle3dItem as a dot. Anything behind the camera is left out or clipped at the near plane
+ * (docs/math-3d.md "The 3D view: camera moves and overlay projection").
  */
 import type { Camera3d, Handle3dItem, Overlay3dItem, Plane, Sphere } from '../../../nodes/core/scene-3d.ts';
 import {

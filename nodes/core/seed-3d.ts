@@ -3,8 +3,9 @@
  * points that stand for it when checking where it lies (docs/math-3d.md §7).
  */
 import { boxSignedDistance } from '../geometry/space/box.ts';
+import { type Iis3dResult, iis3d } from '../geometry/space/iis-3d.ts';
 import { add3, dist3, scale3 } from '../geometry/space/vec3.ts';
-import type { Seed3d, Vec3 } from './scene-3d.ts';
+import type { Scene3d, Seed3d, Vec3 } from './scene-3d.ts';
 
 /** Signed distance from x to the seed's surface (negative inside): |x − c| − r for a sphere, a box's own. */
 export function seedSignedDistance(seed: Seed3d, x: Vec3): number {
@@ -36,4 +37,27 @@ export function seedSamplePoints(seed: Seed3d): Vec3[] {
   for (const sx of [-hx, hx])
     for (const sy of [-hy, hy]) for (const sz of [-hz, hz]) corners.push(add3(seed.center, [sx, sy, sz]));
   return [seed.center, ...corners];
+}
+
+/** The IIS at one point of space and the distance to the seeds' orbit estimated from it. */
+export interface SpaceSample extends Iis3dResult {
+  /** min over seeds of d_seed(final point) / factor (signed, negative inside); null without seeds. */
+  readonly distance: number | null;
+}
+
+/**
+ * Runs the IIS from p (docs/math-3d.md §4) and estimates the signed distance from p to the nearest
+ * seed image: the seed's distance at the final point, divided by the accumulated conformal factor
+ * (which turns lengths near the final point back into lengths near p). This is the plain estimate
+ * of docs/math-3d.md §5: exact in sign at p, not a safe bound for marching.
+ */
+export function sampleSpace(
+  scene: Pick<Scene3d, 'elements' | 'seeds' | 'maxIterations'>,
+  p: Vec3,
+): SpaceSample {
+  const r = iis3d(scene.elements, p, scene.maxIterations);
+  if (scene.seeds.length === 0) return { ...r, distance: null };
+  let d = Number.POSITIVE_INFINITY;
+  for (const seed of scene.seeds) d = Math.min(d, seedSignedDistance(seed, r.point));
+  return { ...r, distance: d / r.factor };
 }

@@ -7,20 +7,27 @@ import type { NodeElement3d, Seed3d, Vec3 } from '../core/scene-3d.ts';
 import { seedSamplePoints, seedSignedDistance } from '../core/seed-3d.ts';
 import { elementHolding } from './space-shared.ts';
 
+/**
+ * A camera inside an inversion sphere sees the scene turned inside out and shrunken first. (The
+ * regions of plane reflections and translations are moved by isometries, and a generator's outer
+ * region B may hold every far-away point: a camera there is normal, so those get no warning.)
+ */
+const inversion = (e: NodeElement3d) => e.kind === 'sphere-inversion';
+
 export function cameraDiagnostics(
   camera: Vec3,
   elements: readonly NodeElement3d[],
   seeds: readonly Seed3d[],
 ): Diagnostic[] {
   const out: Diagnostic[] = [];
-  const holder = elementHolding(elements, camera);
+  const holder = elementHolding(elements.filter(inversion), camera);
   if (holder)
     out.push(
       diag(
         'cameraInside',
         { port: 'camera' },
         `the region of element "${holder.nodeId}"`,
-        'that region is moved by the IIS, so what the camera sees first is folded (move the camera out, e.g. outside the inversion sphere)',
+        'the IIS turns that region inside out, so the camera sees a shrunken copy of the scene first (move the camera outside the sphere)',
       ),
     );
   const seed = seeds.find((s) => seedSignedDistance(s, camera) < 0);

@@ -11,7 +11,11 @@ export interface Example {
   readonly doc: GraphDoc;
 }
 
-const modules = import.meta.glob('../../examples/*.kleinflow.json', { eager: true, import: 'default' });
+// 3D examples live in examples/3d/ (see src/cli/examples.ts); their ids are their file names too.
+const modules = import.meta.glob(['../../examples/*.kleinflow.json', '../../examples/3d/*.kleinflow.json'], {
+  eager: true,
+  import: 'default',
+});
 
 /** Examples that load cleanly, sorted by title (a broken example file is skipped, never shown). */
 export const EXAMPLES: readonly Example[] = Object.entries(modules)

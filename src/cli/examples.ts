@@ -10,6 +10,11 @@ export const EXAMPLES_DIR = join(ROOT, 'examples');
 export const EXAMPLES_PNG_DIR = join(EXAMPLES_DIR, 'png');
 /** The Examples gallery's thumbnails (npm run render-examples -- --thumbnails). */
 export const EXAMPLES_THUMB_DIR = join(EXAMPLES_DIR, 'thumbs');
+/**
+ * The 3D examples (a render-3d node): a folder of their own, so the checks of 2D pictures (CPU
+ * raster, GPU parity, thumbnails from the 2D interpreter) keep to the examples they apply to.
+ */
+export const EXAMPLES_3D_DIR = join(EXAMPLES_DIR, '3d');
 /** Which version of each example file its thumbnail was rendered from (name → SHA-256 of the file). */
 export const THUMB_SOURCES = join(EXAMPLES_THUMB_DIR, 'sources.json');
 const SUFFIX = '.kleinflow.json';

@@ -7,6 +7,7 @@
 import type { Diagnostic, Severity } from '../../nodes/core/diagnostics.ts';
 import { hasErrors } from '../../nodes/core/diagnostics.ts';
 import type { Scene } from '../../nodes/core/scene.ts';
+import type { Scene3d } from '../../nodes/core/scene-3d.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { type Evaluation, evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { registry } from '../../nodes/types/index.ts';
@@ -140,11 +141,10 @@ export const countBySeverity = (ds: readonly Diagnostic[]): Record<Severity, num
 });
 
 /**
- * For commands that need a picture (render, sample, glsl): loads the graph, prints its warnings
- * to stderr, and throws when anything is an error (after printing every error), so a broken graph
- * never produces a half-right output.
+ * Loads the graph, prints its warnings to stderr, and throws when anything is an error (after
+ * printing every error), so a broken graph never produces a half-right output.
  */
-export async function loadScene(io: CliIo, path: string): Promise<GraphLoad & { scene: Scene }> {
+async function loadChecked(io: CliIo, path: string): Promise<GraphLoad & { evaluation: Evaluation }> {
   const load = await loadGraph(io, path);
   for (const d of load.diagnostics) {
     if (d.severity !== 'info') io.stderr.write(`${path}: ${formatDiagnostic(d, load.doc)}\n`);
@@ -153,8 +153,29 @@ export async function loadScene(io: CliIo, path: string): Promise<GraphLoad & { 
     const n = countBySeverity(load.diagnostics).error;
     throw new CliError(`"${path}" has ${n} error${n === 1 ? '' : 's'}; nothing was produced`);
   }
-  if (load.evaluation.scene.renderNodeId === null) {
-    throw new CliError(`"${path}" has no render node: add one and wire elements into it`);
-  }
+  return { ...load, evaluation: load.evaluation };
+}
+
+const noRender = (path: string) =>
+  new CliError(`"${path}" has no render node: add one and wire elements into it`);
+
+/** For commands that need a picture of the plane (render, sample, glsl): see loadChecked. */
+export async function loadScene(io: CliIo, path: string): Promise<GraphLoad & { scene: Scene }> {
+  const load = await loadChecked(io, path);
+  if (load.evaluation.scene.renderNodeId === null) throw noRender(path);
   return { ...load, scene: load.evaluation.scene };
+}
+
+/** A graph's picture, of the plane or of space (a render-3d node). */
+export type AnyScene =
+  | { readonly kind: '2d'; readonly scene: Scene }
+  | { readonly kind: '3d'; readonly scene3d: Scene3d };
+
+/** For commands that work on 2D and 3D graphs alike (sample): see loadChecked. */
+export async function loadAnyScene(io: CliIo, path: string): Promise<GraphLoad & { picture: AnyScene }> {
+  const load = await loadChecked(io, path);
+  const { scene, scene3d } = load.evaluation;
+  if (scene3d) return { ...load, picture: { kind: '3d', scene3d } };
+  if (scene.renderNodeId === null) throw noRender(path);
+  return { ...load, picture: { kind: '2d', scene } };
 }

@@ -5,6 +5,7 @@
  * bad entry. An entry (with the whitespace around it) longer than INPUT_LIMITS.pointEntryChars is
  * refused, so no input — /dev/zero, endless whitespace — makes the reader hold more than that.
  */
+import type { Vec3 } from '../../nodes/core/scene-3d.ts';
 import type { Vec2 } from '../../nodes/core/values.ts';
 import { formatBytes, INPUT_LIMITS } from '../io/input-limits.ts';
 import { CliError } from './command.ts';
@@ -35,13 +36,23 @@ const NUMBER = '-?(?:0|[1-9]\\d*)(?:\\.\\d+)?(?:[eE][+-]?\\d+)?';
 const PAIR = new RegExp(`^\\s*\\[\\s*(${NUMBER})\\s*,\\s*(${NUMBER})\\s*\\]\\s*$`);
 const isSpace = (c: number) => c === 0x20 || c === 0x0a || c === 0x0d || c === 0x09;
 
+/** What a point of each dimension looks like, for messages. */
+const SHAPE = { 2: '[x, y] with two finite numbers', 3: '[x, y, z] with three finite numbers' } as const;
+/** Said when an entry has the other dimension's shape: the graph and the points do not match. */
+const WRONG_SPACE = {
+  2: ' (a point of space: this graph is 2D, it takes [x, y] points)',
+  3: ' (a point of the plane: this graph is 3D, it takes [x, y, z] points)',
+} as const;
+
 /** One entry's text as a point, or the one-line reason it is not. */
-function entryPoint(path: string, index: number, text: string): Vec2 {
-  const m = PAIR.exec(text);
-  if (m) {
-    const x = Number(m[1]);
-    const y = Number(m[2]);
-    if (Number.isFinite(x) && Number.isFinite(y)) return [x, y];
+function entryPoint(path: string, index: number, text: string, dimension: 2 | 3): Vec2 | Vec3 {
+  if (dimension === 2) {
+    const m = PAIR.exec(text);
+    if (m) {
+      const x = Number(m[1]);
+      const y = Number(m[2]);
+      if (Number.isFinite(x) && Number.isFinite(y)) return [x, y];
+    }
   }
   let value: unknown;
   try {
@@ -49,31 +60,41 @@ function entryPoint(path: string, index: number, text: string): Vec2 {
   } catch (e) {
     throw new CliError(`"${path}" is not valid JSON: entry [${index}]: ${(e as Error).message}`);
   }
-  const ok =
-    Array.isArray(value) &&
-    value.length === 2 &&
-    value.every((c) => typeof c === 'number' && Number.isFinite(c));
-  if (!ok)
-    throw new CliError(
-      `"${path}"[${index}]: expected [x, y] with two finite numbers, got ${describe(value)}`,
-    );
-  return value as Vec2;
+  const numbers = Array.isArray(value) && value.every((c) => typeof c === 'number' && Number.isFinite(c));
+  if (!numbers || (value as unknown[]).length !== dimension) {
+    const other = numbers && (value as unknown[]).length === 5 - dimension ? WRONG_SPACE[dimension] : '';
+    throw new CliError(`"${path}"[${index}]: expected ${SHAPE[dimension]}, got ${describe(value)}${other}`);
+  }
+  return value as Vec2 | Vec3;
 }
 
 export interface PointsStreamOptions {
   /** Called with the number of bytes read so far, after each piece (for progress). */
   readonly onBytes?: (bytes: number) => void;
+  /** Points of the plane, [x, y] (the default), or of space, [x, y, z] (a 3D graph). */
+  readonly dimension?: 2 | 3;
 }
 
 /**
  * The points of a `[[x, y], …]` file in input order, in batches (what one piece of the file
  * holds, or more). Throws a CliError (after yielding the batches before it) at the first problem.
  */
+export function streamPoints(
+  path: string,
+  chunks: AsyncIterable<Uint8Array>,
+  options?: PointsStreamOptions & { readonly dimension?: 2 },
+): AsyncGenerator<Vec2[]>;
+export function streamPoints(
+  path: string,
+  chunks: AsyncIterable<Uint8Array>,
+  options: PointsStreamOptions & { readonly dimension: 3 },
+): AsyncGenerator<Vec3[]>;
 export async function* streamPoints(
   path: string,
   chunks: AsyncIterable<Uint8Array>,
   options: PointsStreamOptions = {},
-): AsyncGenerator<Vec2[]> {
+): AsyncGenerator<(Vec2 | Vec3)[]> {
+  const dimension = options.dimension ?? 2;
   const decoder = new TextDecoder('utf-8', { fatal: true, ignoreBOM: false });
   const notJson = (why: string) => new CliError(`"${path}" is not valid JSON: ${why}`);
   /** 'start': before "["; 'entry': in or before an entry; 'end': after the closing "]". */
@@ -84,7 +105,7 @@ export async function* streamPoints(
   let escaped = false;
   let count = 0; // entries finished
   let afterComma = false;
-  let batch: Vec2[] = [];
+  let batch: (Vec2 | Vec3)[] = [];
   let bytes = 0;
   let blank = 0; // whitespace before "[" or after "]"
   const space = () => {
@@ -160,7 +181,7 @@ export async function* streamPoints(
         }
         throw notJson(`entry [${count}] is empty`);
       }
-      batch.push(entryPoint(path, count, entry));
+      batch.push(entryPoint(path, count, entry, dimension));
       count++;
       afterComma = !closing;
       if (closing) state = 'end';

@@ -46,6 +46,19 @@ export const GALLERY_SECTIONS: readonly GallerySection[] = [
   },
   { title: 'Pictures', ids: ['image-kaleidoscope-245', 'seed-picture-orbit'] },
   { title: 'Animation', ids: ['animated-breathing-loxodromic', 'fig39-schottky-waltz'] },
+  {
+    title: '3D',
+    ids: [
+      'fig11-sphere-inversion-fractal',
+      'fig12-eight-spheres-three-seeds',
+      'fig24-orbit-of-a-cube',
+      'indras-bubbles',
+      'fig17-parallel-planes',
+      'fig18-compound-parabolic',
+      'fig19-two-sphere-generator',
+      'fig20-compound-loxodromic',
+    ],
+  },
 ];
 
 export interface GalleryGroup {

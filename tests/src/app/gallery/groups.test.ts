@@ -2,7 +2,7 @@
 import { describe, expect, it } from 'vitest';
 import type { Example } from '../../../../src/app/examples.ts';
 import { GALLERY_SECTIONS, galleryGroups, oneLine } from '../../../../src/app/gallery/groups.ts';
-import { exampleNames } from '../../../../src/cli/examples.ts';
+import { EXAMPLES_3D_DIR, exampleNames } from '../../../../src/cli/examples.ts';
 
 const fake = (id: string, title: string, description = ''): Example =>
   ({ id, title, description, doc: {} }) as unknown as Example;
@@ -11,7 +11,7 @@ describe('gallery sections', () => {
   it('place every bundled example in exactly one section, and name no missing file', () => {
     const ids = GALLERY_SECTIONS.flatMap((s) => s.ids);
     expect(new Set(ids).size).toBe(ids.length);
-    expect([...ids].sort()).toEqual(exampleNames());
+    expect([...ids].sort()).toEqual([...exampleNames(), ...exampleNames(EXAMPLES_3D_DIR)].sort());
   });
 
   it('put an example no section names under "More" instead of hiding it', () => {

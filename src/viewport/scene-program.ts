@@ -1,13 +1,13 @@
 /**
- * Which program draws the current scene: its uniform program (the same source, so the same
+ * Which program draws the current scene (2D or 3D, drawable.ts): its uniform program (the same source, so the same
  * program, for every value edit), or, after a quiet spell, the baked program of its exact values. Reports the
  * compiler's and the driver's diagnostics whenever they change, and keeps the compile counts
  * across context losses.
  */
-import { type Diagnostic, diag } from '../../nodes/core/diagnostics.ts';
-import type { Scene } from '../../nodes/core/scene.ts';
-import { type CompiledProgram, type CompileOptions, compile } from '../../shader-gen/compile.ts';
+import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import type { CompiledProgram, CompileOptions } from '../../shader-gen/compile.ts';
 import type { UniformEntry } from '../../shader-gen/glsl/values.ts';
+import { type Drawable, generateProgram as generate } from './drawable.ts';
 import { type PendingBuild, programKey } from './program-cache.ts';
 import type { Renderer } from './renderer.ts';
 import type { GpuProgram } from './uniforms.ts';
@@ -40,15 +40,6 @@ function sameUniforms(a: readonly UniformEntry[], b: readonly UniformEntry[]): b
 const samePictures = (a: readonly string[], b: readonly string[]) =>
   a.length === b.length && a.every((src, i) => src === b[i]);
 
-/** The shader generator threw (a bug, not a user error): report it like a compile failure. */
-function generate(scene: Scene, options: CompileOptions): CompiledProgram | Diagnostic[] {
-  try {
-    return compile(scene, options);
-  } catch (e) {
-    return [diag('shaderCompile', {}, `shader generator: ${(e as Error).message}`)];
-  }
-}
-
 export class SceneProgramBuilder {
   private compiled: CompiledProgram | null = null;
   private program: SceneProgram | null = null;
@@ -68,7 +59,7 @@ export class SceneProgramBuilder {
   constructor(private readonly onDiagnostics: (d: Diagnostic[]) => void) {}
 
   /** Takes `scene`: compiles only when its generated source is new to the cache. */
-  apply(renderer: Renderer, scene: Scene, now: number): SceneChange {
+  apply(renderer: Renderer, scene: Drawable, now: number): SceneChange {
     const compiled = generate(scene, UNIFORM);
     if (Array.isArray(compiled)) {
       this.fail(compiled);
@@ -112,7 +103,7 @@ export class SceneProgramBuilder {
    * Idle bake, one step per frame: once the scene has been still for idleMs, generate and start
    * compiling the baked program; in a later frame (when the driver is done) return it.
    */
-  pollBake(renderer: Renderer, scene: Scene, now: number, idleMs: number): SceneProgram | null {
+  pollBake(renderer: Renderer, scene: Drawable, now: number, idleMs: number): SceneProgram | null {
     if (this.bakeDueIn(now, idleMs) !== 0) return null;
     if (!this.bake || this.bake.version !== this.version) {
       const compiled = generate(scene, BAKED);
@@ -151,7 +142,7 @@ export class SceneProgramBuilder {
   }
 
   /** For export: the baked program of `scene` (built now), else its uniform program. */
-  exportProgram(renderer: Renderer, scene: Scene): SceneProgram {
+  exportProgram(renderer: Renderer, scene: Drawable): SceneProgram {
     const problems: Diagnostic[] = [];
     for (const options of [BAKED, UNIFORM]) {
       const compiled = generate(scene, options);

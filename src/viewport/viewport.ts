@@ -6,8 +6,10 @@
  * several times faster) takes over until the next edit. Compile errors keep the last good frame on
  * screen and are reported with node ids. A lost WebGL context is rebuilt when the browser restores it.
  */
-import type { Scene, View } from '../../nodes/core/scene.ts';
+import type { Camera3d } from '../../nodes/core/scene-3d.ts';
+import { DEFAULT_VIEW, type View } from '../../nodes/core/view.ts';
 import { sampleOffset } from '../../shader-gen/view.ts';
+import { type Drawable, is3d } from './drawable.ts';
 import { createTarget, disposeTarget, type RenderTarget } from './render-target.ts';
 import { Renderer } from './renderer.ts';
 import { type SceneProgram, SceneProgramBuilder } from './scene-program.ts';
@@ -32,8 +34,9 @@ export class Viewport {
   private readonly gl: WebGL2RenderingContext;
   private renderer: Renderer | null;
   private readonly programs: SceneProgramBuilder;
-  private scene: Scene | null = null;
+  private scene: Drawable | null = null;
   private explicitView: View | null = null;
+  private explicitCamera: Camera3d | null = null;
   private sceneDirty = false;
   /** The program drawing now, or null while the scene does not compile (the last frame stays). */
   private active: SceneProgram | null = null;
@@ -108,12 +111,24 @@ export class Viewport {
   /**
    * Recompiles only when the generated source changes (else uploads uniforms) and restarts
    * accumulation; a scene with the same source and values as the current one changes nothing.
+   * A 3D scene (Scene3d) is drawn through the camera of setCamera (else its own).
    */
-  setScene(scene: Scene): void {
+  setScene(scene: Drawable): void {
     if (!this.sceneDirty) this.sceneSetAt = performance.now();
     this.scene = scene;
     this.sceneDirty = true;
     this.requestFrame();
+  }
+
+  /** The scene drawn now (2D or 3D), or null before the first. */
+  drawing(): Drawable | null {
+    return this.scene;
+  }
+
+  /** The 3D view's camera (a frame uniform, like the 2D view): restarts accumulation; never compiles. */
+  setCamera(camera: Camera3d): void {
+    this.explicitCamera = camera;
+    this.restart();
   }
 
   /** Restarts accumulation; never compiles. */
@@ -151,6 +166,7 @@ export class Viewport {
         height: opts.height,
         samples: opts.samples,
         view: opts.view ?? this.view(scene),
+        camera: this.camera(scene, opts.camera),
         transparent: opts.transparent ?? false,
         tile: opts.tile,
         onProgress: opts.onProgress,
@@ -184,8 +200,14 @@ export class Viewport {
     this.active = null;
   }
 
-  private view(scene: Scene): View {
-    return this.explicitView ?? scene.view;
+  /** The 2D view; a 3D program has no u_view (it has a camera), so any view serves. */
+  private view(scene: Drawable): View {
+    return is3d(scene) ? DEFAULT_VIEW : (this.explicitView ?? scene.view);
+  }
+
+  /** The camera a 3D scene is drawn through: the one asked for, the view's, else the scene's. */
+  private camera(scene: Drawable, asked?: Camera3d): Camera3d | undefined {
+    return is3d(scene) ? (asked ?? this.explicitCamera ?? scene.camera) : undefined;
   }
 
   private requireRenderer(): Renderer {
@@ -238,7 +260,7 @@ export class Viewport {
     this.schedule(now, target);
   }
 
-  private drawFrame(renderer: Renderer, program: SceneProgram, scene: Scene, target: number): void {
+  private drawFrame(renderer: Renderer, program: SceneProgram, scene: Drawable, target: number): void {
     // The drawing buffer can be smaller than canvas.width × height (browsers cap its size).
     const width = this.gl.drawingBufferWidth;
     const height = this.gl.drawingBufferHeight;
@@ -255,6 +277,7 @@ export class Viewport {
       offsetX: 0,
       offsetY: 0,
       view: this.view(scene),
+      camera: this.camera(scene),
       jitter: sampleOffset(k),
       bgAlpha: 1,
     };

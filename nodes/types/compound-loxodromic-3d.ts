@@ -18,7 +18,7 @@ export const compoundLoxodromic3dNode = defineNode({
   label: 'Compound loxodromic 3D',
   category: '3D',
   color: '#c2185b',
-  doc: 'G = (I_S4∘I_S3)∘(I_S2∘I_S1): the two-sphere map twisted by S3 = Sphere(P, P′, P″, Q1) and S4 = Sphere(P, P′, P″, Q2); inside S1 → G, inside S1′ → G⁻¹ (docs/math-3d.md §3).',
+  doc: 'The two-sphere generator with a twist: G = (I_S4∘I_S3)∘(I_S2∘I_S1), S3 and S4 the spheres through the control point P, its inverses in S1 and S2, and Q1 or Q2.',
   inputs: {
     s1: sphereInput('S1', [0, 0, 0], 1),
     s2: sphereInput('S2', [0.3, 0, 0], 2),

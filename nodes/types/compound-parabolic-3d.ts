@@ -14,7 +14,7 @@ export const compoundParabolic3dNode = defineNode({
   label: 'Compound parabolic 3D',
   category: '3D',
   color: '#c2185b',
-  doc: 'Two facing parallel planes (normals towards each other) give a translation by twice their gap; the torsion turns it about the axis through P1’s point (docs/math-3d.md §6).',
+  doc: 'Two facing parallel planes (normals towards each other) translate space by twice their gap; the torsion turns each step about the axis through P1’s point.',
   inputs: {
     p1: planeInput('P1', [0, 0, -1], [0, 0, 1]),
     p2: planeInput('P2', [0, 0, 1], [0, 0, -1]),

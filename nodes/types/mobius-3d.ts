@@ -17,7 +17,7 @@ export const mobius3dNode = defineNode({
   label: 'Möbius 3D (two spheres)',
   category: '3D',
   color: '#c2185b',
-  doc: "The generator G = I_S2∘I_S1 (invert in S1, then S2) and its inverse: inside S1 → G, inside S1' = I_S2(S1) → G⁻¹.",
+  doc: 'The generator G = I_S2∘I_S1 (invert in S1, then in S2) and its inverse; hyperbolic, parabolic or elliptic by how the spheres meet, shown on the node.',
   inputs: {
     s1: sphereInput('S1', [0, 0, 0], 1),
     s2: sphereInput('S2', [0.3, 0, 0], 2),

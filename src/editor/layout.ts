@@ -25,9 +25,10 @@ const READOUT = 27;
 const GAP_X = 80;
 const GAP_Y = 28;
 
-/** Rows an input takes: a line or circle editor is two rows, everything else one. */
+/** Rows an input takes: a line, circle, sphere or plane editor is two rows, everything else one. */
 function inputRows(spec: InputSpec, value: unknown, connected: boolean): number {
-  const twoRows = spec.type === 'line' || spec.type === 'circle';
+  const twoRows =
+    spec.type === 'line' || spec.type === 'circle' || spec.type === 'sphere' || spec.type === 'plane';
   return twoRows && !connected && hasInlineEditor(spec, value) ? 2 : 1;
 }
 

@@ -3,41 +3,41 @@
  * One place decides which widget a value gets, for the node and the inspector alike.
  */
 import type { InputSpec, ParamSpec } from '../../../nodes/core/define-node.ts';
+import type { Plane, Sphere, Vec3 } from '../../../nodes/core/scene-3d.ts';
 import type { Circle, Line, Vec2 } from '../../../nodes/core/values.ts';
 import type { OnEdit } from './edit.ts';
-import { isVec2 } from './inline-editor.ts';
+import { isVec2, isVec3 } from './inline-editor.ts';
 import { NumberField } from './NumberField.tsx';
 import { ColorField, EnumField, ToggleField } from './simple-fields.tsx';
 
-function PointField({
+const AXES = ['x', 'y', 'z'] as const;
+
+/** A point of the plane or of space: one compact number field per coordinate. */
+function PointField<V extends Vec2 | Vec3>({
   label,
   value,
   onEdit,
   title,
 }: {
   label: string;
-  value: Vec2;
-  onEdit: OnEdit<Vec2>;
+  value: V;
+  onEdit: OnEdit<V>;
   title?: string;
 }) {
   return (
     <div className="kf-field kf-point" title={title}>
       <span className="kf-field__label">{label}</span>
-      <span className="kf-point__xy">
-        <NumberField
-          label={`${label} x`}
-          compact
-          value={value[0]}
-          spec={{ step: 0.01 }}
-          onEdit={(x, f) => onEdit([x, value[1]], f)}
-        />
-        <NumberField
-          label={`${label} y`}
-          compact
-          value={value[1]}
-          spec={{ step: 0.01 }}
-          onEdit={(y, f) => onEdit([value[0], y], f)}
-        />
+      <span className={value.length === 3 ? 'kf-point__xyz' : 'kf-point__xy'}>
+        {value.map((c, i) => (
+          <NumberField
+            key={AXES[i]}
+            label={`${label} ${AXES[i]}`}
+            compact
+            value={c}
+            spec={{ step: 0.01 }}
+            onEdit={(x, f) => onEdit(value.map((old, j) => (j === i ? x : old)) as unknown as V, f)}
+          />
+        ))}
       </span>
     </div>
   );
@@ -91,6 +91,45 @@ export function InputWidget({ name, spec, value, onEdit }: InputProps) {
             value={circle.r}
             spec={{ min: 0, step: 0.01 }}
             onEdit={(r, f) => onEdit({ ...circle, r }, f)}
+          />
+        </>
+      );
+    }
+    case 'point3':
+      return isVec3(v) ? <PointField label={label} title={spec.doc} value={v} onEdit={onEdit} /> : null;
+    case 'sphere': {
+      const sphere = v as Sphere | undefined;
+      if (!sphere || !isVec3(sphere.center)) return null;
+      return (
+        <>
+          <PointField
+            label={`${label} centre`}
+            value={sphere.center}
+            onEdit={(center, f) => onEdit({ ...sphere, center }, f)}
+          />
+          <NumberField
+            label={`${label} radius`}
+            value={sphere.radius}
+            spec={{ min: 0, step: 0.01 }}
+            onEdit={(radius, f) => onEdit({ ...sphere, radius }, f)}
+          />
+        </>
+      );
+    }
+    case 'plane': {
+      const plane = v as Plane | undefined;
+      if (!plane || !isVec3(plane.point) || !isVec3(plane.normal)) return null;
+      return (
+        <>
+          <PointField
+            label={`${label} point`}
+            value={plane.point}
+            onEdit={(point, f) => onEdit({ ...plane, point }, f)}
+          />
+          <PointField
+            label={`${label} normal`}
+            value={plane.normal}
+            onEdit={(normal, f) => onEdit({ ...plane, normal }, f)}
           />
         </>
       );

@@ -127,4 +127,16 @@ describe('evaluate: render-3d', () => {
     expect(ev.scene3d).toBeNull();
     expect(ev.nodes.get('r')!.diagnostics[0]!.code).toBe('KF303');
   });
+
+  it.each([
+    ['point-3d', 'x', 'NaN-ish', /x: expected a number/],
+    ['sphere', 'center', [1, 2], /center: expected a point3 value, got \[1,2\]/],
+    ['sphere-inversion', 'sphere', { center: [0, 0], radius: 1 }, /sphere: expected a sphere value/],
+    ['plane-reflection', 'plane', { point: [0, 0, 0] }, /plane: expected a plane value/],
+  ])('refuses a malformed inline %s value with the port named (KF301)', (type, key, value, message) => {
+    const r = evaluateGraph(doc([node('n', type, { [key]: value })]), registry).nodes.get('n')!;
+    expect(r.outputs).toBeUndefined();
+    expect(r.diagnostics[0]).toMatchObject({ code: 'KF301', port: key, path: `nodes[0].params.${key}` });
+    expect(r.diagnostics[0]!.message).toMatch(message);
+  });
 });

@@ -1,0 +1,58 @@
+/**
+ * Reflection in a plane (q, n), n unit: region the moved side (x − q)·n < 0; ρ(x) = x − 2((x − q)·n)n,
+ * factor 1 — an isometry, so it records nothing (docs/math-3d.md §1, §7).
+ * GLSL packing (1 vec4): d0 = (n, −q·n), so (x − q)·n = dot(x, n) + d0.w.
+ */
+import type { Element3d } from '../../../nodes/core/scene-3d.ts';
+import { glslFunction } from '../../glsl/snippet.ts';
+import type { ElementRecord3d } from './element-3d-kind.ts';
+
+type PlaneReflection = Extract<Element3d, { kind: 'plane-reflection' }>;
+
+const signed = (e: PlaneReflection, x: number, y: number, z: number): number => {
+  const [qx, qy, qz] = e.plane.point;
+  const [nx, ny, nz] = e.plane.normal;
+  return (x - qx) * nx + (y - qy) * ny + (z - qz) * nz;
+};
+
+export const planeReflection: ElementRecord3d<PlaneReflection> = {
+  kind: 'plane-reflection',
+  inversionsPerStep: 0,
+  cpu: {
+    step(e, st) {
+      const sd = signed(e, st.x, st.y, st.z);
+      if (!(sd < 0)) return false;
+      const [nx, ny, nz] = e.plane.normal;
+      st.x -= 2 * sd * nx;
+      st.y -= 2 * sd * ny;
+      st.z -= 2 * sd * nz;
+      st.depth += 1;
+      return true;
+    },
+    regionDistance: (e, x, y, z) => Math.max(0, signed(e, x, y, z)),
+  },
+  glsl: {
+    vec4s: 1,
+    pack: (e) => {
+      const [qx, qy, qz] = e.plane.point;
+      const [nx, ny, nz] = e.plane.normal;
+      return [nx, ny, nz, -(qx * nx + qy * ny + qz * nz)];
+    },
+    step: () =>
+      `
+float sd = dot(p, d0.xyz) + d0.w;
+if (sd < 0.0) {
+  p -= (2.0 * sd) * d0.xyz;
+  depth += 1;
+  continue;
+}`.trim(),
+    regionDistance: glslFunction(
+      'planeReflectionRegionDistance',
+      `
+float planeReflectionRegionDistance(vec3 p, vec4 d0) {
+  return max(0.0, dot(p, d0.xyz) + d0.w);
+}`,
+    ),
+    deps: [],
+  },
+};

@@ -1,0 +1,152 @@
+/**
+ * The GLSL walk, twin of ../walk.ts (docs/math-3d.md §7): the IIS loop with one straight-line
+ * block per element (its kind's step, no runtime switch), a fixed-size per-ray stack of inversion
+ * records `vec4(local, r², far, reach)`, and the fold of the bound back through it. Emitted twice:
+ * `walkRecord` (with the stack; returns the safe DE) and `walkPlain` (the seed-image distance only,
+ * for normals and occlusion). Both write info = (seed-image distance, depth, seed, factor) and the
+ * final point. Element, content-ball and seed data live in `u_el` rows (or literals when baked),
+ * copied into locals first (SwiftShader reloads uniform arrays read inside a loop).
+ */
+import type { Scene3d } from '../../../nodes/core/scene-3d.ts';
+import { GLSL_FAR } from '../../glsl/iis.glsl.ts';
+import { intLiteral } from '../../glsl/literal.ts';
+import type { GlslFunction } from '../../glsl/snippet.ts';
+import type { SourceBuilder } from '../../glsl/source.ts';
+import { ELEMENT_ARRAY, type SceneValues } from '../../glsl/values.ts';
+import type { ElementRecord3d } from '../elements/element-3d-kind.ts';
+import { ballDistanceGlsl } from '../elements/sphere-inversion.ts';
+import { STACK_CAPACITY, type TracePlan } from '../plan.ts';
+import { packSeed, seedDistanceGlsl } from '../seeds-3d.ts';
+
+export interface PlacedWalk {
+  readonly plan: TracePlan;
+  readonly elements: readonly {
+    readonly record: ElementRecord3d;
+    readonly rows: readonly string[];
+    /** Content-ball row (c, r) and (reach, 0, 0, 0), for sphere inversions of all-inversion scenes. */
+    readonly hull: readonly [string, string] | null;
+  }[];
+  /** Two rows per seed. */
+  readonly seeds: readonly (readonly [string, string])[];
+  readonly maxIter: string;
+}
+
+/** Places every element's, content ball's and seed's data (uniform rows or literals). */
+export function placeWalk(plan: TracePlan, v: SceneValues): PlacedWalk {
+  const scene: Scene3d = plan.scene;
+  const elements = scene.elements.map((e, i) => {
+    const record = plan.records[i]!;
+    const data = record.glsl.pack(e as never);
+    if (data.length !== 4 * record.glsl.vec4s)
+      throw new Error(`${record.kind} packed ${data.length} numbers`);
+    const rows = v.elementRows(data);
+    const h = plan.hulls[i];
+    const hull = h
+      ? (v.elementRows([...h.center, h.radius, plan.reach[i]!, 0, 0, 0]) as [string, string])
+      : null;
+    return { record, rows, hull };
+  });
+  const seeds = scene.seeds.map((s) => v.elementRows(packSeed(s)) as [string, string]);
+  return { plan, elements, seeds, maxIter: v.int('u_maxIterations', scene.maxIterations) };
+}
+
+/** The functions the walk calls. */
+export function walkFunctions(placed: PlacedWalk): GlslFunction[] {
+  return [
+    seedDistanceGlsl,
+    ballDistanceGlsl,
+    ...placed.elements.flatMap(({ record }) => [...record.glsl.deps, record.glsl.regionDistance]),
+  ];
+}
+
+const UNIFORM_ROW = new RegExp(`^${ELEMENT_ARRAY}\\[(\\d+)\\]$`);
+/** The local holding a row: `el<N>` for `u_el[N]`, the literal itself when baked. */
+const local = (expr: string): string => {
+  const m = UNIFORM_ROW.exec(expr);
+  return m ? `el${m[1]}` : expr;
+};
+
+/** min over seeds of seedDistance(p) (GLSL_FAR without seeds). */
+const seedsMin = (placed: PlacedWalk): string =>
+  placed.seeds.length === 0
+    ? GLSL_FAR
+    : placed.seeds
+        .map(([a, b]) => `seedDistance(p, ${local(a)}, ${local(b)})`)
+        .reduce((acc, e) => `min(${acc}, ${e})`);
+
+/** min(max(0, seeds), cover_j for j ≠ skip): ../walk.ts coverDistance. */
+function coverExpr(placed: PlacedWalk, skip: number): string {
+  let expr = `max(0.0, ${seedsMin(placed)})`;
+  placed.elements.forEach(({ record, rows, hull }, j) => {
+    if (j === skip) return;
+    const region = `${record.glsl.regionDistance.name}(p, ${rows.map(local).join(', ')})`;
+    const cover = hull ? `max(${region}, ballDistance(p, ${local(hull[0])}))` : region;
+    expr = `min(${expr}, ${cover})`;
+  });
+  return expr;
+}
+
+/**
+ * `float walk<Name>(vec3 start, out vec4 info, out vec3 fin)`. Recording: the loop also stops when
+ * the stack could not take another application, and the function returns the folded bound.
+ */
+export function emitWalk(out: SourceBuilder, placed: PlacedWalk, record: boolean): void {
+  const { plan } = placed;
+  const rows = [
+    ...placed.elements.flatMap((e) => [...e.rows, ...(e.hull ?? [])]),
+    ...placed.seeds.flatMap((s) => [...s]),
+  ];
+  const hoisted = rows.filter((r) => local(r) !== r).map((r) => `  vec4 ${local(r)} = ${r};`);
+  const literalLimit = /^\d+$/.test(placed.maxIter);
+  const limit = literalLimit ? placed.maxIter : 'maxIter';
+  const room = intLiteral(STACK_CAPACITY - plan.maxRecordsPerStep);
+  out.push(
+    `float walk${record ? 'Record' : 'Plain'}(vec3 start, out vec4 info, out vec3 fin) {`,
+    ...hoisted,
+    ...(literalLimit ? [] : [`  int maxIter = ${placed.maxIter};`]),
+    '  vec3 p = start;',
+    '  float s = 1.0;',
+    '  int depth = 0;',
+    ...(record ? [`  vec4 stack[${intLiteral(STACK_CAPACITY)}];`, '  int top = 0;'] : []),
+    `  for (; depth < ${limit}${record ? ` && top <= ${room}` : ''};) {`,
+  );
+  placed.elements.forEach(({ record: kind, rows: data, hull }, i) => {
+    const push = (r2: string, far: string) =>
+      record
+        ? `stack[top] = vec4(${hull ? coverExpr(placed, i) : GLSL_FAR}, ${r2}, ${far}, ${hull ? `${local(hull[1])}.x` : GLSL_FAR});\ntop += 1;`
+        : '';
+    out.block(i + 1, [
+      `    { // ${kind.kind}`,
+      ...data.map((expr, k) => `      vec4 d${k} = ${local(expr)};`),
+      ...kind.glsl
+        .step(push)
+        .split('\n')
+        .map((line) => `      ${line}`),
+      '    }',
+    ]);
+  });
+  out.push('    break;', '  }');
+  if (placed.seeds.length === 0) out.push(`  float sd = ${GLSL_FAR};`, '  int seed = -1;');
+  else {
+    const [a0, b0] = placed.seeds[0]!;
+    out.push(`  float sd = seedDistance(p, ${local(a0)}, ${local(b0)});`, '  int seed = 0;');
+    placed.seeds.slice(1).forEach(([a, b], k) => {
+      out.push(
+        `  float sd${k + 1} = seedDistance(p, ${local(a)}, ${local(b)});`,
+        `  if (sd${k + 1} < sd) { sd = sd${k + 1}; seed = ${k + 1}; }`,
+      );
+    });
+  }
+  out.push('  info = vec4(sd / s, float(depth), float(seed), s);', '  fin = p;');
+  if (record) {
+    out.push(
+      `  float de = ${coverExpr(placed, -1)};`,
+      '  for (int k = top - 1; k >= 0; --k) {',
+      '    vec4 r = stack[k];',
+      '    de = min(r.x, r.y * (de / (r.z * min(r.w, r.z + de))));',
+      '  }',
+      '  return de;',
+    );
+  } else out.push('  return 0.0;');
+  out.push('}');
+}

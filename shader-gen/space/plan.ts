@@ -1,0 +1,224 @@
+/**
+ * What the sphere tracer needs beyond the Scene3d, computed once per scene (CPU, in float64) and
+ * used by both twins — the CPU walk reads it, the GLSL generator uploads it: the element records,
+ * the content balls and reaches of the disjoint-inversion bound, the scene's bounding ball and
+ * the problems to report (seeds outside the fundamental domain). docs/math-3d.md §7.
+ */
+import type { Element3d, Scene3d } from '../../nodes/core/scene-3d.ts';
+import { invertSphere, type Sphere } from '../../nodes/geometry/space/sphere.ts';
+import { add3, dist3, scale3, sub3, type Vec3 } from '../../nodes/geometry/space/vec3.ts';
+import type { ElementRecord3d, Walk3dState } from './elements/element-3d-kind.ts';
+import { elementRecord3d } from './elements/index.ts';
+import { seedBall } from './seeds-3d.ts';
+
+/** Inversion records a ray's stack holds (docs/math-3d.md §7): the walk stops when it is full. */
+export const STACK_CAPACITY = 64;
+/** Rounds of the content-ball refinement (each one is a valid cover; more only tightens). */
+const HULL_ROUNDS = 6;
+/** An unbounded orbit (plane mirrors, outside regions) is traced this many scene radii beyond its centre. */
+export const UNBOUNDED_REACH = 24;
+
+export interface TraceProblem {
+  readonly nodeId: string;
+  readonly message: string;
+}
+
+export interface TracePlan {
+  readonly scene: Scene3d;
+  readonly records: readonly ElementRecord3d[];
+  /**
+   * Per element: a ball holding every orbit point inside a sphere inversion's ball (its content
+   * ball, docs/math-3d.md §7); null for the other kinds, whose regions themselves are the cover.
+   */
+  readonly hulls: readonly (Sphere | null)[];
+  /**
+   * Per element: M_i ≥ |y − c_i| for every orbit point y outside inversion sphere i (finite when
+   * every element is a sphere inversion); ∞ otherwise.
+   */
+  readonly reach: readonly number[];
+  /** Every element a sphere inversion, closed balls pairwise disjoint, seeds outside them (Fig. 11). */
+  readonly disjoint: boolean;
+  /** The most inversion records one application pushes. */
+  readonly maxRecordsPerStep: number;
+  /** A ball holding the orbit (bounded) or the finite part of the scene (unbounded). */
+  readonly bounds: Sphere;
+  readonly bounded: boolean;
+  readonly problems: readonly TraceProblem[];
+}
+
+const gap = (a: Sphere, b: Sphere): number => dist3(a.center, b.center) - a.radius - b.radius;
+
+/** Rounds of the Bădoiu–Clarkson walk towards the smallest enclosing ball. */
+const ENCLOSING_ROUNDS = 200;
+
+/**
+ * A ball holding `balls`, near the smallest: start at the centre of their bounding box, step
+ * towards the farthest point by 1/(k + 2) of the way (Bădoiu–Clarkson), keep the best centre;
+ * the radius is whatever reaches every ball from it (always a valid enclosing ball).
+ */
+export function enclosingBall(balls: readonly Sphere[]): Sphere {
+  const reachFrom = (c: Vec3) => Math.max(...balls.map((b) => dist3(c, b.center) + b.radius));
+  const lo = [0, 1, 2].map((k) => Math.min(...balls.map((b) => b.center[k]! - b.radius)));
+  const hi = [0, 1, 2].map((k) => Math.max(...balls.map((b) => b.center[k]! + b.radius)));
+  let c: Vec3 = [(lo[0]! + hi[0]!) / 2, (lo[1]! + hi[1]!) / 2, (lo[2]! + hi[2]!) / 2];
+  let best = { center: c, radius: reachFrom(c) };
+  for (let k = 0; k < ENCLOSING_ROUNDS; k++) {
+    let far = balls[0]!;
+    let farD = -1;
+    for (const b of balls) {
+      const d = dist3(c, b.center) + b.radius;
+      if (d > farD) [far, farD] = [b, d];
+    }
+    const toC = dist3(c, far.center);
+    const u = toC > 0 ? scale3(sub3(far.center, c), 1 / toC) : ([0, 0, 0] as Vec3);
+    const p = add3(far.center, scale3(u, far.radius));
+    c = add3(c, scale3(sub3(p, c), 1 / (k + 2)));
+    const r = reachFrom(c);
+    if (r < best.radius) best = { center: c, radius: r };
+  }
+  return best;
+}
+
+/** The image of ball b in inversion sphere m when m's centre lies outside b's closure, else null. */
+function imageBall(m: Sphere, b: Sphere): Sphere | null {
+  if (dist3(b.center, m.center) <= b.radius) return null;
+  const img = invertSphere(m, b);
+  return img.kind === 'sphere' ? img.sphere : null;
+}
+
+/** The inversion spheres when every element is one, else null. */
+const allInversions = (elements: readonly Element3d[]): Sphere[] | null =>
+  elements.every((e) => e.kind === 'sphere-inversion')
+    ? elements.map((e) => (e as Extract<Element3d, { kind: 'sphere-inversion' }>).sphere)
+    : null;
+
+function isDisjoint(mirrors: readonly Sphere[], seeds: readonly Sphere[]): boolean {
+  return mirrors.every(
+    (m, i) => mirrors.every((o, j) => j <= i || gap(m, o) > 0) && seeds.every((s) => gap(m, s) > 0),
+  );
+}
+
+/**
+ * Content balls H_i with orbit ∩ B_i ⊂ H_i ∩ B_i (docs/math-3d.md §7): start from H_i = B_i and
+ * repeat H_i ← enclosingBall(pieces), the pieces being I_i(seed ball) and, for j ≠ i, the smaller of
+ * I_i(H_j) and I_i(B_j) (both hold I_i(orbit ∩ B_j)); a round needs every piece to be a ball (c_i
+ * outside the inverted ball) and keeps the new ball only when it is smaller. Each round is a valid
+ * cover by induction: orbit ∩ B_i = I_i(orbit \ B_i) and orbit \ B_i ⊂ seeds ∪ ⋃_{j≠i} (H_j ∩ B_j).
+ */
+function contentBalls(mirrors: readonly Sphere[], seeds: readonly Sphere[]): Sphere[] {
+  let hulls = [...mirrors];
+  for (let round = 0; round < HULL_ROUNDS; round++) {
+    hulls = mirrors.map((m, i) => {
+      const pieces: Sphere[] = [];
+      for (const s of seeds) {
+        const img = imageBall(m, s);
+        if (!img) return hulls[i]!;
+        pieces.push(img);
+      }
+      for (let j = 0; j < mirrors.length; j++) {
+        if (j === i) continue;
+        const viaHull = imageBall(m, hulls[j]!);
+        const viaBall = imageBall(m, mirrors[j]!);
+        const img =
+          viaHull && viaBall ? (viaHull.radius < viaBall.radius ? viaHull : viaBall) : (viaHull ?? viaBall);
+        if (!img) return hulls[i]!;
+        pieces.push(img);
+      }
+      if (pieces.length === 0) return hulls[i]!;
+      const h = enclosingBall(pieces);
+      return h.radius < hulls[i]!.radius ? h : hulls[i]!;
+    });
+  }
+  return hulls;
+}
+
+/**
+ * M_i ≥ |y − c_i| over the orbit outside B_i ⊂ seeds ∪ ⋃_{j≠i} (H_j ∩ B_j): the largest over seed
+ * balls of |c − c_i| + r, and over j of the smaller of that for H_j and for B_j.
+ */
+function reachOf(
+  mirrors: readonly Sphere[],
+  hulls: readonly Sphere[],
+  seeds: readonly Sphere[],
+  i: number,
+): number {
+  const c = mirrors[i]!.center;
+  const far = (b: Sphere) => dist3(b.center, c) + b.radius;
+  const others = mirrors.flatMap((m, j) => (j === i ? [] : [Math.min(far(m), far(hulls[j]!))]));
+  return Math.max(0, ...seeds.map(far), ...others);
+}
+
+/** Seeds must lie in the fundamental domain: a seed's centre or ball in an element's region is reported. */
+function seedProblems(scene: Scene3d, records: readonly ElementRecord3d[]): TraceProblem[] {
+  const problems: TraceProblem[] = [];
+  scene.seeds.forEach((seed) => {
+    const ball = seedBall(seed);
+    scene.elements.forEach((e, i) => {
+      const st: Walk3dState = { x: ball.center[0], y: ball.center[1], z: ball.center[2], s: 1, depth: 0 };
+      const inside = records[i]!.cpu.step(e, st, null);
+      const reach = records[i]!.cpu.regionDistance(e, ...ball.center);
+      if (inside || reach < ball.radius) {
+        problems.push({
+          nodeId: seed.nodeId,
+          message: `the seed ${inside ? 'lies in' : 'reaches into'} the region of element ${i + 1} (${e.kind}): seeds must lie in the fundamental domain, or orbit surfaces are missed or drawn twice`,
+        });
+      }
+    });
+  });
+  return problems;
+}
+
+/** Whether every region of the element is a bounded ball (the orbit inside it is bounded). */
+function boundedRegions(e: Element3d): Sphere[] | null {
+  switch (e.kind) {
+    case 'sphere-inversion':
+      return [e.sphere];
+    case 'mobius-3d':
+      return e.g.a.inside && e.g.b.inside ? [e.g.a.sphere, e.g.b.sphere] : null;
+    case 'compound-loxodromic-3d':
+      return e.g.base.a.inside && e.g.base.b.inside ? [e.g.base.a.sphere, e.g.base.b.sphere] : null;
+    default:
+      return null;
+  }
+}
+
+/** A finite stand-in for an unbounded element: a point of it, radius 0. */
+function anchor(e: Element3d): Sphere {
+  switch (e.kind) {
+    case 'plane-reflection':
+      return { center: e.plane.point, radius: 0 };
+    case 'compound-parabolic-3d':
+      return { center: e.g.point, radius: e.g.gap };
+    case 'mobius-3d':
+      return e.g.s1;
+    case 'compound-loxodromic-3d':
+      return e.g.base.s1;
+    case 'sphere-inversion':
+      return e.sphere;
+  }
+}
+
+export function prepareTrace3d(scene: Scene3d): TracePlan {
+  const records = scene.elements.map((e) => elementRecord3d(e) as ElementRecord3d);
+  const seedBalls = scene.seeds.map(seedBall);
+  const mirrors = allInversions(scene.elements);
+  const hulls = mirrors ? contentBalls(mirrors, seedBalls) : scene.elements.map(() => null);
+  const reach = scene.elements.map((_, i) =>
+    mirrors ? reachOf(mirrors, hulls as Sphere[], seedBalls, i) : Number.POSITIVE_INFINITY,
+  );
+  const regions = scene.elements.map(boundedRegions);
+  const bounded = regions.every((r) => r !== null);
+  const finite = [...seedBalls, ...regions.flatMap((r, i) => r ?? [anchor(scene.elements[i]!)])];
+  const bounds = finite.length > 0 ? enclosingBall(finite) : { center: scene.camera.target, radius: 1 };
+  return {
+    scene,
+    records,
+    hulls,
+    reach,
+    disjoint: mirrors !== null && isDisjoint(mirrors, seedBalls),
+    maxRecordsPerStep: Math.max(0, ...records.map((r) => r.inversionsPerStep)),
+    bounds: { center: bounds.center, radius: Math.max(bounds.radius, 1e-6) },
+    bounded,
+    problems: seedProblems(scene, records),
+  };
+}

@@ -5,33 +5,14 @@
  * DOWN from its top-left corner, the way pointer events and the SVG overlay count them.
  */
 import type { Camera3d } from '../../nodes/core/scene-3d.ts';
-import {
-  add3,
-  cross3,
-  dot3,
-  len3,
-  normalize3,
-  scale3,
-  sub3,
-  type Vec3,
-} from '../../nodes/geometry/space/vec3.ts';
-
-export interface CameraBasis {
-  /** Unit vector from the position towards the target. */
-  readonly forward: Vec3;
-  /** Unit vector to the right of the picture. */
-  readonly right: Vec3;
-  /** Unit vector to the top of the picture. */
-  readonly up: Vec3;
-}
+import { add3, dot3, len3, scale3, sub3, type Vec3 } from '../../nodes/geometry/space/vec3.ts';
+import { type CameraBasis, cameraBasis, rayDirection } from '../../shader-gen/space/camera-3d.ts';
 
 export interface PaneSize {
   readonly width: number;
   readonly height: number;
 }
 
-/** The world's up: z. */
-const Z_UP: Vec3 = [0, 0, 1];
 /** Orbiting stops this far short of the poles, so "up" on screen never flips. */
 export const MAX_ELEVATION = (85 * Math.PI) / 180;
 /** Closest and farthest the camera may come to its target (world units). */
@@ -41,30 +22,21 @@ export const MAX_DISTANCE = 1e4;
 export const NEAR = 1e-4;
 
 /**
- * forward f = (target − position)/|…|, right r = f × z/|f × z|, up u = r × f. Looking straight
- * up or down (f ∥ z) has no such r: then r = f × y/|f × y| (an arbitrary but fixed choice).
+ * The camera's frame — forward f, right r, up u (docs/math-3d.md "The 3D view: camera moves and
+ * overlay projection") — is the tracer's own (shader-gen/space/camera-3d.ts), so the overlay,
+ * the drags and the picture agree to the last bit of the formula.
  */
-export function cameraBasis(camera: Camera3d): CameraBasis {
-  const forward = normalize3(sub3(camera.target, camera.position));
-  let right = cross3(forward, Z_UP);
-  if (len3(right) < 1e-9) right = cross3(forward, [0, 1, 0]);
-  right = normalize3(right);
-  return { forward, right, up: cross3(right, forward) };
-}
+export { type CameraBasis, cameraBasis };
 
 /** tan of half the vertical field of view: the picture's half-height at distance 1. */
 export const halfHeightAt1 = (camera: Camera3d): number => Math.tan((camera.fovDeg * Math.PI) / 360);
 
 /**
  * Unit ray direction through pane pixel (x, y) (y down): with t = tan(fov/2),
- * d ∝ f + ((2x − W)/H)·t·r + ((H − 2y)/H)·t·u.
+ * d ∝ f + ((2x − W)/H)·t·r + ((H − 2y)/H)·t·u — the tracer's ray through (x, H − y).
  */
 export function rayThrough(camera: Camera3d, pane: PaneSize, x: number, y: number): Vec3 {
-  const { forward, right, up } = cameraBasis(camera);
-  const t = halfHeightAt1(camera);
-  const sx = ((2 * x - pane.width) / pane.height) * t;
-  const sy = ((pane.height - 2 * y) / pane.height) * t;
-  return normalize3(add3(forward, add3(scale3(right, sx), scale3(up, sy))));
+  return rayDirection(cameraBasis(camera), pane.width, pane.height, x, pane.height - y);
 }
 
 export interface Projected {

@@ -7,7 +7,7 @@
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import type { CompiledProgram, CompileOptions } from '../../shader-gen/compile.ts';
 import type { UniformEntry } from '../../shader-gen/glsl/values.ts';
-import { type Drawable, generateProgram as generate } from './drawable.ts';
+import { type Drawable, generateProgram as generate, is3d } from './drawable.ts';
 import { type PendingBuild, programKey } from './program-cache.ts';
 import type { Renderer } from './renderer.ts';
 import type { GpuProgram } from './uniforms.ts';
@@ -25,6 +25,15 @@ export type SceneChange = 'same' | 'values' | 'code';
 
 const UNIFORM: CompileOptions = { variant: 'color' };
 const BAKED: CompileOptions = { variant: 'color', baked: true };
+
+/**
+ * Whether a scene gets the baked program (idle bake, export). Not a 3D one: its camera is a frame
+ * uniform, so the picture converges on the uniform program before a bake would be due, and the
+ * sphere tracer's baked program is far costlier to build — in SwiftShader about 20 s of a blocked
+ * page to compile and as long again to link (the uniform program draws a sample in about 60 ms
+ * at 200 × 350 px), frozen again after every edit.
+ */
+const bakes = (scene: Drawable): boolean => !is3d(scene);
 
 function sameUniforms(a: readonly UniformEntry[], b: readonly UniformEntry[]): boolean {
   if (a.length !== b.length) return false;
@@ -53,6 +62,8 @@ export class SceneProgramBuilder {
     done: boolean;
   } | null = null;
   private reported: string | null = null;
+  /** Whether the last applied scene is one that bakes (see `bakes`). */
+  private bakeable = true;
   private compilesBefore = 0;
   private bakedBefore = 0;
 
@@ -60,6 +71,7 @@ export class SceneProgramBuilder {
 
   /** Takes `scene`: compiles only when its generated source is new to the cache. */
   apply(renderer: Renderer, scene: Drawable, now: number): SceneChange {
+    this.bakeable = bakes(scene);
     const compiled = generate(scene, UNIFORM);
     if (Array.isArray(compiled)) {
       this.fail(compiled);
@@ -135,16 +147,16 @@ export class SceneProgramBuilder {
 
   /** Milliseconds until the bake is due (0: now), or null when there is nothing to bake. */
   bakeDueIn(now: number, idleMs: number): number | null {
-    if (!this.program || !Number.isFinite(idleMs)) return null;
+    if (!this.program || !this.bakeable || !Number.isFinite(idleMs)) return null;
     if (this.bake && this.bake.version === this.version && this.bake.done) return null;
     if (this.bake && this.bake.version === this.version) return 0;
     return Math.max(0, this.changedAt + idleMs - now);
   }
 
-  /** For export: the baked program of `scene` (built now), else its uniform program. */
+  /** For export: the baked program of `scene` (built now) where it bakes, else its uniform program. */
   exportProgram(renderer: Renderer, scene: Drawable): SceneProgram {
     const problems: Diagnostic[] = [];
-    for (const options of [BAKED, UNIFORM]) {
+    for (const options of bakes(scene) ? [BAKED, UNIFORM] : [UNIFORM]) {
       const compiled = generate(scene, options);
       if (Array.isArray(compiled)) {
         problems.push(...compiled);

@@ -25,7 +25,12 @@ const NO_NOTES: Readonly<Record<string, string>> = {};
 
 /** The evaluation without its handles: the overlay still draws, but nothing can be dragged. */
 function readOnly(evaluation: Evaluation): Evaluation {
-  return { ...evaluation, scene: { ...evaluation.scene, handles: [] } };
+  const { scene3d } = evaluation;
+  return {
+    ...evaluation,
+    scene: { ...evaluation.scene, handles: [] },
+    scene3d: scene3d && { ...scene3d, handles: [] },
+  };
 }
 
 interface Props {

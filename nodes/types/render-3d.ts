@@ -98,7 +98,7 @@ export const render3dNode = defineNode({
     b: colour(toHex(DEFAULT_COLORING.b), 'b (swing)'),
     c: colour(toHex(DEFAULT_COLORING.c), 'c (frequency)'),
     d: colour(toHex(DEFAULT_COLORING.d), 'd (phase)'),
-    light: point3Input('light direction', lx, ly, lz, 'direction towards the light'),
+    light: { ...point3Input('light direction', lx, ly, lz, 'direction towards the light'), more: true },
     ambient: setting('ambient', DEFAULT_LIGHTING_3D.ambient, '0…1', true),
     diffuse: setting('diffuse', DEFAULT_LIGHTING_3D.diffuse, '0…1', true),
     specular: setting('specular', DEFAULT_LIGHTING_3D.specular, '0…1', true),

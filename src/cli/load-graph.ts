@@ -162,6 +162,10 @@ const noRender = (path: string) =>
 /** For commands that need a picture of the plane (render, sample, glsl): see loadChecked. */
 export async function loadScene(io: CliIo, path: string): Promise<GraphLoad & { scene: Scene }> {
   const load = await loadChecked(io, path);
+  if (load.evaluation.scene3d)
+    throw new CliError(
+      `"${path}" is a 3D graph (its render node is Render 3D): this command works on 2D graphs`,
+    );
   if (load.evaluation.scene.renderNodeId === null) throw noRender(path);
   return { ...load, scene: load.evaluation.scene };
 }

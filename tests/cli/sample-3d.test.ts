@@ -119,4 +119,13 @@ describe('kleinflow sample, 3D graph', () => {
     expect(r.stderr.trim().split('\n')).toHaveLength(1);
     expect(r.stderr).toMatch(message);
   });
+
+  it('a 2D-only command refuses a 3D graph in one line instead of saying it has no render node', () => {
+    const r = runCli(['svg', FIG11, '--out', join(dir, 'x.svg')]);
+    expect(r.status).toBe(1);
+    expect(r.stderr.trim().split('\n')).toHaveLength(1);
+    expect(r.stderr).toMatch(
+      /is a 3D graph \(its render node is Render 3D\): this command works on 2D graphs/,
+    );
+  });
 });

@@ -2,13 +2,13 @@
  * The editor end to end in real Chromium (SwiftShader WebGL2): the app is built once with Vite,
  * served with `vite preview`, and driven with the mouse and keyboard like a person would.
  */
-import { mkdirSync, readFileSync } from 'node:fs';
+import { existsSync, mkdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { BrowserContext, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
 import { registry } from '../../nodes/types/index.ts';
-import { exampleNames, examplePath } from '../../src/cli/examples.ts';
+import { EXAMPLES_3D_DIR, EXAMPLES_THUMB_DIR, exampleNames, examplePath } from '../../src/cli/examples.ts';
 import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
 import {
   addNode,
@@ -30,9 +30,16 @@ let context: BrowserContext;
 let page: Page;
 const problems: string[] = [];
 
-const exampleTitles = exampleNames().map(
-  (name) => JSON.parse(readFileSync(examplePath(name), 'utf8')).meta?.title as string,
-);
+const titleOf = (name: string, dir?: string) =>
+  JSON.parse(readFileSync(examplePath(name, dir), 'utf8')).meta?.title as string;
+const exampleTitles = exampleNames().map((name) => titleOf(name));
+/** The 3D examples are in the gallery too (their thumbnails come from the 3D renderer). */
+const examples3d = exampleNames(EXAMPLES_3D_DIR);
+const galleryTitles = [...exampleTitles, ...examples3d.map((name) => titleOf(name, EXAMPLES_3D_DIR))];
+/** Every 2D example has a thumbnail (tests/examples/thumbnails.test.ts); 3D ones once rendered. */
+const thumbCount =
+  exampleTitles.length +
+  examples3d.filter((name) => existsSync(join(EXAMPLES_THUMB_DIR, `${name}.png`))).length;
 
 beforeAll(async () => {
   app = await serveApp();
@@ -67,11 +74,12 @@ describe('editor', () => {
     await openGallery();
     const cards = gallery.locator('.kf-gallery__card');
     const listed = await cards.locator('strong').allTextContents();
-    expect(listed.sort()).toEqual([...exampleTitles].sort());
+    expect(listed.sort()).toEqual([...galleryTitles].sort());
     expect(await gallery.getByRole('heading', { name: 'Kaleidoscopes' }).isVisible()).toBe(true);
-    // Every card has a thumbnail that actually loaded.
+    expect(await gallery.getByRole('heading', { name: '3D' }).isVisible()).toBe(true);
+    // Every card with a thumbnail shows it, loaded.
     const thumbs = gallery.locator('.kf-gallery__card img');
-    expect(await thumbs.count()).toBe(exampleTitles.length);
+    expect(await thumbs.count()).toBe(thumbCount);
     await expect
       .poll(() => thumbs.evaluateAll((imgs) => imgs.every((i) => (i as HTMLImageElement).naturalWidth > 0)))
       .toBe(true);

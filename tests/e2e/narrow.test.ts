@@ -11,12 +11,15 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { repoRoot, type ServedApp, serveDevApp } from './app-server.ts';
 
 const shots = join(repoRoot, 'test-artifacts');
-const EXAMPLE_TITLES = readdirSync(join(repoRoot, 'examples'))
-  .filter((f) => f.endsWith('.kleinflow.json'))
-  .map((f) => {
-    const doc = JSON.parse(readFileSync(join(repoRoot, 'examples', f), 'utf8'));
-    return (doc.meta?.title as string | undefined) ?? f.replace(/\.kleinflow\.json$/, '');
-  });
+/** The gallery's examples: examples/ and the 3D ones in examples/3d/. */
+const EXAMPLE_TITLES = ['examples', 'examples/3d'].flatMap((dir) =>
+  readdirSync(join(repoRoot, dir))
+    .filter((f) => f.endsWith('.kleinflow.json'))
+    .map((f) => {
+      const doc = JSON.parse(readFileSync(join(repoRoot, dir, f), 'utf8'));
+      return (doc.meta?.title as string | undefined) ?? f.replace(/\.kleinflow\.json$/, '');
+    }),
+);
 const COMMANDS = [
   'Examples',
   'New',

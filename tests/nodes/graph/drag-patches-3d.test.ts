@@ -8,7 +8,7 @@ import { describe, expect, it } from 'vitest';
 import type { Vec3 } from '../../../nodes/core/scene-3d.ts';
 import { dist3, normalize3, sub3 } from '../../../nodes/geometry/space/vec3.ts';
 import type { GraphDoc } from '../../../nodes/graph/document.ts';
-import type { NodePatch } from '../../../nodes/graph/drag-patches.ts';
+import { type NodePatch, originalParams } from '../../../nodes/graph/drag-patches.ts';
 import { dragPatches3d } from '../../../nodes/graph/drag-patches-3d.ts';
 import { allFinite, evaluateGraph } from '../../../nodes/graph/evaluate.ts';
 import { registry } from '../../../nodes/types/index.ts';
@@ -73,15 +73,19 @@ describe('dragPatches3d', () => {
             // A point on the sphere: the new radius is the distance dropped at.
             expect(dist3(at, newCentre!)).toBeCloseTo(dist3(to, centre!.at), 9);
           } else if (handle.endsWith('corner')) {
-            sub3(at, newCentre!).forEach((v, i) =>
-              expect(v).toBeCloseTo(Math.abs(to[i]! - centre!.at[i]!), 9),
-            );
+            sub3(at, newCentre!).forEach((v, i) => {
+              expect(v).toBeCloseTo(Math.abs(to[i]! - centre!.at[i]!), 9);
+            });
           } else if (handle.endsWith('.normal')) {
             // An inline plane's normal is stored unit: the handle points where it was dropped.
             const want = normalize3(sub3(to, centre!.at));
-            sub3(at, newCentre!).forEach((v, i) => expect(v).toBeCloseTo(want[i]!, 9));
+            sub3(at, newCentre!).forEach((v, i) => {
+              expect(v).toBeCloseTo(want[i]!, 9);
+            });
           } else {
-            at.forEach((v, i) => expect(v).toBeCloseTo(to[i]!, 9));
+            at.forEach((v, i) => {
+              expect(v).toBeCloseTo(to[i]!, 9);
+            });
           }
         }),
         { ...SEED, numRuns: 60 },
@@ -119,6 +123,19 @@ describe('dragPatches3d', () => {
     ]);
   });
 
+  it('restores the values before a drag (Escape), defaults included', () => {
+    const d = withRender(node('m', 'sphere-inversion'), [], [node('p', 'point-3d', { x: 2 })]);
+    const ev = evaluateGraph(d, registry);
+    const moved = [
+      ...dragPatches3d(ev, { nodeId: 'm', handle: 'sphere.center' }, [1, 1, 1]),
+      ...dragPatches3d(ev, { nodeId: 'p', handle: 'point' }, [3, 4, 5]),
+    ];
+    expect(originalParams(ev, moved)).toEqual([
+      { nodeId: 'm', params: { sphere: { center: [0, 0, 0], radius: 1 } } },
+      { nodeId: 'p', params: { x: 2, y: 0, z: 0 } },
+    ]);
+  });
+
   it('forwards a wired plane through its point and normal handles', () => {
     const d = withRender(
       node('m', 'plane-reflection'),
@@ -138,7 +155,7 @@ describe('dragPatches3d', () => {
 /** Finite numbers of every size a user might type, including the awkward ones. */
 const num = fc.oneof(real(-10, 10), real(-1e6, 1e6), fc.constantFrom(0, 1e-12, -1e-12, 1e6, -1));
 const vec = fc.tuple(num, num, num);
-const valueOf: Record<string, fc.Arbitrary<unknown>> = {
+const arbitraryOf: Record<string, fc.Arbitrary<unknown>> = {
   number: num,
   point3: vec,
   sphere: fc.record({ center: vec, radius: num }),
@@ -150,8 +167,8 @@ describe('3D evaluation with random finite parameters', () => {
 
   it.each(types.map((d) => d.type))('%s never yields NaN or an internal error (property)', (type) => {
     const def = registry.get(type)!;
-    const inputs = Object.entries(def.inputs).filter(([, s]) => valueOf[s.type]);
-    const params = fc.record(Object.fromEntries(inputs.map(([k, s]) => [k, valueOf[s.type]!])));
+    const inputs = Object.entries(def.inputs).filter(([, s]) => arbitraryOf[s.type]);
+    const params = fc.record(Object.fromEntries(inputs.map(([k, s]) => [k, arbitraryOf[s.type]!])));
     fc.assert(
       fc.property(params, (p) => {
         const ev = evaluateGraph(withRender(node('n', type, p)), registry);

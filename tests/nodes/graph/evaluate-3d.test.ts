@@ -139,4 +139,23 @@ describe('evaluate: render-3d', () => {
     expect(r.diagnostics[0]).toMatchObject({ code: 'KF301', port: key, path: `nodes[0].params.${key}` });
     expect(r.diagnostics[0]!.message).toMatch(message);
   });
+
+  it('counts render-3d as the render node: no KF210 alone; with a 2D render, the first by id is drawn', () => {
+    const alone = evaluateGraph(
+      doc([node('s', 'seed-sphere'), node('r', 'render-3d')], [edge('e', 's.seed', 'r.seeds')]),
+      registry,
+    );
+    expect(alone.diagnostics.map((d) => d.code)).not.toContain('KF210');
+    const both = (id3: string) =>
+      evaluateGraph(doc([node('b2', 'render'), node(id3, 'render-3d')]), registry);
+    const first3d = both('a3');
+    expect(first3d.scene3d?.renderNodeId).toBe('a3');
+    expect(first3d.scene.renderNodeId).toBeNull();
+    expect(first3d.diagnostics.find((d) => d.code === 'KF211')?.message).toBe(
+      'several render nodes; "a3" (first by id) is drawn',
+    );
+    const first2d = both('c3');
+    expect(first2d.scene3d).toBeNull();
+    expect(first2d.scene.renderNodeId).toBe('b2');
+  });
 });

@@ -128,7 +128,9 @@ describe('compound-parabolic-3d', () => {
     const moved = stepElement3d(r.element!, [1, 0, -2])!;
     // x + 2h·n = (1, 0, 2), then turned 90° about the z axis through (0, 0, −1).
     const want: Vec3 = [0, 1, 2];
-    moved.x.forEach((v, i) => expect(v).toBeCloseTo(want[i]!, 12));
+    moved.x.forEach((v, i) => {
+      expect(v).toBeCloseTo(want[i]!, 12);
+    });
     expect(stepElement3d(r.element!, [1, 0, 0])).toBeNull(); // in the slab
   });
 

@@ -97,6 +97,45 @@ describe('sphere-4pt', () => {
   });
 });
 
+describe('sphere-4pt through P, its inverses and Q', () => {
+  const s1: Sphere = { center: [-1.5, 0, 0], radius: 1 };
+  const s2: Sphere = { center: [1.5, 0, 0], radius: 1 };
+
+  it('passes through P and Q at right angles to S1 and S2 (property)', () => {
+    fc.assert(
+      fc.property(point3, point3, (p, q) => {
+        const r = alone('sphere-4pt', { mode: 'inverses', s1, s2, p, q });
+        const s = r.outputs?.sphere as Sphere | undefined;
+        if (!s) {
+          expect(r.messages[0]).toMatch(/^KF303 (Sphere\(P, P′, P″, Q\)|the control point P)/);
+          return;
+        }
+        fc.pre(s.radius < 1e3);
+        for (const x of [p, q]) expect(dist3(x, s.center) / s.radius).toBeCloseTo(1, 6);
+        // Orthogonal: |c − c_i|² = r² + r_i² (docs/math-3d.md §1).
+        for (const b of [s1, s2])
+          expect(dist3(s.center, b.center) ** 2 / (s.radius ** 2 + 1)).toBeCloseTo(1, 6);
+      }),
+      SEED,
+    );
+  });
+
+  it('refuses P on the line of the centres (P, P′, P″ and Q then lie in one plane)', () => {
+    const r = alone('sphere-4pt', { mode: 'inverses', s1, s2, p: [0, 0, 0], q: [0, 1, 1] });
+    expect(r.messages[0]).toMatch(/^KF303 Sphere\(P, P′, P″, Q\): the four points are coplanar/);
+  });
+
+  it('offers P and Q as handles in this mode, a–d otherwise', () => {
+    const handles = (mode: string) =>
+      evaluateGraph(
+        doc([node('n', 'sphere-4pt', { mode }), node('r', 'render-3d', { camera: [50, 50, 50] })]),
+        registry,
+      ).scene3d!.handles.map((h) => h.handle);
+    expect(handles('inverses')).toEqual(['p', 'q']);
+    expect(handles('four-points')).toEqual(['a', 'b', 'c', 'd']);
+  });
+});
+
 describe('plane', () => {
   it('normalises the normal, which points to the kept side', () => {
     const p = alone('plane', { point: [0, 0, 1], normal: [0, 0, 5] }).outputs?.plane as Plane;
@@ -124,7 +163,9 @@ describe('plane', () => {
           const p = alone('plane', { point: q, normal: n }).outputs?.plane as Plane;
           expect(Math.hypot(...p.normal)).toBeCloseTo(1, 12);
           const l = Math.hypot(...n);
-          p.normal.forEach((v, i) => expect(v).toBeCloseTo(n[i]! / l, 12));
+          p.normal.forEach((v, i) => {
+            expect(v).toBeCloseTo(n[i]! / l, 12);
+          });
         },
       ),
       SEED,

@@ -1,5 +1,5 @@
 /**
- * Scene3d → one GLSL ES 3.00 sphere-tracing fragment shader (docs/math-3d.md §7–§8), the 3D twin of
+ * Scene3d → one GLSL ES 3.00 sphere-tracing fragment shader (docs/math-3d.md "§8 The tracer's distance bound", docs/math-3d.md "§9 The sphere tracer: march, hit, shading"), the 3D twin of
  * shader-gen/compile.ts. The source depends only on the scene's STRUCTURE — the element kinds in
  * order, the number of seeds, the colouring mode, whether every element is a sphere inversion —
  * and every value (positions, radii, colours, lighting, iteration and march budgets, bounds)
@@ -32,7 +32,7 @@ import { sampleOffsetGlsl } from '../glsl/view.glsl.ts';
 import { cameraRayGlsl } from './camera-3d.ts';
 import { backgroundGlsl, shadeGlsl, traceGlsl } from './glsl/trace.glsl.ts';
 import { emitWalk, placeWalk, walkFunctions } from './glsl/walk.glsl.ts';
-import { prepareTrace3d, type TraceProblem } from './plan.ts';
+import { prepareTrace3d } from './plan.ts';
 
 export type Variant3d = 'color' | 'probe';
 
@@ -48,8 +48,6 @@ export interface Compiled3d {
   readonly vertexSource: string;
   /** Scene values to upload (empty when baked); sorted by name. */
   readonly uniforms: UniformEntry[];
-  /** What the tracer cannot draw faithfully (e.g. a seed outside the fundamental domain), by node. */
-  readonly problems: readonly TraceProblem[];
 }
 
 export const FRAME_UNIFORMS_3D = [
@@ -109,7 +107,7 @@ function emitScene(
       '',
     );
   };
-  return { plan, emitFunctions };
+  return { emitFunctions };
 }
 
 export function compile3d(scene: Scene3d, options: Compile3dOptions = {}): Compiled3d {
@@ -117,7 +115,7 @@ export function compile3d(scene: Scene3d, options: Compile3dOptions = {}): Compi
   const v = new SceneValues(options.bake ?? false);
   const out = new SourceBuilder();
   // Registers the scene's uniforms in v; the text comes after the header.
-  const { plan, emitFunctions } = emitScene(out, scene, v, variant);
+  const { emitFunctions } = emitScene(out, scene, v, variant);
   const uniforms = v.entries();
   out.push('#version 300 es', ...HEADER, '', '// Frame uniforms (set by the runtime).');
   for (const u of FRAME_UNIFORMS_3D) out.push(`uniform ${u.type} ${u.name}; // ${u.doc}`);
@@ -136,7 +134,7 @@ export function compile3d(scene: Scene3d, options: Compile3dOptions = {}): Compi
     `  ${variant === 'color' ? 'outColor' : 'outProbe'} = renderSample(px + u_jitter, u_resolution, u_cameraPosition, u_cameraTarget, u_cameraFov, u_bgAlpha);`,
     '}',
   );
-  return { source: out.toString(), vertexSource: VERTEX_SOURCE, uniforms, problems: plan.problems };
+  return { source: out.toString(), vertexSource: VERTEX_SOURCE, uniforms };
 }
 
 /**

@@ -1,34 +1,30 @@
 /**
  * What the sphere tracer needs beyond the Scene3d, computed once per scene (CPU, in float64) and
  * used by both twins — the CPU walk reads it, the GLSL generator uploads it: the element records,
- * the content balls and reaches of the disjoint-inversion bound, the scene's bounding ball and
- * the problems to report (seeds outside the fundamental domain). docs/math-3d.md §7.
+ * the content balls and reaches of the bound, and the scene's bounding ball (docs/math-3d.md "§8 The tracer's distance bound").
+ * The bound assumes the seeds lie in the fundamental domain; the render-3d node warns when one does
+ * not (KF314, docs/math-3d.md §7).
  */
 import type { Element3d, Scene3d } from '../../nodes/core/scene-3d.ts';
 import { invertSphere, type Sphere } from '../../nodes/geometry/space/sphere.ts';
 import { add3, dist3, scale3, sub3, type Vec3 } from '../../nodes/geometry/space/vec3.ts';
-import type { ElementRecord3d, Walk3dState } from './elements/element-3d-kind.ts';
+import type { ElementRecord3d } from './elements/element-3d-kind.ts';
 import { elementRecord3d } from './elements/index.ts';
 import { seedBall } from './seeds-3d.ts';
 
-/** Inversion records a ray's stack holds (docs/math-3d.md §7): the walk stops when it is full. */
+/** Inversion records a ray's stack holds (docs/math-3d.md "§8 The tracer's distance bound"): the walk stops when it is full. */
 export const STACK_CAPACITY = 64;
 /** Rounds of the content-ball refinement (each one is a valid cover; more only tightens). */
 const HULL_ROUNDS = 6;
 /** An unbounded orbit (plane mirrors, outside regions) is traced this many scene radii beyond its centre. */
 export const UNBOUNDED_REACH = 24;
 
-export interface TraceProblem {
-  readonly nodeId: string;
-  readonly message: string;
-}
-
 export interface TracePlan {
   readonly scene: Scene3d;
   readonly records: readonly ElementRecord3d[];
   /**
    * Per element: a ball holding every orbit point inside a sphere inversion's ball (its content
-   * ball, docs/math-3d.md §7); null for the other kinds, whose regions themselves are the cover.
+   * ball, docs/math-3d.md "§8 The tracer's distance bound"); null for the other kinds, whose regions themselves are the cover.
    */
   readonly hulls: readonly (Sphere | null)[];
   /**
@@ -43,7 +39,6 @@ export interface TracePlan {
   /** A ball holding the orbit (bounded) or the finite part of the scene (unbounded). */
   readonly bounds: Sphere;
   readonly bounded: boolean;
-  readonly problems: readonly TraceProblem[];
 }
 
 const gap = (a: Sphere, b: Sphere): number => dist3(a.center, b.center) - a.radius - b.radius;
@@ -99,7 +94,7 @@ function isDisjoint(mirrors: readonly Sphere[], seeds: readonly Sphere[]): boole
 }
 
 /**
- * Content balls H_i with orbit ∩ B_i ⊂ H_i ∩ B_i (docs/math-3d.md §7): start from H_i = B_i and
+ * Content balls H_i with orbit ∩ B_i ⊂ H_i ∩ B_i (docs/math-3d.md "§8 The tracer's distance bound"): start from H_i = B_i and
  * repeat H_i ← enclosingBall(pieces), the pieces being I_i(seed ball) and, for j ≠ i, the smaller of
  * I_i(H_j) and I_i(B_j) (both hold I_i(orbit ∩ B_j)); a round needs every piece to be a ball (c_i
  * outside the inverted ball) and keeps the new ball only when it is smaller. Each round is a valid
@@ -146,26 +141,6 @@ function reachOf(
   const far = (b: Sphere) => dist3(b.center, c) + b.radius;
   const others = mirrors.flatMap((m, j) => (j === i ? [] : [Math.min(far(m), far(hulls[j]!))]));
   return Math.max(0, ...seeds.map(far), ...others);
-}
-
-/** Seeds must lie in the fundamental domain: a seed's centre or ball in an element's region is reported. */
-function seedProblems(scene: Scene3d, records: readonly ElementRecord3d[]): TraceProblem[] {
-  const problems: TraceProblem[] = [];
-  scene.seeds.forEach((seed) => {
-    const ball = seedBall(seed);
-    scene.elements.forEach((e, i) => {
-      const st: Walk3dState = { x: ball.center[0], y: ball.center[1], z: ball.center[2], s: 1, depth: 0 };
-      const inside = records[i]!.cpu.step(e, st, null);
-      const reach = records[i]!.cpu.regionDistance(e, ...ball.center);
-      if (inside || reach < ball.radius) {
-        problems.push({
-          nodeId: seed.nodeId,
-          message: `the seed ${inside ? 'lies in' : 'reaches into'} the region of element ${i + 1} (${e.kind}): seeds must lie in the fundamental domain, or orbit surfaces are missed or drawn twice`,
-        });
-      }
-    });
-  });
-  return problems;
 }
 
 /** Whether every region of the element is a bounded ball (the orbit inside it is bounded). */
@@ -219,6 +194,5 @@ export function prepareTrace3d(scene: Scene3d): TracePlan {
     maxRecordsPerStep: Math.max(0, ...records.map((r) => r.inversionsPerStep)),
     bounds: { center: bounds.center, radius: Math.max(bounds.radius, 1e-6) },
     bounded,
-    problems: seedProblems(scene, records),
   };
 }

@@ -1,5 +1,5 @@
 /**
- * The CPU sphere tracer (the tested reference; glsl/trace.glsl.ts is its twin), docs/math-3d.md §8:
+ * The CPU sphere tracer (the tested reference; glsl/trace.glsl.ts is its twin), docs/math-3d.md "§9 The sphere tracer: march, hit, shading":
  * clip the ray to the scene's bounding ball (or a far distance when the orbit is unbounded); then
  * march: walk the point, hit when the seed-image distance is below the tolerance
  * ε(t) = HIT_PIXELS · a · max(t, NEAR·R) (a = angle per pixel), else advance by
@@ -10,8 +10,11 @@ import type { Vec3 } from '../../nodes/geometry/space/vec3.ts';
 import { type TracePlan, UNBOUNDED_REACH } from './plan.ts';
 import { walk3d } from './walk.ts';
 
-/** Half a pixel: hits are decided within this many pixel footprints of a seed image. */
-export const HIT_PIXELS = 0.5;
+/**
+ * Hits are decided within this many pixel footprints of a seed image: every surface is drawn this
+ * much fatter than it is (a quarter pixel: invisible, and the march still ends in a few steps).
+ */
+export const HIT_PIXELS = 0.25;
 /** ε never falls below the footprint at this fraction of the scene radius (camera inside the scene). */
 export const NEAR = 1e-3;
 

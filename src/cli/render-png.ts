@@ -1,9 +1,12 @@
 /**
  * Scene → PNG bytes on the CPU, with the graph's JSON embedded (iTXt "kleinflow") so the picture
- * reopens as its graph. Shared by `kleinflow render` and `npm run render-examples`.
+ * reopens as its graph. Shared by `kleinflow render` and `npm run render-examples`; a 3D graph is
+ * drawn by the CPU sphere tracer (shader-gen/space/render-3d.ts).
  */
 import type { Scene } from '../../nodes/core/scene.ts';
+import type { Scene3d } from '../../nodes/core/scene-3d.ts';
 import { rasterize } from '../../shader-gen/raster.ts';
+import { renderScene3d } from '../../shader-gen/space/render-3d.ts';
 import { encodePng } from '../io/png.ts';
 import { PNG_GRAPH_KEY } from './load-graph.ts';
 import { scenePictures } from './scene-pictures.ts';
@@ -24,6 +27,21 @@ export function renderScenePng(scene: Scene, graphText: string | null, request: 
     pictures: scenePictures(scene),
     width: request.width,
     height: request.height,
+    samples: request.samples,
+    onProgress: onProgress
+      ? (done) => {
+          onProgress(done);
+          return true;
+        }
+      : undefined,
+  });
+  return encodePng(image, graphText === null ? {} : { [PNG_GRAPH_KEY]: graphText });
+}
+
+/** A 3D graph's picture: the CPU sphere tracer at the graph's camera, graph embedded like 2D. */
+export function renderScene3dPng(scene: Scene3d, graphText: string | null, request: PngRequest): Uint8Array {
+  const onProgress = request.onProgress;
+  const image = renderScene3d(scene, request.width, request.height, {
     samples: request.samples,
     onProgress: onProgress
       ? (done) => {

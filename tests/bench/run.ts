@@ -16,6 +16,7 @@ const BENCHES = [
   './source.ts',
   './editor.ts',
   './animation.ts',
+  './trace3d.ts',
 ] as const;
 
 async function main(): Promise<void> {

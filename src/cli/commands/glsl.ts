@@ -2,11 +2,13 @@
  * `kleinflow glsl GRAPH [--shadertoy] [--probe] [-o FILE]`: the graph's fragment shader with every
  * value baked in (standalone GLSL ES 3.00 for WebGL2), or the Shadertoy `mainImage` version that
  * pastes into shadertoy.com unchanged. Compile notes (element or uniform limits) go to stderr.
+ * A 3D graph gives the sphere-tracing shader (shader-gen/space/compile-3d.ts).
  */
 import { compile, FRAME_UNIFORMS, shadertoySource } from '../../../shader-gen/compile.ts';
+import { compile3d, FRAME_UNIFORMS_3D, shadertoySource3d } from '../../../shader-gen/space/compile-3d.ts';
 import { expectPositionals, formatOptions, type OptionSpec, parseArgs, stringOption } from '../args.ts';
 import { type CliCommand, CliError, EXIT } from '../command.ts';
-import { fileErrorMessage, formatDiagnostic, loadScene } from '../load-graph.ts';
+import { fileErrorMessage, formatDiagnostic, loadAnyScene } from '../load-graph.ts';
 
 const OPTIONS: readonly OptionSpec[] = [
   { long: 'shadertoy', doc: 'print the Shadertoy version (mainImage, jittered samples, sRGB output)' },
@@ -27,6 +29,10 @@ export const glslCommand: CliCommand = {
     'With --shadertoy it prints a mainImage() that pastes into shadertoy.com unchanged: the',
     "graph's view and samples per pixel, averaged and converted to sRGB.",
     '',
+    'A 3D graph (a render-3d node) gives the sphere-tracing shader; its frame uniforms are',
+    ...FRAME_UNIFORMS_3D.map((u) => `  ${u.type} ${u.name}: ${u.doc}`),
+    'and --probe writes vec4(hit, t, depth, seed) per pixel.',
+    '',
     formatOptions(OPTIONS),
   ].join('\n'),
   async run(args, io) {
@@ -35,10 +41,16 @@ export const glslCommand: CliCommand = {
     if (parsed.options.shadertoy && parsed.options.probe) {
       throw new CliError('--shadertoy and --probe cannot be combined', EXIT.usage, true);
     }
-    const { scene, doc } = await loadScene(io, graphPath);
+    const { picture, doc } = await loadAnyScene(io, graphPath);
     let source: string;
-    if (parsed.options.shadertoy) source = shadertoySource(scene);
+    if (picture.kind === '3d') {
+      source = parsed.options.shadertoy
+        ? shadertoySource3d(picture.scene3d)
+        : compile3d(picture.scene3d, { bake: true, variant: parsed.options.probe ? 'probe' : 'color' })
+            .source;
+    } else if (parsed.options.shadertoy) source = shadertoySource(picture.scene);
     else {
+      const scene = picture.scene;
       const program = compile(scene, { baked: true, variant: parsed.options.probe ? 'probe' : 'color' });
       for (const d of program.diagnostics) io.stderr.write(`${graphPath}: ${formatDiagnostic(d, doc)}\n`);
       source = program.source;

@@ -3,6 +3,7 @@
  * as a PNG; with `--frames`, an animation as a PNG sequence or a GIF (src/cli/render-animation.ts).
  */
 import { LIMITS } from '../../../nodes/core/scene.ts';
+import type { Scene3d } from '../../../nodes/core/scene-3d.ts';
 import {
   expectPositionals,
   formatOptions,
@@ -12,9 +13,9 @@ import {
   parseSizeOption,
   stringOption,
 } from '../args.ts';
-import { type CliCommand, CliError, EXIT, usageError } from '../command.ts';
+import { type CliCommand, CliError, type CliIo, EXIT, usageError } from '../command.ts';
 import { sceneAt } from '../frame-render.ts';
-import { fileErrorMessage, loadScene } from '../load-graph.ts';
+import { fileErrorMessage, loadAnyScene } from '../load-graph.ts';
 import { progressLine } from '../progress.ts';
 import {
   ANIMATION_OPTIONS,
@@ -23,7 +24,7 @@ import {
   runAnimationCommand,
 } from '../render-animation-command.ts';
 import { announceEstimate, estimateRenderSeconds } from '../render-estimate.ts';
-import { renderScenePng } from '../render-png.ts';
+import { renderScene3dPng, renderScenePng } from '../render-png.ts';
 
 export const DEFAULT_RENDER_SIZE = { width: 1024, height: 1024 } as const;
 /** Sample count × pixels above which a progress line is worth showing (a few seconds of work). */
@@ -50,7 +51,8 @@ export const renderCommand: CliCommand = {
     '',
     'Renders the graph with the CPU interpreter at its saved view. The view height fills the',
     'image height; a wider image shows more to the sides. GRAPH is a .json document or a PNG',
-    'exported by Kleinflow.',
+    'exported by Kleinflow. A 3D graph (a render-3d node) is drawn by the CPU sphere tracer from',
+    'its camera (still pictures only: --time and --frames need a 2D graph).',
     '',
     ...ANIMATION_USAGE,
     '',
@@ -72,7 +74,12 @@ export const renderCommand: CliCommand = {
       : undefined;
 
     const time = parseTimeOption(parsed);
-    const loaded = await loadScene(io, graphPath);
+    const any = await loadAnyScene(io, graphPath);
+    if (any.picture.kind === '3d') {
+      if (time !== 0) throw usageError('--time needs a 2D graph: a 3D graph renders one still picture');
+      return render3d(io, any.picture.scene3d, any.text, output, width, height, samples);
+    }
+    const loaded = { ...any, scene: any.picture.scene };
     // --time T: the same graph, its time-driven values at T (nodes/graph/evaluate.ts).
     const load = time === 0 ? loaded : { ...loaded, scene: sceneAt(loaded.doc!, time) };
     const used = samples ?? load.scene.samples;
@@ -98,3 +105,34 @@ export const renderCommand: CliCommand = {
     return EXIT.ok;
   },
 };
+
+/** The 3D still: the CPU sphere tracer, with a progress line on long renders. */
+async function render3d(
+  io: CliIo,
+  scene: Scene3d,
+  text: string | null,
+  output: string,
+  width: number,
+  height: number,
+  samples: number | undefined,
+): Promise<number> {
+  const used = samples ?? scene.samples;
+  const label = `rendering ${output} (${width}×${height}, ${used} samples/px, sphere traced)`;
+  const started = performance.now();
+  const progress = width * height * used >= PROGRESS_WORK / 16 ? progressLine(io.stderr, label) : undefined;
+  const png = renderScene3dPng(scene, text, {
+    width,
+    height,
+    samples: used,
+    onProgress: progress && ((f) => progress.update(f)),
+  });
+  progress?.finish();
+  try {
+    await io.writeFile(output, png);
+  } catch (e) {
+    throw new CliError(fileErrorMessage('write', output, e));
+  }
+  const seconds = ((performance.now() - started) / 1000).toFixed(2);
+  io.stdout.write(`wrote ${output} (${width}×${height}, ${used} samples/px, ${seconds} s)\n`);
+  return EXIT.ok;
+}

@@ -3,6 +3,7 @@
  * the 3D nodes' examples exist): Fig. 11 (six inversion spheres at ±a·e_k around one seed
  * sphere), a lone seed sphere, and mixed scenes that take the fallback bound.
  */
+import { readFileSync } from 'node:fs';
 import {
   DEFAULT_CAMERA_3D,
   DEFAULT_LIGHTING_3D,
@@ -13,6 +14,10 @@ import {
 import { compoundParabolic3d } from '../../../nodes/geometry/space/compound-parabolic-3d.ts';
 import { mobius3d } from '../../../nodes/geometry/space/mobius-3d.ts';
 import type { Vec3 } from '../../../nodes/geometry/space/vec3.ts';
+import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
+import { parseDocumentText } from '../../../nodes/graph/load.ts';
+import { registry } from '../../../nodes/types/index.ts';
+import { EXAMPLES_3D_DIR, exampleNames, examplePath } from '../../../src/cli/examples.ts';
 
 export function scene3d(
   elements: readonly Element3d[],
@@ -107,3 +112,16 @@ export const PLANES = scene3d(
     },
   },
 );
+
+/** The scene3d of every 3D example. */
+export function exampleScenes3d(): Record<string, Scene3d> {
+  const out: Record<string, Scene3d> = {};
+  for (const name of exampleNames(EXAMPLES_3D_DIR)) {
+    const loaded = parseDocumentText(readFileSync(examplePath(name, EXAMPLES_3D_DIR), 'utf8'), registry);
+    if (!loaded.ok) throw new Error(`${name} does not load`);
+    const scene = evaluateGraph(loaded.doc, registry).scene3d;
+    if (!scene) throw new Error(`${name} has no 3D scene`);
+    out[name] = scene;
+  }
+  return out;
+}

@@ -1,0 +1,131 @@
+/**
+ * The 3D GLSL generator (shader-gen/space/compile-3d.ts): every program it writes — uniform and
+ * baked, colour and probe, every 3D example, the hand-built scenes, every colouring mode, the
+ * Shadertoy version, and the hand-written bench tracer — pass glslangValidator and the WebGL identifier rules; the source depends
+ * only on the scene's structure, so value edits re-use the program; baking leaves no scene uniform.
+ */
+import { readFileSync } from 'node:fs';
+import { describe, expect, it } from 'vitest';
+import { LIMITS } from '../../../nodes/core/limits.ts';
+import type { Coloring3d, Scene3d } from '../../../nodes/core/scene-3d.ts';
+import { uniformRows } from '../../../shader-gen/glsl/values.ts';
+import {
+  type Compile3dOptions,
+  cameraUniforms,
+  compile3d,
+  FRAME_UNIFORMS_3D,
+  shadertoySource3d,
+} from '../../../shader-gen/space/compile-3d.ts';
+import {
+  type ShaderToCheck,
+  shadertoyWrapper,
+  validateShaders,
+  webglIdentifierProblems,
+} from '../support/glslang.ts';
+import { exampleScenes3d, FIG11, LONE_SPHERE, MOBIUS_BOX, PLANES } from './scenes-3d.ts';
+
+const COLORINGS: Record<string, Coloring3d> = {
+  'depth-wheel': { mode: 'depth-wheel', step: 0.1 },
+  cosine: {
+    mode: 'cosine',
+    a: [0.5, 0.5, 0.5],
+    b: [0.5, 0.5, 0.5],
+    c: [1, 1, 1],
+    d: [0, 0.33, 0.67],
+    step: 0.1,
+  },
+  surface: { mode: 'surface', scale: 2 },
+  'final-point': { mode: 'final-point', scale: 1.5 },
+};
+
+const SCENES: Record<string, Scene3d> = {
+  ...exampleScenes3d(),
+  fig11: FIG11,
+  lone: LONE_SPHERE,
+  'mobius-box': MOBIUS_BOX,
+  planes: PLANES,
+  'no-seeds': { ...FIG11, seeds: [] },
+  'no-elements': { ...LONE_SPHERE, elements: [] },
+  ...Object.fromEntries(
+    Object.entries(COLORINGS).map(([k, coloring]) => [`coloring-${k}`, { ...MOBIUS_BOX, coloring }]),
+  ),
+};
+
+const VARIANTS: Record<string, Compile3dOptions> = {
+  color: {},
+  'color-baked': { bake: true },
+  probe: { variant: 'probe' },
+  'probe-baked': { variant: 'probe', bake: true },
+};
+
+describe('compile3d', () => {
+  const shaders: ShaderToCheck[] = Object.entries(SCENES).flatMap(([name, scene]) => [
+    ...Object.entries(VARIANTS).map(([variant, options]) => ({
+      name: `${name}.${variant}`,
+      source: compile3d(scene, options).source,
+      stage: 'frag' as const,
+    })),
+    { name: `${name}.shadertoy`, source: shadertoyWrapper(shadertoySource3d(scene)), stage: 'frag' as const },
+  ]);
+  shaders.push({
+    name: 'hand-written-fig11-trace',
+    source: readFileSync(new URL('../../bench/hand-written/fig11-trace.frag', import.meta.url), 'utf8'),
+    stage: 'frag',
+  });
+  const results = validateShaders(shaders);
+
+  for (const shader of shaders) {
+    it(`${shader.name} passes glslangValidator`, () => {
+      expect(results.get(shader.name)).toEqual([]);
+      expect(webglIdentifierProblems(shader.source)).toEqual([]);
+    });
+  }
+
+  it('covers every 3D example', () => {
+    expect(Object.keys(exampleScenes3d()).length).toBeGreaterThanOrEqual(8);
+  });
+
+  it('writes the same source for new values (moved spheres, colours, lighting, budgets)', () => {
+    const moved: Scene3d = {
+      ...FIG11,
+      elements: FIG11.elements.map((e) =>
+        e.kind === 'sphere-inversion' ? { ...e, sphere: { ...e.sphere, radius: e.sphere.radius * 0.9 } } : e,
+      ),
+      seeds: [{ ...FIG11.seeds[0]!, color: [0.1, 0.9, 0.3] }],
+      lighting: { ...FIG11.lighting, shadow: 0, diffuse: 0.3 },
+      maxIterations: 77,
+      marchSteps: 321,
+      deScale: 0.6,
+      background: [1, 1, 1],
+    };
+    const a = compile3d(FIG11);
+    const b = compile3d(moved);
+    expect(b.source).toBe(a.source);
+    expect(b.uniforms).not.toEqual(a.uniforms);
+  });
+
+  it('declares the frame uniforms, bakes every scene value when asked, and fits the uniform budget', () => {
+    for (const [name, scene] of Object.entries(SCENES)) {
+      const c = compile3d(scene);
+      for (const u of FRAME_UNIFORMS_3D) expect(c.source, name).toContain(`uniform ${u.type} ${u.name};`);
+      const rows = c.uniforms.reduce((n: number, u) => n + uniformRows(u), FRAME_UNIFORMS_3D.length);
+      expect(rows, name).toBeLessThanOrEqual(LIMITS.maxUniformVectors);
+      expect(
+        c.uniforms.every((u) => u.value.every(Number.isFinite)),
+        name,
+      ).toBe(true);
+      const baked = compile3d(scene, { bake: true });
+      expect(baked.uniforms, name).toEqual([]);
+      expect(baked.source, name).not.toContain('u_el');
+    }
+    expect(cameraUniforms(FIG11.camera).map((u) => u.name)).toEqual([
+      'u_cameraPosition',
+      'u_cameraTarget',
+      'u_cameraFov',
+    ]);
+  });
+
+  it('changes the source with the structure (another element kind)', () => {
+    expect(compile3d(MOBIUS_BOX).source).not.toBe(compile3d(FIG11).source);
+  });
+});

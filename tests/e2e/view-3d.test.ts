@@ -211,6 +211,22 @@ describe('3D view', () => {
     await waitRendered(page, 120_000);
   }, 180_000);
 
+  it('editing the camera on the Render 3D node brings the view to it (the orbited camera is dropped)', async () => {
+    expect(await docCamera()).toBeDefined();
+    const s1 = async () => (await page.locator('[data-handle="s1/center"]').boundingBox())!;
+    const before = await s1();
+    await page.evaluate(() =>
+      window.__kleinflow!.store.dispatch({
+        type: 'set-params',
+        patches: [{ nodeId: 'render', params: { camera: [2.4, 1.2, 1.6] } }],
+      }),
+    );
+    await expect.poll(() => docCamera(), SLOW).toBeUndefined();
+    const after = await s1();
+    expect(Math.hypot(after.x - before.x, after.y - before.y)).toBeGreaterThan(5);
+    await waitRendered(page, 120_000);
+  }, 180_000);
+
   it('switching to a 2D example and back: Fit and pan/zoom there, Reset view and orbit here', async () => {
     await openExample(page, FIG237);
     await page.getByRole('button', { name: 'Fit', exact: true }).waitFor();

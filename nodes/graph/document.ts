@@ -4,6 +4,7 @@
  * (params.ts), because the type decides what they mean.
  */
 import { z } from 'zod';
+import type { Camera3d } from '../core/scene-3d.ts';
 import { DEFAULT_VIEW, type View } from '../core/view.ts';
 
 export const FORMAT = 'kleinflow';
@@ -89,6 +90,18 @@ export const viewSchema = z.strictObject({
   scale: finite.positive('expected a positive number'),
 }) satisfies z.ZodType<View>;
 
+const vec3 = z.tuple([finite, finite, finite]);
+
+/**
+ * The 3D view's camera (a Camera3d) as the user left it by orbiting, zooming and panning: view
+ * state like `view` (saved, never an undo step). Absent: the render-3d node's own camera.
+ */
+export const camera3dSchema = z.strictObject({
+  position: vec3,
+  target: vec3,
+  fovDeg: finite.gt(0, 'expected an angle above 0°').lt(180, 'expected an angle below 180°'),
+}) satisfies z.ZodType<Camera3d>;
+
 /** Limits on the presentation text (docs: README "Presentation"): generous for a lesson, bounded for a URL. */
 export const NOTE_MAX_CHARS = 5_000;
 export const NOTES_MAX = 500;
@@ -118,6 +131,7 @@ export const docSchema = z.strictObject({
   edges: z.array(edgeSchema),
   view: viewSchema,
   frames: z.array(frameSchema).max(1000).optional(),
+  camera3d: camera3dSchema.optional(),
 });
 
 export type GraphDoc = z.infer<typeof docSchema>;

@@ -1,5 +1,5 @@
 /**
- * Scene3d → one GLSL ES 3.00 sphere-tracing fragment shader (docs/math-3d.md §7–§8), the 3D twin of
+ * Scene3d → one GLSL ES 3.00 sphere-tracing fragment shader (docs/math-3d.md "§8 The tracer's distance bound", docs/math-3d.md "§9 The sphere tracer: march, hit, shading"), the 3D twin of
  * shader-gen/compile.ts. The source depends only on the scene's STRUCTURE — the element kinds in
  * order, the number of seeds, the colouring mode, whether every element is a sphere inversion —
  * and every value (positions, radii, colours, lighting, iteration and march budgets, bounds)

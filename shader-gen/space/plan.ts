@@ -1,7 +1,7 @@
 /**
  * What the sphere tracer needs beyond the Scene3d, computed once per scene (CPU, in float64) and
  * used by both twins — the CPU walk reads it, the GLSL generator uploads it: the element records,
- * the content balls and reaches of the bound, and the scene's bounding ball (docs/math-3d.md §8).
+ * the content balls and reaches of the bound, and the scene's bounding ball (docs/math-3d.md "§8 The tracer's distance bound").
  * The bound assumes the seeds lie in the fundamental domain; the render-3d node warns when one does
  * not (KF314, docs/math-3d.md §7).
  */
@@ -12,7 +12,7 @@ import type { ElementRecord3d } from './elements/element-3d-kind.ts';
 import { elementRecord3d } from './elements/index.ts';
 import { seedBall } from './seeds-3d.ts';
 
-/** Inversion records a ray's stack holds (docs/math-3d.md §7): the walk stops when it is full. */
+/** Inversion records a ray's stack holds (docs/math-3d.md "§8 The tracer's distance bound"): the walk stops when it is full. */
 export const STACK_CAPACITY = 64;
 /** Rounds of the content-ball refinement (each one is a valid cover; more only tightens). */
 const HULL_ROUNDS = 6;
@@ -24,7 +24,7 @@ export interface TracePlan {
   readonly records: readonly ElementRecord3d[];
   /**
    * Per element: a ball holding every orbit point inside a sphere inversion's ball (its content
-   * ball, docs/math-3d.md §7); null for the other kinds, whose regions themselves are the cover.
+   * ball, docs/math-3d.md "§8 The tracer's distance bound"); null for the other kinds, whose regions themselves are the cover.
    */
   readonly hulls: readonly (Sphere | null)[];
   /**
@@ -94,7 +94,7 @@ function isDisjoint(mirrors: readonly Sphere[], seeds: readonly Sphere[]): boole
 }
 
 /**
- * Content balls H_i with orbit ∩ B_i ⊂ H_i ∩ B_i (docs/math-3d.md §7): start from H_i = B_i and
+ * Content balls H_i with orbit ∩ B_i ⊂ H_i ∩ B_i (docs/math-3d.md "§8 The tracer's distance bound"): start from H_i = B_i and
  * repeat H_i ← enclosingBall(pieces), the pieces being I_i(seed ball) and, for j ≠ i, the smaller of
  * I_i(H_j) and I_i(B_j) (both hold I_i(orbit ∩ B_j)); a round needs every piece to be a ball (c_i
  * outside the inverted ball) and keeps the new ball only when it is smaller. Each round is a valid

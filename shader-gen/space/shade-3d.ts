@@ -1,5 +1,5 @@
 /**
- * Shading of a hit, in linear light (docs/math-3d.md §8), CPU twin of glsl/shade.glsl.ts:
+ * Shading of a hit, in linear light (docs/math-3d.md "§9 The sphere tracer: march, hit, shading"), CPU twin of glsl/shade.glsl.ts:
  *   normal — tetrahedral central differences of the seed-image distance f (the walk's
  *            imageDistance) with step h = ε at the hit: n = normalize(Σ k_i f(p + h k_i)),
  *            k ∈ {(1,−1,−1), (−1,−1,1), (−1,1,−1), (1,1,1)};

@@ -1,5 +1,5 @@
 /**
- * The CPU sphere tracer (the tested reference; glsl/trace.glsl.ts is its twin), docs/math-3d.md §8:
+ * The CPU sphere tracer (the tested reference; glsl/trace.glsl.ts is its twin), docs/math-3d.md "§9 The sphere tracer: march, hit, shading":
  * clip the ray to the scene's bounding ball (or a far distance when the orbit is unbounded); then
  * march: walk the point, hit when the seed-image distance is below the tolerance
  * ε(t) = HIT_PIXELS · a · max(t, NEAR·R) (a = angle per pixel), else advance by

@@ -1,7 +1,7 @@
 /**
  * The CPU walk of one point (the reference the GLSL walk mirrors): the IIS of docs/math-3d.md §4
  * over the scene's elements, recording one stack entry per inversion, then the safe distance
- * bound folded back through the stack (docs/math-3d.md §7):
+ * bound folded back through the stack (docs/math-3d.md "§8 The tracer's distance bound"):
  *
  *   D_end = min(seed distances, covers of the orbit inside every region) at the final point,
  *   D ← min(local_k, r_k² · D / (far_k · min(reach_k, far_k + D)))   for k = top−1 … 0.

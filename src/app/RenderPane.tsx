@@ -1,7 +1,9 @@
 /**
  * The live render: a canvas driven by the WebGL2 Viewport, pan/zoom on the pane, and the
  * direct-manipulation overlay on top. The view lives in the document but pan/zoom is not an undo
- * step: it is stored with a debounced silent change.
+ * step: it is stored with a debounced silent change. When the graph's render node is a render-3d
+ * node the same canvas and Viewport show the 3D scene instead: orbit/zoom/pan controls, the 3D
+ * overlay and "Reset view" take the place of pan/zoom, the 2D overlay and Fit (use-camera-3d.ts).
  */
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
@@ -11,14 +13,17 @@ import { registry } from '../../nodes/types/index.ts';
 import { isTyping } from '../editor/typing.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
 import { fitBounds, pictureBounds } from '../viewport/fit-view.ts';
+import { attachOrbitControls } from '../viewport/orbit-controls.ts';
 import { OrbitOverlay } from '../viewport/overlay/OrbitOverlay.tsx';
 import { type NodePatch, RenderOverlay } from '../viewport/overlay/RenderOverlay.tsx';
+import { RenderOverlay3d } from '../viewport/overlay-3d/RenderOverlay3d.tsx';
 import { attachPanZoom } from '../viewport/pan-zoom.ts';
 import { Viewport } from '../viewport/viewport.ts';
 import { InspectPanel } from './inspect/InspectPanel.tsx';
 import { usePixelInspect } from './inspect/use-pixel-inspect.ts';
 import { renderHint } from './render-hint.ts';
 import { exposeForTests } from './test-hooks.ts';
+import { useCamera3d } from './use-camera-3d.ts';
 
 /** Pan/zoom settles into the document this long after the last wheel tick or drag. */
 const VIEW_STORE_DELAY_MS = 300;
@@ -127,10 +132,22 @@ export function RenderPane({
     [store],
   );
   useEffect(() => () => clearTimeout(storeTimer.current), []);
-  useEffect(() => attachPanZoom(pane.current!, () => viewRef.current, showView), [showView]);
 
-  const bounds = pictureBounds(evaluation.scene);
-  const fit = () => bounds && showView(fitBounds(bounds, size));
+  const scene3d = evaluation.scene3d;
+  const is3d = scene3d !== null;
+  const camera3d = useCamera3d(store, doc, scene3d);
+  const { cameraRef, show: showCamera } = camera3d;
+  useEffect(
+    () =>
+      is3d
+        ? attachOrbitControls(pane.current!, () => cameraRef.current, showCamera)
+        : attachPanZoom(pane.current!, () => viewRef.current, showView),
+    [is3d, showView, cameraRef, showCamera],
+  );
+
+  const bounds = is3d ? null : pictureBounds(evaluation.scene);
+  // F and the corner button: Fit in 2D, back to the render-3d node's camera in 3D.
+  const fit = () => (is3d ? camera3d.reset() : bounds && showView(fitBounds(bounds, size)));
   // Pan/zoom listens natively on the pane: a press on the button must not start a pan (React's
   // own stopPropagation runs at the root, after the pane has seen the event).
   const fitButton = useCallback((b: HTMLButtonElement | null) => {
@@ -154,12 +171,17 @@ export function RenderPane({
   useEffect(() => {
     const v = viewport.current;
     if (!v) return;
-    v.setScene(evaluation.scene);
+    v.setScene(evaluation.scene3d ?? evaluation.scene);
     v.setView(viewRef.current);
-  }, [evaluation]);
+    v.setCamera(cameraRef.current);
+  }, [evaluation, cameraRef]);
   useEffect(() => {
     viewport.current?.setView(view);
   }, [view]);
+  // The 3D camera is a frame uniform like the view: a move never touches the program.
+  useEffect(() => {
+    viewport.current?.setCamera(camera3d.camera);
+  }, [camera3d.camera]);
 
   // After the effects that hand the viewport its scene and view: the probe reads what is on screen.
   const inspected = usePixelInspect({
@@ -182,7 +204,20 @@ export function RenderPane({
       data-testid="render-pane"
     >
       <canvas ref={canvas} className="kf-render__canvas" aria-label="Rendered picture" />
-      {size.width > 0 && (
+      {size.width > 0 && scene3d && (
+        <RenderOverlay3d
+          evaluation={evaluation}
+          scene={readOnly ? { ...scene3d, handles: [] } : scene3d}
+          camera={camera3d.camera}
+          width={size.width}
+          height={size.height}
+          hoveredNodeId={hoveredNodeId}
+          onHoverNode={onHoverNode}
+          onPreview={(patches) => store.preview(patchChange(patches))}
+          onCommit={(patches) => store.commit(patchChange(patches), 'drag in the render')}
+        />
+      )}
+      {size.width > 0 && !scene3d && (
         <RenderOverlay
           doc={doc}
           evaluation={evaluation}
@@ -209,15 +244,15 @@ export function RenderPane({
       {inspected.inspection && (
         <InspectPanel inspection={inspected.inspection} side={inspected.side} onClose={inspected.close} />
       )}
-      {bounds && (
+      {(bounds || is3d) && (
         <button
           type="button"
           className="kf-button kf-render__fit"
-          title="Show the whole picture (F)"
+          title={is3d ? "Back to the render node's camera (F)" : 'Show the whole picture (F)'}
           ref={fitButton}
           onClick={fit}
         >
-          Fit
+          {is3d ? 'Reset view' : 'Fit'}
         </button>
       )}
       {failure && <div className="kf-render__failure">{failure}</div>}

@@ -6,6 +6,7 @@ import type { Scene, View } from '../../nodes/core/scene.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { compile, shadertoySource } from '../../shader-gen/compile.ts';
 import { embedGraph } from '../io/png-graph.ts';
+import { is3d } from '../viewport/drawable.ts';
 import type { Viewport } from '../viewport/viewport.ts';
 import { download, fileStem } from './files.ts';
 
@@ -29,7 +30,10 @@ export function scaleEdges(scene: Scene, factor: number): Scene {
   return { ...scene, tile: { ...scene.tile, edgeWidth: scene.tile.edgeWidth * factor } };
 }
 
-/** The PNG bytes (graph embedded), or null when `onProgress` returned false (cancelled). */
+/**
+ * The PNG bytes (graph embedded), or null when `onProgress` returned false (cancelled). A 3D view
+ * exports what it shows: its scene through the view's camera, by the same generator at the new size.
+ */
 export async function renderPng(
   viewport: Viewport,
   doc: GraphDoc,
@@ -37,13 +41,14 @@ export async function renderPng(
   o: PngExportOptions,
   onProgress?: (fraction: number) => boolean,
 ): Promise<Uint8Array | null> {
+  const live = viewport.drawing();
   const pixels = await viewport.renderToPixels({
     width: o.width,
     height: o.height,
     samples: o.samples,
     view: o.view,
     transparent: o.transparent,
-    scene: scaleEdges(scene, o.height / o.referenceHeight),
+    scene: live && is3d(live) ? live : scaleEdges(scene, o.height / o.referenceHeight),
     onProgress,
   });
   if (!pixels) return null;

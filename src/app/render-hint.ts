@@ -6,7 +6,7 @@
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
-import type { Evaluation } from '../../nodes/graph/evaluate.ts';
+import { type Evaluation, RENDER_NODE_TYPES } from '../../nodes/graph/evaluate.ts';
 
 export interface RenderHint {
   /** calm: nothing is wrong, the graph is just not finished; error: `text` is the error. */
@@ -27,8 +27,10 @@ export const HINTS = {
 /** The hint for this graph, or null when the pane shows a picture. */
 export function renderHint(doc: GraphDoc, evaluation: Evaluation, registry: NodeRegistry): RenderHint | null {
   if (doc.nodes.length === 0) return { tone: 'calm', text: HINTS.empty };
-  const renders = doc.nodes.filter((n) => n.type === 'render');
+  const renders = doc.nodes.filter((n) => RENDER_NODE_TYPES.has(n.type));
   if (renders.length === 0) return { tone: 'calm', text: HINTS.noRender };
+  // A 3D render draws whatever it has (its node says when a seed or element is missing).
+  if (evaluation.scene3d) return null;
   const { scene } = evaluation;
   if (scene.renderNodeId !== null && scene.elements.length > 0) return null;
   const renderId = scene.renderNodeId ?? renders[0].id;

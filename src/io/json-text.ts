@@ -7,18 +7,19 @@ import type { GraphDoc } from '../../nodes/graph/document.ts';
 
 /** Preferred key order per object position; keys not listed follow in code-unit order. */
 const KEY_ORDER: Readonly<Record<string, readonly string[]>> = {
-  document: ['format', 'version', 'meta', 'nodes', 'edges', 'view'],
+  document: ['format', 'version', 'meta', 'nodes', 'edges', 'view', 'camera3d'],
   meta: ['title', 'description'],
   node: ['id', 'type', 'version', 'label', 'position', 'params'],
   edge: ['id', 'from', 'to'],
   port: ['node', 'port'],
   view: ['center', 'scale'],
+  camera3d: ['position', 'target', 'fovDeg'],
 };
 
 /** Which key order applies to the object found under `key` inside an object of order `parent`. */
 function childOrder(parent: string | null, key: string | number): string | null {
   if (parent === 'document') {
-    if (key === 'meta' || key === 'view') return key;
+    if (key === 'meta' || key === 'view' || key === 'camera3d') return key;
     if (key === 'nodes') return 'node-list';
     if (key === 'edges') return 'edge-list';
   }

@@ -4,6 +4,7 @@
  * Changes never mutate: untouched nodes and edges keep their identity (cheap history snapshots).
  */
 
+import { sameCamera3d } from '../../nodes/core/camera-3d.ts';
 import { inputSpec, portSpec } from '../../nodes/core/port-lookup.ts';
 import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
@@ -31,6 +32,8 @@ export type Change =
   | { readonly type: 'paste'; readonly nodes: readonly GraphNode[]; readonly edges: readonly GraphEdge[] }
   | { readonly type: 'load-document'; readonly doc: GraphDoc }
   | { readonly type: 'set-view'; readonly view: GraphDoc['view'] }
+  /** The 3D view's camera (view state, like set-view); null goes back to the render-3d node's camera. */
+  | { readonly type: 'set-camera-3d'; readonly camera: NonNullable<GraphDoc['camera3d']> | null }
   | { readonly type: 'set-meta'; readonly meta: GraphDoc['meta'] }
   /** Mutes (bypasses) or unmutes nodes (nodes/graph/mute.ts); `muted: false` removes the key. */
   | { readonly type: 'set-muted'; readonly nodeIds: readonly string[]; readonly muted: boolean }
@@ -160,6 +163,16 @@ export function applyChange(doc: GraphDoc, change: Change, registry: NodeRegistr
       return change.doc;
     case 'set-view': {
       return sameView(change.view, doc.view) ? doc : { ...doc, view: change.view };
+    }
+    case 'set-camera-3d': {
+      if (change.camera === null) {
+        if (doc.camera3d === undefined) return doc;
+        const { camera3d: _dropped, ...rest } = doc;
+        return rest;
+      }
+      return doc.camera3d && sameCamera3d(change.camera, doc.camera3d)
+        ? doc
+        : { ...doc, camera3d: change.camera };
     }
     case 'set-meta':
       return shallowEqual(change.meta, doc.meta) ? doc : { ...doc, meta: change.meta };

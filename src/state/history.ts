@@ -1,8 +1,8 @@
 /**
  * Undo history as (before, after) document snapshots. Documents are immutable and changes keep
  * untouched parts by identity, so a snapshot costs little. Pan/zoom is not history: undo/redo keep
- * the current view, except for a step that itself changed the view (opening a document), whose
- * undo brings its view back too.
+ * the current view (and 3D camera), except for a step that itself changed it (opening a document),
+ * whose undo brings it back too.
  */
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 
@@ -30,11 +30,19 @@ export function record(history: History, step: HistoryStep): History {
   return { past: past.length > HISTORY_LIMIT ? past.slice(past.length - HISTORY_LIMIT) : past, future: [] };
 }
 
-/** `target` with the current view, unless the step moved the view itself. */
-const keepView = (step: HistoryStep, target: GraphDoc, current: GraphDoc): GraphDoc =>
-  step.before.view !== step.after.view || target.view === current.view
-    ? target
-    : { ...target, view: current.view };
+/**
+ * `target` with the current view and 3D camera (view state, docs/architecture.md "Data flow"),
+ * each unless the step moved it itself.
+ */
+function keepView(step: HistoryStep, target: GraphDoc, current: GraphDoc): GraphDoc {
+  let doc = target;
+  if (step.before.view === step.after.view && doc.view !== current.view) doc = { ...doc, view: current.view };
+  if (step.before.camera3d === step.after.camera3d && doc.camera3d !== current.camera3d) {
+    const { camera3d: _old, ...rest } = doc;
+    doc = current.camera3d === undefined ? rest : { ...rest, camera3d: current.camera3d };
+  }
+  return doc;
+}
 
 /** Undoes the last step: the document before it (with the current view), or null when none. */
 export function undo(history: History, current: GraphDoc): { history: History; doc: GraphDoc } | null {

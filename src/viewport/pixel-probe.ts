@@ -5,6 +5,7 @@
  * back exactly. The editor compares it with the CPU trace and shows any disagreement.
  */
 import type { Scene, View } from '../../nodes/core/scene.ts';
+import { pixelToWorld } from '../../nodes/core/view.ts';
 import { compile, INSPECT_STOP } from '../../shader-gen/compile.ts';
 import type { StopReason } from '../../shader-gen/trace.ts';
 import { createTarget, disposeTarget } from './render-target.ts';
@@ -80,4 +81,27 @@ export function probePixel(renderer: Renderer, scene: Scene, view: View, at: Can
   } finally {
     disposeTarget(gl, target);
   }
+}
+
+/**
+ * "Explain this pixel" at a CSS point of `canvas`: the drawing-buffer pixel under it, the world
+ * point at its centre (what the picture's first sample shows) and the GPU's depth there.
+ */
+export function inspectCssPoint(
+  renderer: Renderer | null,
+  canvas: HTMLCanvasElement,
+  scene: Scene,
+  view: View,
+  css: { readonly x: number; readonly y: number },
+): PixelInspection {
+  const width = canvas.width;
+  const height = canvas.height;
+  const clamp = (v: number, n: number) => Math.min(n - 1, Math.max(0, Math.floor(v)));
+  const px = clamp((css.x * width) / Math.max(1, canvas.clientWidth), width);
+  const py = clamp(height - (css.y * height) / Math.max(1, canvas.clientHeight), height);
+  const at = { px, py, width, height };
+  const gpu: GpuPixelResult = renderer
+    ? probePixel(renderer, scene, view, at)
+    : { ok: false, reason: 'the WebGL context is lost' };
+  return { pixel: at, world: pixelToWorld(view, width, height, px, py), gpu };
 }

@@ -1,13 +1,13 @@
 /**
- * Which program draws the current scene: its uniform program (the same source, so the same
+ * Which program draws the current scene (2D or 3D, drawable.ts): its uniform program (the same source, so the same
  * program, for every value edit), or, after a quiet spell, the baked program of its exact values. Reports the
  * compiler's and the driver's diagnostics whenever they change, and keeps the compile counts
  * across context losses.
  */
-import { type Diagnostic, diag } from '../../nodes/core/diagnostics.ts';
-import type { Scene } from '../../nodes/core/scene.ts';
-import { type CompiledProgram, type CompileOptions, compile } from '../../shader-gen/compile.ts';
+import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
+import type { CompiledProgram, CompileOptions } from '../../shader-gen/compile.ts';
 import type { UniformEntry } from '../../shader-gen/glsl/values.ts';
+import { type Drawable, generateProgram as generate, is3d } from './drawable.ts';
 import { type PendingBuild, programKey } from './program-cache.ts';
 import type { Renderer } from './renderer.ts';
 import type { GpuProgram } from './uniforms.ts';
@@ -26,6 +26,15 @@ export type SceneChange = 'same' | 'values' | 'code';
 const UNIFORM: CompileOptions = { variant: 'color' };
 const BAKED: CompileOptions = { variant: 'color', baked: true };
 
+/**
+ * Whether a scene gets the baked program (idle bake, export). Not a 3D one: its camera is a frame
+ * uniform, so the picture converges on the uniform program before a bake would be due, and the
+ * sphere tracer's baked program is far costlier to build — in SwiftShader about 20 s of a blocked
+ * page to compile and as long again to link (the uniform program draws a sample in about 60 ms
+ * at 200 × 350 px), frozen again after every edit.
+ */
+const bakes = (scene: Drawable): boolean => !is3d(scene);
+
 function sameUniforms(a: readonly UniformEntry[], b: readonly UniformEntry[]): boolean {
   if (a.length !== b.length) return false;
   for (let i = 0; i < a.length; i++) {
@@ -40,15 +49,6 @@ function sameUniforms(a: readonly UniformEntry[], b: readonly UniformEntry[]): b
 const samePictures = (a: readonly string[], b: readonly string[]) =>
   a.length === b.length && a.every((src, i) => src === b[i]);
 
-/** The shader generator threw (a bug, not a user error): report it like a compile failure. */
-function generate(scene: Scene, options: CompileOptions): CompiledProgram | Diagnostic[] {
-  try {
-    return compile(scene, options);
-  } catch (e) {
-    return [diag('shaderCompile', {}, `shader generator: ${(e as Error).message}`)];
-  }
-}
-
 export class SceneProgramBuilder {
   private compiled: CompiledProgram | null = null;
   private program: SceneProgram | null = null;
@@ -62,13 +62,16 @@ export class SceneProgramBuilder {
     done: boolean;
   } | null = null;
   private reported: string | null = null;
+  /** Whether the last applied scene is one that bakes (see `bakes`). */
+  private bakeable = true;
   private compilesBefore = 0;
   private bakedBefore = 0;
 
   constructor(private readonly onDiagnostics: (d: Diagnostic[]) => void) {}
 
   /** Takes `scene`: compiles only when its generated source is new to the cache. */
-  apply(renderer: Renderer, scene: Scene, now: number): SceneChange {
+  apply(renderer: Renderer, scene: Drawable, now: number): SceneChange {
+    this.bakeable = bakes(scene);
     const compiled = generate(scene, UNIFORM);
     if (Array.isArray(compiled)) {
       this.fail(compiled);
@@ -112,7 +115,7 @@ export class SceneProgramBuilder {
    * Idle bake, one step per frame: once the scene has been still for idleMs, generate and start
    * compiling the baked program; in a later frame (when the driver is done) return it.
    */
-  pollBake(renderer: Renderer, scene: Scene, now: number, idleMs: number): SceneProgram | null {
+  pollBake(renderer: Renderer, scene: Drawable, now: number, idleMs: number): SceneProgram | null {
     if (this.bakeDueIn(now, idleMs) !== 0) return null;
     if (!this.bake || this.bake.version !== this.version) {
       const compiled = generate(scene, BAKED);
@@ -144,16 +147,16 @@ export class SceneProgramBuilder {
 
   /** Milliseconds until the bake is due (0: now), or null when there is nothing to bake. */
   bakeDueIn(now: number, idleMs: number): number | null {
-    if (!this.program || !Number.isFinite(idleMs)) return null;
+    if (!this.program || !this.bakeable || !Number.isFinite(idleMs)) return null;
     if (this.bake && this.bake.version === this.version && this.bake.done) return null;
     if (this.bake && this.bake.version === this.version) return 0;
     return Math.max(0, this.changedAt + idleMs - now);
   }
 
-  /** For export: the baked program of `scene` (built now), else its uniform program. */
-  exportProgram(renderer: Renderer, scene: Scene): SceneProgram {
+  /** For export: the baked program of `scene` (built now) where it bakes, else its uniform program. */
+  exportProgram(renderer: Renderer, scene: Drawable): SceneProgram {
     const problems: Diagnostic[] = [];
-    for (const options of [BAKED, UNIFORM]) {
+    for (const options of bakes(scene) ? [BAKED, UNIFORM] : [UNIFORM]) {
       const compiled = generate(scene, options);
       if (Array.isArray(compiled)) {
         problems.push(...compiled);

@@ -5,6 +5,7 @@
  * editor stays responsive; onProgress can cancel.
  */
 import type { View } from '../../nodes/core/scene.ts';
+import type { Camera3d } from '../../nodes/core/scene-3d.ts';
 import type { UniformEntry } from '../../shader-gen/glsl/values.ts';
 import { sampleOffset } from '../../shader-gen/view.ts';
 import { disposeTarget } from './render-target.ts';
@@ -18,6 +19,8 @@ export interface TiledRenderOptions {
   readonly height: number;
   readonly samples: number;
   readonly view: View;
+  /** A 3D program's camera. */
+  readonly camera?: Camera3d;
   readonly transparent: boolean;
   readonly tile?: number;
   /** Fraction done in [0, 1]; return false to cancel. */
@@ -68,6 +71,7 @@ export async function renderTiled(
             offsetX: x0,
             offsetY: y0,
             view: o.view,
+            camera: o.camera,
             jitter: sampleOffset(k),
             bgAlpha: o.transparent ? 0 : 1,
           };

@@ -2,8 +2,10 @@
  * A linked program with its uniform locations (looked up once, when it is linked) and the uploads:
  * the scene's uniforms from the CompiledProgram, and the per-frame uniforms the runtime sets.
  */
+import type { Camera3d } from '../../nodes/core/scene-3d.ts';
 import type { View } from '../../nodes/core/view.ts';
 import { FRAME_UNIFORMS, type UniformEntry } from '../../shader-gen/compile.ts';
+import { cameraUniforms } from '../../shader-gen/space/compile-3d.ts';
 
 type FrameUniform = (typeof FRAME_UNIFORMS)[number]['name'];
 
@@ -38,6 +40,41 @@ function finite(u: UniformEntry): boolean {
   return true;
 }
 
+/** Sets one uniform of the program in use (a name it was not linked with is looked up once). */
+function setUniform(gl: WebGL2RenderingContext, gp: GpuProgram, u: UniformEntry): void {
+  let loc = gp.locations.get(u.name);
+  if (loc === undefined) {
+    // A uniform this program was not linked with (same structure, new name): look it up once.
+    loc = gl.getUniformLocation(gp.program, u.name);
+    (gp.locations as Map<string, WebGLUniformLocation | null>).set(u.name, loc);
+  }
+  if (loc === null) return;
+  const v = u.value;
+  switch (u.type) {
+    case 'float':
+      gl.uniform1f(loc, v[0]);
+      break;
+    case 'int':
+      gl.uniform1i(loc, v[0]);
+      break;
+    case 'vec2':
+      gl.uniform2f(loc, v[0], v[1]);
+      break;
+    case 'vec3':
+      gl.uniform3f(loc, v[0], v[1], v[2]);
+      break;
+    case 'vec4':
+      gl.uniform4f(loc, v[0], v[1], v[2], v[3]);
+      break;
+    case 'vec4[]':
+      gl.uniform4fv(loc, v);
+      break;
+    case 'float[]':
+      gl.uniform1fv(loc, v);
+      break;
+  }
+}
+
 /** Uploads the scene's uniforms; the program must be in use. Never uploads NaN or ∞. */
 export function uploadUniforms(
   gl: WebGL2RenderingContext,
@@ -51,37 +88,7 @@ export function uploadUniforms(
       console.warn(`[kleinflow] ${message}; not uploaded`);
       continue;
     }
-    let loc = gp.locations.get(u.name);
-    if (loc === undefined) {
-      // A uniform this program was not linked with (same structure, new name): look it up once.
-      loc = gl.getUniformLocation(gp.program, u.name);
-      (gp.locations as Map<string, WebGLUniformLocation | null>).set(u.name, loc);
-    }
-    if (loc === null) continue;
-    const v = u.value;
-    switch (u.type) {
-      case 'float':
-        gl.uniform1f(loc, v[0]);
-        break;
-      case 'int':
-        gl.uniform1i(loc, v[0]);
-        break;
-      case 'vec2':
-        gl.uniform2f(loc, v[0], v[1]);
-        break;
-      case 'vec3':
-        gl.uniform3f(loc, v[0], v[1], v[2]);
-        break;
-      case 'vec4':
-        gl.uniform4f(loc, v[0], v[1], v[2], v[3]);
-        break;
-      case 'vec4[]':
-        gl.uniform4fv(loc, v);
-        break;
-      case 'float[]':
-        gl.uniform1fv(loc, v);
-        break;
-    }
+    setUniform(gl, gp, u);
   }
   gp.uploaded = entries;
 }
@@ -95,6 +102,8 @@ export interface FrameParams {
   readonly offsetX: number;
   readonly offsetY: number;
   readonly view: View;
+  /** The 3D view's camera (a 3D program's frame uniforms); absent for a 2D program. */
+  readonly camera?: Camera3d;
   /** Sub-pixel offset in [0,1)² (shader-gen/view.ts sampleOffset). */
   readonly jitter: readonly [number, number];
   /** 1 normally; 0 makes the background transparent (export). */
@@ -112,4 +121,9 @@ export function setFrameUniforms(gl: WebGL2RenderingContext, gp: GpuProgram, f: 
   gl.uniform3f(at('u_view'), center[0], center[1], scale);
   gl.uniform2f(at('u_jitter'), f.jitter[0], f.jitter[1]);
   gl.uniform1f(at('u_bgAlpha'), f.bgAlpha);
+  if (f.camera) {
+    const camera = cameraUniforms(f.camera);
+    if (!camera.every(finite)) throw new Error(`non-finite camera ${JSON.stringify(f.camera)}`);
+    for (const u of camera) setUniform(gl, gp, u);
+  }
 }

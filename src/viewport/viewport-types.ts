@@ -1,7 +1,8 @@
 /** The Viewport's public option and result types (viewport.ts), the contract the editor uses. */
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
-import type { Scene } from '../../nodes/core/scene.ts';
+import type { Camera3d } from '../../nodes/core/scene-3d.ts';
 import type { View } from '../../nodes/core/view.ts';
+import type { Drawable } from './drawable.ts';
 
 export interface ViewportOptions {
   /** The compiler's and the driver's diagnostics (KF403 with node ids), whenever they change; [] when clean. */
@@ -33,11 +34,16 @@ export interface RenderToPixelsOptions {
   height: number;
   samples: number;
   view?: View;
+  /** The camera of a 3D scene (default: the live view's). */
+  camera?: Camera3d;
   transparent?: boolean;
   /** Fraction done in [0, 1]; return false to cancel. */
   // biome-ignore lint/suspicious/noConfusingVoidType: the editor's API (a callback may return nothing)
   onProgress?(f: number): boolean | void;
   tile?: number;
-  /** The scene to draw instead of the live one (e.g. with edge widths scaled for a larger export). */
-  scene?: Scene;
+  /**
+   * The scene to draw instead of the live one (e.g. with edge widths scaled for a larger export).
+   * `view` applies to a 2D scene, `camera` to a 3D one.
+   */
+  scene?: Drawable;
 }

@@ -6,10 +6,11 @@
  * several times faster) takes over until the next edit. Compile errors keep the last good frame on
  * screen and are reported with node ids. A lost WebGL context is rebuilt when the browser restores it.
  */
-import type { Scene, View } from '../../nodes/core/scene.ts';
-import { pixelToWorld } from '../../nodes/core/view.ts';
+import type { Camera3d } from '../../nodes/core/scene-3d.ts';
+import { DEFAULT_VIEW, type View } from '../../nodes/core/view.ts';
 import { sampleOffset } from '../../shader-gen/view.ts';
-import { type GpuPixelResult, type PixelInspection, probePixel } from './pixel-probe.ts';
+import { type Drawable, is3d } from './drawable.ts';
+import { inspectCssPoint, type PixelInspection } from './pixel-probe.ts';
 import { createTarget, disposeTarget, type RenderTarget } from './render-target.ts';
 import { Renderer } from './renderer.ts';
 import { type SceneProgram, SceneProgramBuilder } from './scene-program.ts';
@@ -35,8 +36,9 @@ export class Viewport {
   private readonly gl: WebGL2RenderingContext;
   private renderer: Renderer | null;
   private readonly programs: SceneProgramBuilder;
-  private scene: Scene | null = null;
+  private scene: Drawable | null = null;
   private explicitView: View | null = null;
+  private explicitCamera: Camera3d | null = null;
   private sceneDirty = false;
   /** The program drawing now, or null while the scene does not compile (the last frame stays). */
   private active: SceneProgram | null = null;
@@ -111,12 +113,24 @@ export class Viewport {
   /**
    * Recompiles only when the generated source changes (else uploads uniforms) and restarts
    * accumulation; a scene with the same source and values as the current one changes nothing.
+   * A 3D scene (Scene3d) is drawn through the camera of setCamera (else its own).
    */
-  setScene(scene: Scene): void {
+  setScene(scene: Drawable): void {
     if (!this.sceneDirty) this.sceneSetAt = performance.now();
     this.scene = scene;
     this.sceneDirty = true;
     this.requestFrame();
+  }
+
+  /** The scene drawn now (2D or 3D), or null before the first. */
+  drawing(): Drawable | null {
+    return this.scene;
+  }
+
+  /** The 3D view's camera (a frame uniform, like the 2D view): restarts accumulation; never compiles. */
+  setCamera(camera: Camera3d): void {
+    this.explicitCamera = camera;
+    this.restart();
   }
 
   /** Restarts accumulation; never compiles. */
@@ -154,6 +168,7 @@ export class Viewport {
         height: opts.height,
         samples: opts.samples,
         view: opts.view ?? this.view(scene),
+        camera: this.camera(scene, opts.camera),
         transparent: opts.transparent ?? false,
         tile: opts.tile,
         onProgress: opts.onProgress,
@@ -174,25 +189,11 @@ export class Viewport {
     }
   }
 
-  /**
-   * "Explain this pixel" at a CSS point of the canvas: the drawing-buffer pixel under it, the world
-   * point at its centre (what the picture's first sample shows) and the GPU's depth there
-   * (pixel-probe.ts); null before a scene is set.
-   */
+  /** "Explain this pixel" at a CSS point of the canvas (pixel-probe.ts); null before a 2D scene is set. */
   inspectAt(cssX: number, cssY: number): PixelInspection | null {
     const scene = this.scene;
-    if (!scene) return null;
-    const width = this.gl.drawingBufferWidth;
-    const height = this.gl.drawingBufferHeight;
-    const clamp = (v: number, n: number) => Math.min(n - 1, Math.max(0, Math.floor(v)));
-    const px = clamp((cssX * width) / Math.max(1, this.canvas.clientWidth), width);
-    const py = clamp(height - (cssY * height) / Math.max(1, this.canvas.clientHeight), height);
-    const view = this.view(scene);
-    const at = { px, py, width, height };
-    const gpu: GpuPixelResult = this.renderer
-      ? probePixel(this.renderer, scene, view, at)
-      : { ok: false, reason: 'the WebGL context is lost' };
-    return { pixel: at, world: pixelToWorld(view, width, height, px, py), gpu };
+    if (!scene || is3d(scene)) return null;
+    return inspectCssPoint(this.renderer, this.canvas, scene, this.view(scene), { x: cssX, y: cssY });
   }
 
   dispose(): void {
@@ -208,8 +209,14 @@ export class Viewport {
     this.active = null;
   }
 
-  private view(scene: Scene): View {
-    return this.explicitView ?? scene.view;
+  /** The 2D view; a 3D program has no u_view (it has a camera), so any view serves. */
+  private view(scene: Drawable): View {
+    return is3d(scene) ? DEFAULT_VIEW : (this.explicitView ?? scene.view);
+  }
+
+  /** The camera a 3D scene is drawn through: the one asked for, the view's, else the scene's. */
+  private camera(scene: Drawable, asked?: Camera3d): Camera3d | undefined {
+    return is3d(scene) ? (asked ?? this.explicitCamera ?? scene.camera) : undefined;
   }
 
   private requireRenderer(): Renderer {
@@ -262,7 +269,7 @@ export class Viewport {
     this.schedule(now, target);
   }
 
-  private drawFrame(renderer: Renderer, program: SceneProgram, scene: Scene, target: number): void {
+  private drawFrame(renderer: Renderer, program: SceneProgram, scene: Drawable, target: number): void {
     // The drawing buffer can be smaller than canvas.width × height (browsers cap its size).
     const width = this.gl.drawingBufferWidth;
     const height = this.gl.drawingBufferHeight;
@@ -279,6 +286,7 @@ export class Viewport {
       offsetX: 0,
       offsetY: 0,
       view: this.view(scene),
+      camera: this.camera(scene),
       jitter: sampleOffset(k),
       bgAlpha: 1,
     };

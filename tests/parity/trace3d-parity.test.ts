@@ -13,7 +13,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
 import { cameraUniforms, compile3d } from '../../shader-gen/space/compile-3d.ts';
 import { probeScene3d } from '../../shader-gen/space/render-3d.ts';
-import { FIG11, MOBIUS_BOX, PLANES } from '../shader-gen/space/scenes-3d.ts';
+import { exampleScenes3d, FIG11, MOBIUS_BOX, PLANES } from '../shader-gen/space/scenes-3d.ts';
 import { GpuProbe } from './gpu-probe.ts';
 
 const W = 96;
@@ -73,7 +73,16 @@ function compare(scene: Scene3d, gpuData: Float32Array) {
 }
 
 describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
-  const scenes: Record<string, Scene3d> = { fig11: FIG11, 'mobius-box': MOBIUS_BOX, planes: PLANES };
+  const examples = exampleScenes3d();
+  const scenes: Record<string, Scene3d> = {
+    fig11: FIG11,
+    'mobius-box': MOBIUS_BOX,
+    planes: PLANES,
+    // The 3D examples whose orbit is bounded (the unbounded ones march far on the CPU: slow here).
+    ...Object.fromEntries(
+      Object.entries(examples).filter(([name]) => !/parallel-planes|compound-parabolic/.test(name)),
+    ),
+  };
   for (const [name, scene] of Object.entries(scenes)) {
     it(`${name}: hit/miss, depth and seed agree on ≥ 99.5 % of robust pixels`, async () => {
       const image = await gpuProbe(scene);
@@ -85,7 +94,7 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
         'GPU ms': Math.round(image.ms),
       };
       expect(stats.robust).toBeGreaterThan(0.8 * W * H);
-      expect(stats.hits).toBeGreaterThan(0.03 * W * H); // the picture is not empty
+      expect(stats.hits).toBeGreaterThan(0.01 * W * H); // the picture is not empty
       expect(stats.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
     }, 120_000);
   }

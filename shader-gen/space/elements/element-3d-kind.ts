@@ -6,7 +6,7 @@
  *
  * Every inversion a step applies is reported to `push(r², far)` BEFORE the point moves (far =
  * |x' − c|, the distance of the image from the centre): the walk keeps one record per inversion on
- * a per-ray stack and folds the distance bound back through them (docs/math-3d.md §7). Isometries
+ * a per-ray stack and folds the distance bound back through them (docs/math-3d.md "§8 The tracer's distance bound"). Isometries
  * (plane reflections, the compound parabolic) push nothing: they keep distances.
  */
 import type { Element3d } from '../../../nodes/core/scene-3d.ts';

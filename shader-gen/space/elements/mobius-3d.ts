@@ -1,7 +1,7 @@
 /**
  * Two-sphere generator G = I_S2 ∘ I_S1 (docs/math-3d.md §2): inside A → I_S1 then I_S2; else
  * inside B → G⁻¹ = I_S1 ∘ I_S2. Two inversion records per application (the fallback bound of
- * docs/math-3d.md §7 composes through them). GLSL packing (4 vec4): d0 = (c1, r1²), d1 = (c2, r2²),
+ * docs/math-3d.md "§8 The tracer's distance bound" composes through them). GLSL packing (4 vec4): d0 = (c1, r1²), d1 = (c2, r2²),
  * d2 = (c1', r1'²) (S1' bounds B), d3 = (σA, σB, r1, r1').
  */
 import type { Element3d } from '../../../nodes/core/scene-3d.ts';

@@ -1,6 +1,6 @@
 /**
- * The GLSL march and shading, twins of ../trace-3d.ts and ../shade-3d.ts line by line (docs/math-3d.md
- * §8): rayInterval (bounding ball, or a far distance for unbounded orbits), traceRay (hit on the
+ * The GLSL march and shading, twins of ../trace-3d.ts and ../shade-3d.ts line by line
+ * (docs/math-3d.md "§9 The sphere tracer: march, hit, shading"): rayInterval (bounding ball, or a far distance for unbounded orbits), traceRay (hit on the
  * seed-image distance, step max(deScale·DE, ε)), and shadeHit (tetrahedral normal, Coloring3d,
  * Blinn–Phong, ambient occlusion, soft shadow). Scene values come through `v` (uniforms or literals).
  */

@@ -1,5 +1,5 @@
 /**
- * The GLSL walk, twin of ../walk.ts (docs/math-3d.md §7): the IIS loop with one straight-line
+ * The GLSL walk, twin of ../walk.ts (docs/math-3d.md "§8 The tracer's distance bound"): the IIS loop with one straight-line
  * block per element (its kind's step, no runtime switch), a fixed-size per-ray stack of inversion
  * records `vec4(local, r², far, reach)`, and the fold of the bound back through it. Emitted twice:
  * `walkRecord` (with the stack; returns the safe DE) and `walkPlain` (the seed-image distance only,

@@ -5,6 +5,8 @@
  */
 import type { JSX } from 'react';
 import type { HandleItem } from '../../../nodes/core/scene.ts';
+import type { Vec2 } from '../../../nodes/core/values.ts';
+import type { HandleRef } from '../../../nodes/graph/drag-patches.ts';
 import { OVERLAY_PX } from './constants.ts';
 import { circleCandidates, type LabelRequest, placeLabels, pointCandidates } from './label-placement.ts';
 import { circleRimVisible, clipLineToRect, type ScreenHandle, type ScreenItem } from './screen.ts';
@@ -23,7 +25,7 @@ export interface OverlayShapesProps {
   readonly showLabels: boolean;
 }
 
-const sameHandle = (a: HandleItem | null, b: HandleItem) => a?.nodeId === b.nodeId && a.handle === b.handle;
+const sameHandle = (a: HandleRef | null, b: HandleRef) => a?.nodeId === b.nodeId && a.handle === b.handle;
 
 /** An SVG path for a stroked shape (line clipped to the pane, circle), or null when off screen. */
 function strokePath(item: ScreenItem, width: number, height: number): string | null {
@@ -176,28 +178,48 @@ export function OverlayShapes(props: OverlayShapesProps): JSX.Element {
           </text>
         ))}
       </g>
-      <g>
-        {handles.map(({ item, at, color }) => {
-          const big =
-            sameHandle(hoverHandle, item) || sameHandle(dragTarget, item) || item.nodeId === hoveredNodeId;
-          const r = big ? OVERLAY_PX.handleRadiusHover : OVERLAY_PX.handleRadius;
-          // A knob: the node's colour in a white ring on a dark rim, so it reads on any picture.
-          return (
-            <g key={`${item.nodeId}/${item.handle}`}>
-              <circle cx={at[0]} cy={at[1]} r={r + OVERLAY_PX.outline} fill={OUTLINE_COLOR} />
-              <circle
-                data-handle={`${item.nodeId}/${item.handle}`}
-                cx={at[0]}
-                cy={at[1]}
-                r={r}
-                fill={color}
-                stroke="#ffffff"
-                strokeWidth={1.5}
-              />
-            </g>
-          );
-        })}
-      </g>
+      <HandleKnobs
+        handles={handles}
+        hoveredNodeId={hoveredNodeId}
+        hoverHandle={hoverHandle}
+        dragTarget={dragTarget}
+      />
     </>
+  );
+}
+
+export interface HandleKnobsProps<T extends HandleRef> {
+  readonly handles: readonly { readonly item: T; readonly at: Vec2; readonly color: string }[];
+  readonly hoveredNodeId: string | null;
+  readonly hoverHandle: T | null;
+  readonly dragTarget: T | null;
+}
+
+/** The grab handles (2D and 3D overlays): bigger when hovered, dragged, or their node is hovered. */
+export function HandleKnobs<T extends HandleRef>(props: HandleKnobsProps<T>): JSX.Element {
+  const { handles, hoveredNodeId, hoverHandle, dragTarget } = props;
+  return (
+    <g>
+      {handles.map(({ item, at, color }) => {
+        const big =
+          sameHandle(hoverHandle, item) || sameHandle(dragTarget, item) || item.nodeId === hoveredNodeId;
+        const r = big ? OVERLAY_PX.handleRadiusHover : OVERLAY_PX.handleRadius;
+        // A knob: the node's colour in a white ring on a dark rim, so it reads on any picture.
+        return (
+          <g key={`${item.nodeId}/${item.handle}`}>
+            <circle cx={at[0]} cy={at[1]} r={r + OVERLAY_PX.outline} fill={OUTLINE_COLOR} />
+            <circle
+              data-handle={`${item.nodeId}/${item.handle}`}
+              cx={at[0]}
+              cy={at[1]}
+              r={r}
+              fill={color}
+              stroke="#ffffff"
+              strokeWidth={1.5}
+            />
+          </g>
+        );
+      })}
+    </g>
   );
 }

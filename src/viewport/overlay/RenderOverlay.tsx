@@ -8,16 +8,20 @@
  * from it) and ignore a pointerdown whose `defaultPrevented` is set: that one grabbed a handle.
  */
 import { type JSX, useMemo, useRef } from 'react';
-import type { View } from '../../../nodes/core/scene.ts';
+import type { HandleItem, View } from '../../../nodes/core/scene.ts';
+import type { Vec2 } from '../../../nodes/core/values.ts';
 import type { GraphDoc } from '../../../nodes/graph/document.ts';
-import type { NodePatch } from '../../../nodes/graph/drag-patches.ts';
+import { dragPatches, type NodePatch } from '../../../nodes/graph/drag-patches.ts';
 import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
+import { OVERLAY_PX } from './constants.ts';
+import { hitShape } from './hit-test.ts';
 import { KeptSides } from './KeptSides.tsx';
 import { keptSideShapes } from './kept-side-shapes.ts';
 import { OverlayShapes } from './OverlayShapes.tsx';
 import { SnapGuides } from './SnapGuides.tsx';
-import { placeHandles, placeOverlays, type Screen } from './screen.ts';
-import { useOverlayPointer } from './use-overlay-pointer.ts';
+import { placeHandles, placeOverlays, pxPerWorld, type Screen, toWorld } from './screen.ts';
+import { snapHandle } from './snap-rules.ts';
+import { type DragPlacer, useOverlayPointer } from './use-overlay-pointer.ts';
 
 export type { NodePatch } from '../../../nodes/graph/drag-patches.ts';
 
@@ -42,6 +46,21 @@ export interface RenderOverlayProps {
 
 const FALLBACK_COLOR = '#ffffff';
 
+/**
+ * A 2D handle drag: the handle keeps its offset from the pointer (it does not jump to it) and,
+ * with Shift, snaps (snap-rules.ts) to the grid, angles and tangencies of the construction.
+ */
+function grabInPlane(screen: Screen, target: HandleItem, css: Vec2, evaluation: Evaluation): DragPlacer {
+  const p = toWorld(screen, css);
+  const offset: Vec2 = [target.at[0] - p[0], target.at[1] - p[1]];
+  return (at, shift) => {
+    const w = toWorld(screen, at);
+    const want: Vec2 = [w[0] + offset[0], w[1] + offset[1]];
+    const snap = shift ? snapHandle(evaluation.scene.overlays, target, want, pxPerWorld(screen)) : null;
+    return { patches: dragPatches(evaluation, target, snap ? snap.at : want), snap };
+  };
+}
+
 export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
   const { evaluation, view, width, height, hoveredNodeId, showLabels = true, readOnly = false } = props;
   const ref = useRef<SVGSVGElement>(null);
@@ -65,11 +84,18 @@ export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
     () => (sized ? keptSideShapes(evaluation.scene.elements, screen) : []),
     [sized, evaluation, screen],
   );
-  const { drag, hoverHandle } = useOverlayPointer(ref, {
+  const { drag, hoverHandle } = useOverlayPointer<HandleItem>(ref, {
     evaluation,
-    screen,
-    items,
     handles,
+    hoverGeometry: (css) => {
+      const j = hitShape(
+        items.map((it) => it.shape),
+        css,
+        OVERLAY_PX.geometryHit,
+      );
+      return j >= 0 ? items[j].nodeId : null;
+    },
+    grab: (target, css, atDown) => grabInPlane(screen, target, css, atDown),
     onHoverNode: props.onHoverNode,
     onPreview: props.onPreview,
     onCommit: props.onCommit,

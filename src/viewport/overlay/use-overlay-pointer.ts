@@ -1,58 +1,69 @@
 /**
- * Pointer handling of the render overlay: hover (handles, then geometry) and handle drags with
- * pointer capture, Shift snapping, previews throttled to animation frames, one commit on release
- * and Escape to cancel. Listeners are native (not React's delegated ones) so that
- * `preventDefault()` on a grabbed handle is already set when the pointerdown bubbles to the pan/zoom
- * handler of the pane; every other event goes through untouched, so the view pans and pinches.
+ * Pointer handling of the render overlay, 2D and 3D alike: hover (handles, then geometry) and
+ * handle drags with pointer capture, Shift snapping, previews throttled to animation frames, one
+ * commit on release and Escape to cancel. Listeners are native (not React's delegated ones) so that
+ * `preventDefault()` on a grabbed handle is already set when the pointerdown bubbles to the
+ * pan/zoom (or orbit) handler of the pane; every other event goes through untouched, so the view
+ * pans and pinches. Where a pointer moves a handle to is the caller's (`grab`): the plane's
+ * world mapping with snapping in 2D, the screen-parallel plane through the handle in 3D.
  */
 import { type RefObject, useEffect, useRef, useState } from 'react';
-import type { HandleItem } from '../../../nodes/core/scene.ts';
 import type { Vec2 } from '../../../nodes/core/values.ts';
-import { dragPatches, type NodePatch, originalParams } from '../../../nodes/graph/drag-patches.ts';
+import { type HandleRef, type NodePatch, originalParams } from '../../../nodes/graph/drag-patches.ts';
 import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
 import { OVERLAY_PX } from './constants.ts';
-import { hitHandle, hitShape } from './hit-test.ts';
-import { pxPerWorld, type Screen, type ScreenHandle, type ScreenItem, toWorld } from './screen.ts';
-import { type SnapGuide, snapHandle } from './snap-rules.ts';
+import { hitHandle } from './hit-test.ts';
+import type { SnapGuide } from './snap-rules.ts';
 
-export interface PointerInputs {
+/** A snap in effect: the guide drawn and where the handle snapped to (world). */
+export type DragSnap = { readonly guide: SnapGuide; readonly at: Vec2 } | null;
+
+/** Where the grabbed handle goes for the pointer at `css` (Shift held: `shift`), as params patches. */
+export type DragPlacer = (css: Vec2, shift: boolean) => { patches: NodePatch[]; snap: DragSnap };
+
+export interface PointerInputs<T extends HandleRef> {
   readonly evaluation: Evaluation;
-  readonly screen: Screen;
-  readonly items: readonly ScreenItem[];
-  readonly handles: readonly ScreenHandle[];
+  /** The handles as drawn: centre in CSS pixels and what they are. */
+  readonly handles: readonly { readonly at: Vec2; readonly item: T }[];
+  /** The node whose geometry is under `css` (within reach), or null. */
+  readonly hoverGeometry: (css: Vec2) => string | null;
+  /**
+   * Pointer-down on `target` at `css`: the mapping of the pointer's later positions, fixed for the
+   * drag (`evaluation` is the one at pointer-down, so previews never feed back).
+   */
+  readonly grab: (target: T, css: Vec2, evaluation: Evaluation) => DragPlacer;
   readonly onHoverNode: (id: string | null) => void;
   readonly onPreview: (patches: NodePatch[]) => void;
   readonly onCommit: (patches: NodePatch[]) => void;
   /** Inspect mode: no handle grabs (a click explains the pixel instead). */
-  readonly inspecting: boolean;
+  readonly inspecting?: boolean;
 }
 
 /** What the overlay draws about the drag in progress. */
-export interface DragView {
-  readonly target: HandleItem;
-  readonly snap: { readonly guide: SnapGuide; readonly at: Vec2 } | null;
+export interface DragView<T extends HandleRef> {
+  readonly target: T;
+  readonly snap: DragSnap;
 }
 
-export interface OverlayPointer {
-  readonly drag: DragView | null;
+export interface OverlayPointer<T extends HandleRef> {
+  readonly drag: DragView<T> | null;
   /** The handle under the pointer (grab cursor, bigger handle), when not dragging. */
-  readonly hoverHandle: HandleItem | null;
+  readonly hoverHandle: T | null;
 }
 
-interface DragState {
+interface DragState<T extends HandleRef> {
   readonly pointerId: number;
-  readonly target: HandleItem;
-  /** Evaluation at pointer-down: every move maps from it, so previews never feed back. */
+  readonly target: T;
+  /** Evaluation at pointer-down (what Escape puts back is read from it). */
   readonly evaluation: Evaluation;
-  /** Handle position − pointer position (world) at pointer-down: the handle does not jump. */
-  readonly grabOffset: Vec2;
+  readonly place: DragPlacer;
   readonly start: Vec2;
   last: Vec2;
   shift: boolean;
   moved: boolean;
   /** Patches not yet previewed (the next animation frame sends them) and their snap guide. */
   pending: NodePatch[] | null;
-  pendingSnap: DragView['snap'];
+  pendingSnap: DragSnap;
   /** Every patch previewed so far, merged (what Escape has to put back). */
   touched: Map<string, Record<string, unknown>>;
   frame: number | null;
@@ -63,19 +74,19 @@ const localPoint = (el: Element, e: { clientX: number; clientY: number }): Vec2 
   return [e.clientX - r.left, e.clientY - r.top];
 };
 
-export function useOverlayPointer(
+export function useOverlayPointer<T extends HandleRef>(
   ref: RefObject<SVGSVGElement | null>,
-  inputs: PointerInputs,
-): OverlayPointer {
+  inputs: PointerInputs<T>,
+): OverlayPointer<T> {
   const latest = useRef(inputs);
   latest.current = inputs;
-  const [drag, setDrag] = useState<DragView | null>(null);
-  const [hoverHandle, setHoverHandle] = useState<HandleItem | null>(null);
+  const [drag, setDrag] = useState<DragView<T> | null>(null);
+  const [hoverHandle, setHoverHandle] = useState<T | null>(null);
 
   useEffect(() => {
     const el = ref.current;
     if (!el) return;
-    let state: DragState | null = null;
+    let state: DragState<T> | null = null;
     let reportedHover: string | null = null;
 
     const reportHover = (id: string | null) => {
@@ -84,19 +95,9 @@ export function useOverlayPointer(
       latest.current.onHoverNode(id);
     };
 
-    /** Where the dragged handle goes for the pointer at css (snapped when Shift is held). */
-    const place = (s: DragState, css: Vec2) => {
-      const { screen } = latest.current;
-      const p = toWorld(screen, css);
-      const want: Vec2 = [p[0] + s.grabOffset[0], p[1] + s.grabOffset[1]];
-      if (!s.shift) return { at: want, snap: null };
-      const snapped = snapHandle(s.evaluation.scene.overlays, s.target, want, pxPerWorld(screen));
-      return { at: snapped.at, snap: snapped };
-    };
-
-    const update = (s: DragState) => {
-      const { at, snap } = place(s, s.last);
-      s.pending = dragPatches(s.evaluation, s.target, at);
+    const update = (s: DragState<T>) => {
+      const { patches, snap } = s.place(s.last, s.shift);
+      s.pending = patches;
       s.pendingSnap = snap;
       for (const { nodeId, params } of s.pending)
         s.touched.set(nodeId, { ...s.touched.get(nodeId), ...params });
@@ -111,7 +112,7 @@ export function useOverlayPointer(
       }
     };
 
-    const end = (s: DragState) => {
+    const end = (s: DragState<T>) => {
       if (s.frame !== null) cancelAnimationFrame(s.frame);
       state = null;
       if (el.hasPointerCapture(s.pointerId)) el.releasePointerCapture(s.pointerId);
@@ -119,7 +120,7 @@ export function useOverlayPointer(
     };
 
     /** Puts every previewed key back to its value before the drag; nothing is committed. */
-    const cancel = (s: DragState) => {
+    const cancel = (s: DragState<T>) => {
       end(s);
       if (s.touched.size === 0) return;
       const touched = [...s.touched].map(([nodeId, params]) => ({ nodeId, params }));
@@ -136,7 +137,7 @@ export function useOverlayPointer(
       if (!e.isPrimary || (e.pointerType === 'mouse' && e.button !== 0)) return;
       // Inspect mode and Alt-click explain the pixel under the pointer: they never grab a handle.
       if (latest.current.inspecting || e.altKey) return;
-      const { handles, evaluation, screen } = latest.current;
+      const { handles, evaluation, grab } = latest.current;
       const css = localPoint(el, e);
       const i = hitHandle(
         handles.map((h) => h.at),
@@ -146,12 +147,11 @@ export function useOverlayPointer(
       if (i < 0) return;
       e.preventDefault();
       const target = handles[i].item;
-      const p = toWorld(screen, css);
       state = {
         pointerId: e.pointerId,
         target,
         evaluation,
-        grabOffset: [target.at[0] - p[0], target.at[1] - p[1]],
+        place: grab(target, css, evaluation),
         start: css,
         last: css,
         shift: e.shiftKey,
@@ -169,7 +169,7 @@ export function useOverlayPointer(
 
     /** Hover: the handle under the pointer, else the nearest geometry within reach. */
     const hover = (css: Vec2) => {
-      const { handles, items } = latest.current;
+      const { handles, hoverGeometry } = latest.current;
       const i = hitHandle(
         handles.map((h) => h.at),
         css,
@@ -180,12 +180,7 @@ export function useOverlayPointer(
         old?.nodeId === handle?.nodeId && old?.handle === handle?.handle ? old : handle,
       );
       if (handle) return reportHover(handle.nodeId);
-      const j = hitShape(
-        items.map((it) => it.shape),
-        css,
-        OVERLAY_PX.geometryHit,
-      );
-      reportHover(j >= 0 ? items[j].nodeId : null);
+      reportHover(hoverGeometry(css));
     };
 
     const onPointerMove = (e: PointerEvent) => {
@@ -206,7 +201,7 @@ export function useOverlayPointer(
         s.shift = e.shiftKey;
         if (css[0] !== s.start[0] || css[1] !== s.start[1]) s.moved = true;
         end(s);
-        if (s.moved) latest.current.onCommit(dragPatches(s.evaluation, s.target, place(s, s.last).at));
+        if (s.moved) latest.current.onCommit(s.place(s.last, s.shift).patches);
       }
       // What is under the pointer now (the drag moved things, or ended over something else).
       if (!state && e.isPrimary && e.pointerType !== 'touch') hover(css);

@@ -1,5 +1,5 @@
 /**
- * The CPU sphere tracer (shader-gen/space/trace-3d.ts, docs/math-3d.md §9): a lone sphere seen
+ * The CPU sphere tracer (shader-gen/space/trace-3d.ts, docs/math-3d.md "§9 The sphere tracer: march, hit, shading"): a lone sphere seen
  * head-on is hit where the geometry says and missed just outside; a mirror-symmetric scene gives
  * a mirror-symmetric image; inversion spheres stay invisible — only the orbit is drawn — and the
  * traced image of Fig. 11 matches a brute-force ray cast of its enumerated orbit spheres (the

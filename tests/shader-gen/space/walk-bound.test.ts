@@ -1,5 +1,5 @@
 /**
- * The tracer's distance bound (docs/math-3d.md §8) is safe: on random configurations it never
+ * The tracer's distance bound (docs/math-3d.md "§8 The tracer's distance bound") is safe: on random configurations it never
  * exceeds the brute-force distance to the enumerated orbit spheres — Fig. 11-like inversion scenes
  * (content balls and reaches) and two-sphere generators (the conservative fallback) — while the
  * plain estimate seedDistance(final)/factor does overshoot on the same points.

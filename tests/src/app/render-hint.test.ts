@@ -45,4 +45,25 @@ describe('renderHint', () => {
     );
     expect(hintOf(d)).toBeNull();
   });
+
+  it('a 3D render shows its picture; a failing one names its error, not "add a Render node"', () => {
+    const ok = doc(
+      [
+        node('s', 'sphere'),
+        node('i', 'sphere-inversion'),
+        node('g', 'seed-sphere', { center: [3, 0, 0] }),
+        node('r', 'render-3d'),
+      ],
+      [
+        edge('e1', 's.sphere', 'i.sphere'),
+        edge('e2', 'i.element', 'r.elements'),
+        edge('e3', 'g.seed', 'r.seeds'),
+      ],
+    );
+    expect(hintOf(ok)).toBeNull();
+    // The camera on the point it looks at: the render node itself fails, and the hint says so.
+    const bad = doc([node('r', 'render-3d', { camera: [1, 1, 1], target: [1, 1, 1] })]);
+    expect(hintOf(bad)).toMatchObject({ tone: 'error', nodeId: 'r' });
+    expect(hintOf(bad)?.text).toMatch(/^No picture: Render 3D — .*coincide/);
+  });
 });

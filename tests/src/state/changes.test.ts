@@ -106,4 +106,16 @@ describe('applyChange', () => {
     const v = apply(base(), { type: 'set-view', view: { center: [1, 1], scale: 2 } });
     expect(v.view).toEqual({ center: [1, 1], scale: 2 });
   });
+
+  it('set-camera-3d stores the 3D camera; null removes it; the same camera is a no-op', () => {
+    const camera: NonNullable<GraphDoc['camera3d']> = { position: [1, 2, 3], target: [0, 0, 0], fovDeg: 30 };
+    const d = apply(base(), { type: 'set-camera-3d', camera });
+    expect(d.camera3d).toEqual(camera);
+    expect(
+      apply(d, { type: 'set-camera-3d', camera: { ...camera, position: [1, 2, 3], target: [0, 0, 0] } }),
+    ).toBe(d);
+    const cleared = apply(d, { type: 'set-camera-3d', camera: null });
+    expect('camera3d' in cleared).toBe(false);
+    expect(apply(cleared, { type: 'set-camera-3d', camera: null })).toBe(cleared);
+  });
 });

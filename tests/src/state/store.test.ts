@@ -68,6 +68,19 @@ describe('editor store: history', () => {
     expect(s.getState().doc.view).toEqual({ center: [3, 3], scale: 9 });
   });
 
+  it('the 3D camera is view state too: silent, and undo keeps the current camera', () => {
+    const s = createEditorStore(doc(), registry);
+    const camera: NonNullable<GraphDoc['camera3d']> = { position: [4, 4, 4], target: [0, 0, 1], fovDeg: 35 };
+    s.dispatch(setX(1));
+    s.dispatchSilently({ type: 'set-camera-3d', camera });
+    expect(s.getState().history.past).toHaveLength(1);
+    s.undo();
+    expect(x(s.getState().doc)).toBe(0);
+    expect(s.getState().doc.camera3d).toEqual(camera);
+    s.redo();
+    expect(s.getState().doc.camera3d).toEqual(camera);
+  });
+
   it('selection is not history: selecting never adds a step, and deleted nodes leave the selection', () => {
     const s = createEditorStore(doc(), registry);
     s.setSelection(['p']);

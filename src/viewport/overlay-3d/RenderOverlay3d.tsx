@@ -1,0 +1,174 @@
+/**
+ * Direct manipulation in the 3D view: each 3D node's wireframe (points, sphere outlines, plane
+ * patches, boxes) drawn over the picture in its colour, hover both ways, and draggable handles. A
+ * handle moves in the plane through it parallel to the screen (camera-3d.ts pointOnScreenPlane);
+ * the new position goes through dragPatches3d to the same preview / commit path as a 2D drag, so
+ * a drag only changes values (uniforms) and never recompiles.
+ */
+import { type JSX, useMemo, useRef } from 'react';
+import type { Camera3d, Handle3dItem, Scene3d } from '../../../nodes/core/scene-3d.ts';
+import type { Vec2 } from '../../../nodes/core/values.ts';
+import type { NodePatch } from '../../../nodes/graph/drag-patches.ts';
+import { dragPatches3d } from '../../../nodes/graph/drag-patches-3d.ts';
+import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
+import { type PaneSize, pointOnScreenPlane } from '../camera-3d.ts';
+import { OVERLAY_PX } from '../overlay/constants.ts';
+import { HandleKnobs, LABEL_COLOR, OUTLINE_COLOR } from '../overlay/OverlayShapes.tsx';
+import { type DragPlacer, useOverlayPointer } from '../overlay/use-overlay-pointer.ts';
+import {
+  itemNear,
+  pathData,
+  placeHandles3d,
+  placeOverlays3d,
+  type Screen3dItem,
+} from './project-overlays.ts';
+
+export interface RenderOverlay3dProps {
+  evaluation: Evaluation;
+  scene: Scene3d;
+  camera: Camera3d;
+  width: number;
+  height: number;
+  hoveredNodeId: string | null;
+  onHoverNode(id: string | null): void;
+  /** Live while dragging (at most once per animation frame), no history. */
+  onPreview(patches: NodePatch[]): void;
+  /** On pointer-up after a drag: one undo step. */
+  onCommit(patches: NodePatch[]): void;
+}
+
+const FALLBACK_COLOR = '#ffffff';
+
+/**
+ * A 3D handle drag: the handle keeps its pixel offset from the pointer and moves in the plane
+ * through where it was, parallel to the screen.
+ */
+function grabOnScreenPlane(
+  camera: Camera3d,
+  pane: PaneSize,
+  target: Handle3dItem & { readonly x: number; readonly y: number },
+  css: Vec2,
+  evaluation: Evaluation,
+): DragPlacer {
+  const ox = target.x - css[0];
+  const oy = target.y - css[1];
+  return (at) => {
+    const to = pointOnScreenPlane(camera, pane, target.at, at[0] + ox, at[1] + oy);
+    return { patches: to ? dragPatches3d(evaluation, target, to) : [], snap: null };
+  };
+}
+
+function Wireframe({ item, hot }: { item: Screen3dItem; hot: boolean }): JSX.Element {
+  const w = hot ? OVERLAY_PX.strokeHover : OVERLAY_PX.stroke;
+  const d = item.lines.map(pathData).join('');
+  return (
+    <g data-node={item.nodeId} fill="none" strokeLinejoin="round">
+      {d && hot && <path d={d} stroke={item.color} strokeWidth={w + 8} opacity={0.25} />}
+      {d && <path d={d} stroke={OUTLINE_COLOR} strokeWidth={w + 2 * OVERLAY_PX.outline} />}
+      {d && <path d={d} stroke={item.color} strokeWidth={w} />}
+      {item.dot && (
+        <circle
+          cx={item.dot[0]}
+          cy={item.dot[1]}
+          r={OVERLAY_PX.pointRadius + (hot ? 1.5 : 0)}
+          fill={item.color}
+          stroke={OUTLINE_COLOR}
+          strokeWidth={OVERLAY_PX.outline}
+        />
+      )}
+    </g>
+  );
+}
+
+/** Where a label goes: beside the dot, else beside the first point of the first line. */
+function labelAt(item: Screen3dItem): Vec2 | null {
+  const p = item.dot ?? item.lines[0]?.[0];
+  return p ? [p[0] + OVERLAY_PX.labelOffset, p[1] - OVERLAY_PX.labelOffset] : null;
+}
+
+export function RenderOverlay3d(props: RenderOverlay3dProps): JSX.Element {
+  const { evaluation, scene, camera, width, height, hoveredNodeId } = props;
+  const ref = useRef<SVGSVGElement>(null);
+  const sized = width > 0 && height > 0;
+  const pane = useMemo<PaneSize>(() => ({ width, height }), [width, height]);
+  const items = useMemo(
+    () => (sized ? placeOverlays3d(scene.overlays, camera, pane) : []),
+    [sized, scene, camera, pane],
+  );
+  const handles = useMemo(
+    () =>
+      (sized ? placeHandles3d(scene.handles, camera, pane) : []).map((h) => ({
+        item: h,
+        at: [h.x, h.y] as Vec2,
+        color: evaluation.analysis.nodes.get(h.nodeId)?.def?.color ?? FALLBACK_COLOR,
+      })),
+    [sized, scene, camera, pane, evaluation],
+  );
+  const { drag, hoverHandle } = useOverlayPointer(ref, {
+    evaluation,
+    handles,
+    hoverGeometry: (css) => itemNear(items, css, OVERLAY_PX.geometryHit),
+    grab: (target, css, atDown) => grabOnScreenPlane(camera, pane, target, css, atDown),
+    onHoverNode: props.onHoverNode,
+    onPreview: props.onPreview,
+    onCommit: props.onCommit,
+  });
+  const hot = drag ? drag.target.nodeId : hoveredNodeId;
+  // Keys: the node id and how many of that node's items came before (a node may draw several).
+  const wireframes: JSX.Element[] = [];
+  const labels: JSX.Element[] = [];
+  const seen = new Map<string, number>();
+  const labelled = new Set<string>();
+  for (const item of items) {
+    const n = seen.get(item.nodeId) ?? 0;
+    seen.set(item.nodeId, n + 1);
+    wireframes.push(<Wireframe key={`${item.nodeId}:${n}`} item={item} hot={item.nodeId === hot} />);
+    const at = item.label && !labelled.has(item.nodeId) ? labelAt(item) : null;
+    if (at) labelled.add(item.nodeId);
+    if (at)
+      labels.push(
+        <text key={item.nodeId} x={at[0]} y={at[1]} className="kf-overlay-label">
+          {item.label}
+        </text>,
+      );
+  }
+  return (
+    <svg
+      ref={ref}
+      className="kf-render-overlay"
+      width={width}
+      height={height}
+      viewBox={`0 0 ${width} ${height}`}
+      role="img"
+      aria-label="3D construction overlay: drag the handles to move points and spheres"
+      style={{
+        position: 'absolute',
+        inset: 0,
+        touchAction: 'none',
+        userSelect: 'none',
+        overflow: 'hidden',
+        cursor: drag ? 'grabbing' : hoverHandle ? 'grab' : undefined,
+      }}
+    >
+      <g>{wireframes}</g>
+      <g
+        fontSize={OVERLAY_PX.labelFont}
+        fontFamily="system-ui, sans-serif"
+        fontWeight={600}
+        fill={LABEL_COLOR}
+        stroke={OUTLINE_COLOR}
+        strokeWidth={3}
+        paintOrder="stroke"
+        strokeLinejoin="round"
+      >
+        {labels}
+      </g>
+      <HandleKnobs
+        handles={handles}
+        hoveredNodeId={hoveredNodeId}
+        hoverHandle={hoverHandle}
+        dragTarget={drag?.target ?? null}
+      />
+    </svg>
+  );
+}

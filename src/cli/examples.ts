@@ -35,3 +35,8 @@ export function exampleDigest(name: string, dir = EXAMPLES_DIR): string {
     .update(readFileSync(examplePath(name, dir)))
     .digest('hex');
 }
+
+/** Every bundled example, plane and space: its name and the folder it lives in. */
+export function allExamples(): { readonly name: string; readonly dir: string }[] {
+  return [EXAMPLES_DIR, EXAMPLES_3D_DIR].flatMap((dir) => exampleNames(dir).map((name) => ({ name, dir })));
+}

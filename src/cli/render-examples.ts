@@ -14,10 +14,10 @@ import { LIMITS } from '../../nodes/core/scene.ts';
 import { parseArgs, parseSizeOption, stringOption } from './args.ts';
 import { CliError } from './command.ts';
 import {
+  allExamples,
   EXAMPLES_PNG_DIR,
   EXAMPLES_THUMB_DIR,
   exampleDigest,
-  exampleNames,
   examplePath,
   THUMB_SOURCES,
 } from './examples.ts';
@@ -41,14 +41,16 @@ async function main(argv: readonly string[]): Promise<number> {
       ? parseSizeOption('size', sizeText, LIMITS.maxImageSide)
       : DEFAULT_SIZE;
   const outDir = thumbs ? EXAMPLES_THUMB_DIR : EXAMPLES_PNG_DIR;
-  const all = exampleNames();
+  // Plane and space examples alike (3D ones are sphere traced by the CPU tracer: slower).
+  const dirs = new Map(allExamples().map((e) => [e.name, e.dir]));
+  const all = [...dirs.keys()];
   const names = parsed.positionals.length ? [...parsed.positionals] : all;
-  const unknown = names.filter((n) => !all.includes(n));
+  const unknown = names.filter((n) => !dirs.has(n));
   if (unknown.length) throw new CliError(`no such example: ${unknown.join(', ')} (have: ${all.join(', ')})`);
   await mkdir(outDir, { recursive: true });
   const jobs: RenderJob[] = names.map((name) => ({
     name,
-    input: examplePath(name),
+    input: examplePath(name, dirs.get(name)),
     output: join(outDir, `${name}.png`),
     width,
     height,
@@ -84,7 +86,8 @@ async function recordThumbSources(rendered: readonly string[], all: readonly str
   } catch {
     // first run: no record yet
   }
-  for (const name of rendered) sources[name] = exampleDigest(name);
+  const dirs = new Map(allExamples().map((e) => [e.name, e.dir]));
+  for (const name of rendered) sources[name] = exampleDigest(name, dirs.get(name));
   const kept = Object.fromEntries(
     Object.entries(sources)
       .filter(([name]) => all.includes(name))

@@ -1,12 +1,13 @@
 /**
  * One render job of `npm run render-examples`, run on a worker thread: load the example with the
- * CLI's loader, render it on the CPU, write the PNG. Answers each job with its time or its error.
+ * CLI's loader, render it on the CPU (the IIS raster, or the sphere tracer for a 3D graph), write
+ * the PNG. Answers each job with its time or its error.
  */
 import { parentPort } from 'node:worker_threads';
 import { CliError } from './command.ts';
-import { loadScene } from './load-graph.ts';
+import { loadAnyScene } from './load-graph.ts';
 import { nodeIo } from './node-io.ts';
-import { renderScenePng } from './render-png.ts';
+import { renderScene3dPng, renderScenePng } from './render-png.ts';
 
 export interface RenderJob {
   readonly name: string;
@@ -30,12 +31,13 @@ export async function runRenderJob(job: RenderJob): Promise<RenderJobResult> {
   const started = performance.now();
   const io = nodeIo();
   try {
-    const { scene, text } = await loadScene(io, job.input);
-    const png = renderScenePng(scene, job.embedGraph ? text : null, {
-      width: job.width,
-      height: job.height,
-      samples: job.samples,
-    });
+    const { picture, text } = await loadAnyScene(io, job.input);
+    const request = { width: job.width, height: job.height, samples: job.samples };
+    const graph = job.embedGraph ? text : null;
+    const png =
+      picture.kind === '3d'
+        ? renderScene3dPng(picture.scene3d, graph, request)
+        : renderScenePng(picture.scene, graph, request);
     await io.writeFile(job.output, png);
     return { name: job.name, ms: performance.now() - started };
   } catch (e) {

@@ -78,9 +78,15 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
     fig11: FIG11,
     'mobius-box': MOBIUS_BOX,
     planes: PLANES,
-    // The 3D examples whose orbit is bounded (the unbounded ones march far on the CPU: slow here).
+    // The 3D examples whose orbit is bounded (the unbounded ones — the plane examples and the
+    // infinite sphairahedron's terrain — march far on the CPU: slow here). Not the quasi-sphere
+    // (Fig. 26) either: at this size the tracer draws only scattered fragments of it (a known
+    // defect of the distance bound with overlapping mirrors, see README "Known limitations"), so
+    // there is too little picture to compare.
     ...Object.fromEntries(
-      Object.entries(examples).filter(([name]) => !/parallel-planes|compound-parabolic/.test(name)),
+      Object.entries(examples).filter(
+        ([name]) => !/parallel-planes|compound-parabolic|fractal-terrain|quasi-sphere/.test(name),
+      ),
     ),
   };
   for (const [name, scene] of Object.entries(scenes)) {

@@ -26,7 +26,7 @@ beforeAll(async () => {
   await context.addInitScript(() => localStorage.setItem('kleinflow.split', '0.8'));
   page = await context.newPage();
   page.setDefaultTimeout(90_000);
-  await page.goto(app.url);
+  await page.goto(`${app.url}?test`);
   await waitRendered(page);
 }, 180_000);
 
@@ -42,6 +42,15 @@ async function openExample(id: string) {
       timeout: 90_000,
     })
     .toBe(title);
+  // The picture is not what is tested: make the sphere tracer cheap (march steps and shading are
+  // values only — the mesh depends on the geometry and max iterations, which stay as they are),
+  // so the page is not frozen by SwiftShader while the test clicks the menus.
+  await page.evaluate(() =>
+    window.__kleinflow!.store.dispatchSilently({
+      type: 'set-params',
+      patches: [{ nodeId: 'render', params: { samples: 1, marchSteps: 16, occlusion: 0, shadow: 0 } }],
+    }),
+  );
 }
 
 describe('Export → STL mesh', () => {

@@ -22,33 +22,30 @@ export interface PngRequest {
 
 /** `graphText` null: no graph inside (gallery thumbnails, which only ever show). */
 export function renderScenePng(scene: Scene, graphText: string | null, request: PngRequest): Uint8Array {
-  const onProgress = request.onProgress;
   const image = rasterize(scene, {
     pictures: scenePictures(scene),
     width: request.width,
     height: request.height,
     samples: request.samples,
-    onProgress: onProgress
-      ? (done) => {
-          onProgress(done);
-          return true;
-        }
-      : undefined,
+    onProgress: keepGoing(request.onProgress),
   });
   return encodePng(image, graphText === null ? {} : { [PNG_GRAPH_KEY]: graphText });
 }
 
+/** A progress callback that never cancels (the renderers stop when their callback says false). */
+const keepGoing = (onProgress?: (done: number) => void) =>
+  onProgress
+    ? (done: number) => {
+        onProgress(done);
+        return true;
+      }
+    : undefined;
+
 /** A 3D graph's picture: the CPU sphere tracer at the graph's camera, graph embedded like 2D. */
 export function renderScene3dPng(scene: Scene3d, graphText: string | null, request: PngRequest): Uint8Array {
-  const onProgress = request.onProgress;
   const image = renderScene3d(scene, request.width, request.height, {
     samples: request.samples,
-    onProgress: onProgress
-      ? (done) => {
-          onProgress(done);
-          return true;
-        }
-      : undefined,
+    onProgress: keepGoing(request.onProgress),
   });
   return encodePng(image, graphText === null ? {} : { [PNG_GRAPH_KEY]: graphText });
 }

@@ -4,6 +4,7 @@
  * (nodes/graph/loop-period.ts), or seconds — and samples per pixel; a progress bar with Cancel
  * while the frames are rendered at t = i/fps (src/app/animation-export.ts).
  */
+
 import { useEffect, useRef, useState } from 'react';
 import { LIMITS, type View } from '../../../nodes/core/scene.ts';
 import { loopFrameCount, loopIsFrameExact } from '../../../nodes/graph/frame-times.ts';
@@ -12,6 +13,7 @@ import type { AnimationExportOptions } from '../animation-export.ts';
 import { ANIMATION_FORMATS, type AnimationFormat, evenSize } from '../animation-formats.ts';
 import { useModalDialog } from '../use-modal-dialog.ts';
 import type { Size } from './ExportDialog.tsx';
+import { ExportDialogShell } from './ExportDialogShell.tsx';
 import { useExportRun } from './use-export-run.ts';
 
 interface Props {
@@ -92,24 +94,17 @@ export function AnimationExportDialog({ viewSize, view, defaultSamples, loop, ru
   const close = exportRun.close;
 
   return (
-    <dialog
-      ref={dialog.ref}
-      className="kf-dialog kf-export"
-      aria-label="Export animation"
-      onCancel={(e) => {
-        e.preventDefault();
-        close();
-      }}
+    <ExportDialogShell
+      dialogRef={dialog.ref}
+      title="Export animation"
+      lead={
+        <>
+          Every frame is rendered on the GPU at t = frame ÷ fps with the full sample count, like the PNG
+          export.
+        </>
+      }
+      onClose={close}
     >
-      <header className="kf-dialog__header">
-        <h2>Export animation</h2>
-        <button type="button" className="kf-icon-button" aria-label="Close export" onClick={close}>
-          ×
-        </button>
-      </header>
-      <p className="kf-dialog__lead">
-        Every frame is rendered on the GPU at t = frame ÷ fps with the full sample count, like the PNG export.
-      </p>
       <div className="kf-export__grid">
         <label htmlFor="kf-anim-format">Format</label>
         <select
@@ -253,6 +248,6 @@ export function AnimationExportDialog({ viewSize, view, defaultSamples, loop, ru
           </>
         )}
       </footer>
-    </dialog>
+    </ExportDialogShell>
   );
 }

@@ -3,10 +3,12 @@
  * samples per pixel, solid or transparent background; a progress bar with Cancel while the tiled
  * GPU render runs. The downloaded PNG carries the graph, so dropping it back reopens the graph.
  */
+
 import { useState } from 'react';
 import { LIMITS, type View } from '../../../nodes/core/scene.ts';
 import type { PngExportOptions } from '../export.ts';
 import { useModalDialog } from '../use-modal-dialog.ts';
+import { ExportDialogShell } from './ExportDialogShell.tsx';
 import { useExportRun } from './use-export-run.ts';
 
 export interface Size {
@@ -64,25 +66,17 @@ export function ExportDialog({ viewSize, view, defaultSamples, edgeWidth, run, o
   const close = exportRun.close;
 
   return (
-    <dialog
-      ref={dialog.ref}
-      className="kf-dialog kf-export"
-      aria-label="Export PNG"
-      onCancel={(e) => {
-        e.preventDefault();
-        close();
-      }}
+    <ExportDialogShell
+      dialogRef={dialog.ref}
+      title="Export PNG"
+      lead={
+        <>
+          Rendered on the GPU in tiles at full quality. The graph travels inside the file: drop the PNG onto
+          Kleinflow to reopen it.
+        </>
+      }
+      onClose={close}
     >
-      <header className="kf-dialog__header">
-        <h2>Export PNG</h2>
-        <button type="button" className="kf-icon-button" aria-label="Close export" onClick={close}>
-          ×
-        </button>
-      </header>
-      <p className="kf-dialog__lead">
-        Rendered on the GPU in tiles at full quality. The graph travels inside the file: drop the PNG onto
-        Kleinflow to reopen it.
-      </p>
       <div className="kf-export__grid">
         <label htmlFor="kf-export-preset">Size</label>
         <select
@@ -196,6 +190,6 @@ export function ExportDialog({ viewSize, view, defaultSamples, edgeWidth, run, o
           </>
         )}
       </footer>
-    </dialog>
+    </ExportDialogShell>
   );
 }

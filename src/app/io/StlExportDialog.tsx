@@ -3,6 +3,7 @@
  * progress bar with Cancel while the solid is sampled and meshed on the CPU. The mesh is closed
  * and consistently oriented (docs/math-3d.md "Voxel mesh (paper §5.3.2)").
  */
+
 import { useState } from 'react';
 import {
   type Bounds3,
@@ -11,6 +12,7 @@ import {
   parseBounds,
 } from '../../../nodes/geometry/space/voxel-mesh.ts';
 import { useModalDialog } from '../use-modal-dialog.ts';
+import { ExportDialogShell } from './ExportDialogShell.tsx';
 import { useExportRun } from './use-export-run.ts';
 
 export interface StlExportOptions {
@@ -44,24 +46,16 @@ export function StlExportDialog({ run, onClose }: Props) {
   const close = exportRun.close;
 
   return (
-    <dialog
-      ref={dialog.ref}
-      className="kf-dialog kf-export"
-      aria-label="Export STL"
-      onCancel={(e) => {
-        e.preventDefault();
-        close();
-      }}
+    <ExportDialogShell
+      dialogRef={dialog.ref}
+      title="Export STL"
+      lead={
+        <>
+          A closed mesh of the solid (the seeds’ orbit) for 3D printing, sampled on a voxel grid on the CPU.
+        </>
+      }
+      onClose={close}
     >
-      <header className="kf-dialog__header">
-        <h2>Export STL</h2>
-        <button type="button" className="kf-icon-button" aria-label="Close export" onClick={close}>
-          ×
-        </button>
-      </header>
-      <p className="kf-dialog__lead">
-        A closed mesh of the solid (the seeds’ orbit) for 3D printing, sampled on a voxel grid on the CPU.
-      </p>
       <div className="kf-export__grid">
         <label htmlFor="kf-stl-resolution">Resolution</label>
         <span>
@@ -128,6 +122,6 @@ export function StlExportDialog({ run, onClose }: Props) {
           </>
         )}
       </footer>
-    </dialog>
+    </ExportDialogShell>
   );
 }

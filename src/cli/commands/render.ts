@@ -86,25 +86,34 @@ export const renderCommand: CliCommand = {
     const label = `rendering ${output} (${width}×${height}, ${used} samples/px)`;
     const long = width * height * used >= PROGRESS_WORK;
     if (long) announceEstimate(io.stderr, label, estimateRenderSeconds(load.scene, width, height, used));
-    const started = performance.now();
-    const progress = long ? progressLine(io.stderr, label) : undefined;
-    const png = renderScenePng(load.scene, load.text, {
-      width,
-      height,
-      samples: used,
-      onProgress: progress && ((f) => progress.update(f)),
-    });
-    progress?.finish();
-    try {
-      await io.writeFile(output, png);
-    } catch (e) {
-      throw new CliError(fileErrorMessage('write', output, e));
-    }
-    const seconds = ((performance.now() - started) / 1000).toFixed(2);
-    io.stdout.write(`wrote ${output} (${width}×${height}, ${used} samples/px, ${seconds} s)\n`);
-    return EXIT.ok;
+    return writeStill(io, output, label, long, `${width}×${height}, ${used} samples/px`, (onProgress) =>
+      renderScenePng(load.scene, load.text, { width, height, samples: used, onProgress }),
+    );
   },
 };
+
+/** Draws one still (a progress line while it runs when `long`), writes it, says what was written. */
+async function writeStill(
+  io: CliIo,
+  output: string,
+  label: string,
+  long: boolean,
+  summary: string,
+  draw: (onProgress?: (done: number) => void) => Uint8Array,
+): Promise<number> {
+  const started = performance.now();
+  const progress = long ? progressLine(io.stderr, label) : undefined;
+  const png = draw(progress && ((f) => progress.update(f)));
+  progress?.finish();
+  try {
+    await io.writeFile(output, png);
+  } catch (e) {
+    throw new CliError(fileErrorMessage('write', output, e));
+  }
+  const seconds = ((performance.now() - started) / 1000).toFixed(2);
+  io.stdout.write(`wrote ${output} (${summary}, ${seconds} s)\n`);
+  return EXIT.ok;
+}
 
 /** The 3D still: the CPU sphere tracer, with a progress line on long renders. */
 async function render3d(
@@ -118,21 +127,9 @@ async function render3d(
 ): Promise<number> {
   const used = samples ?? scene.samples;
   const label = `rendering ${output} (${width}×${height}, ${used} samples/px, sphere traced)`;
-  const started = performance.now();
-  const progress = width * height * used >= PROGRESS_WORK / 16 ? progressLine(io.stderr, label) : undefined;
-  const png = renderScene3dPng(scene, text, {
-    width,
-    height,
-    samples: used,
-    onProgress: progress && ((f) => progress.update(f)),
-  });
-  progress?.finish();
-  try {
-    await io.writeFile(output, png);
-  } catch (e) {
-    throw new CliError(fileErrorMessage('write', output, e));
-  }
-  const seconds = ((performance.now() - started) / 1000).toFixed(2);
-  io.stdout.write(`wrote ${output} (${width}×${height}, ${used} samples/px, ${seconds} s)\n`);
-  return EXIT.ok;
+  // Sphere tracing costs far more per sample than the plane's IIS: progress from smaller work.
+  const long = width * height * used >= PROGRESS_WORK / 16;
+  return writeStill(io, output, label, long, `${width}×${height}, ${used} samples/px`, (onProgress) =>
+    renderScene3dPng(scene, text, { width, height, samples: used, onProgress }),
+  );
 }

@@ -7,11 +7,16 @@
  *   on the new sphere); a plane to its `point` handle, else its `normal` handle (the normal's tip).
  * Other wired keys are dropped: their value comes from the wire.
  */
-import type { NodeDef } from '../core/define-node.ts';
 import { inputSpec } from '../core/port-lookup.ts';
 import type { PortType } from '../core/ports.ts';
 import type { Vec3 } from '../core/scene-3d.ts';
-import { type HandleRef, MAX_FORWARD_DEPTH, type NodePatch } from './drag-patches.ts';
+import {
+  type DragKind,
+  type HandleRef,
+  MAX_FORWARD_DEPTH,
+  type NodePatch,
+  walkDrag,
+} from './drag-patches.ts';
 import type { Evaluation } from './evaluate.ts';
 
 const isVec3 = (v: unknown): v is Vec3 =>
@@ -61,6 +66,15 @@ function forwardTarget(
   return undefined;
 }
 
+/** Space handles: wired point3, sphere and plane inputs move the upstream node (forwardTarget). */
+const spaceDrag = (evaluation: Evaluation): DragKind<Vec3> => ({
+  drag: (def, handle, at, ctx) => (def.drag3d && isVec3(at) ? def.drag3d(handle, at, ctx) : undefined),
+  forward: (def, key, value, ctx, upstream) => {
+    const type = inputSpec(def, key)?.type;
+    return type && forwardTarget(type, value, ctx.inputs[key], handlesOf(evaluation, upstream));
+  },
+});
+
 /**
  * The patches that move 3D handle `target` to `to`: the dragged node's own unconnected keys first,
  * then upstream nodes in the order the drag reached them.
@@ -71,33 +85,5 @@ export function dragPatches3d(
   to: Vec3,
   maxDepth = MAX_FORWARD_DEPTH,
 ): NodePatch[] {
-  const byNode = new Map<string, Record<string, unknown>>();
-  const visit = (nodeId: string, handle: string, at: Vec3, depth: number) => {
-    const def: NodeDef | undefined = evaluation.analysis.nodes.get(nodeId)?.def;
-    const ctx = evaluation.nodes.get(nodeId)?.ctx;
-    if (!def?.drag3d || !ctx || !isVec3(at)) return;
-    let patch: Readonly<Record<string, unknown>>;
-    try {
-      patch = def.drag3d(handle, at, ctx);
-    } catch {
-      return; // a node that cannot follow this position keeps its params
-    }
-    const incoming = evaluation.analysis.incoming.get(nodeId);
-    for (const [key, value] of Object.entries(patch)) {
-      const edge = incoming?.get(key)?.[0];
-      if (!edge) {
-        const own = byNode.get(nodeId) ?? {};
-        own[key] = value;
-        byNode.set(nodeId, own);
-        continue;
-      }
-      const type = inputSpec(def, key)?.type;
-      if (!type || depth >= maxDepth) continue;
-      const upstream = edge.from.node;
-      const next = forwardTarget(type, value, ctx.inputs[key], handlesOf(evaluation, upstream));
-      if (next) visit(upstream, next.handle, next.at, depth + 1);
-    }
-  };
-  visit(target.nodeId, target.handle, to, 0);
-  return [...byNode].map(([nodeId, params]) => ({ nodeId, params }));
+  return walkDrag(evaluation, spaceDrag(evaluation), target, to, maxDepth);
 }

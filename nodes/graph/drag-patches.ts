@@ -5,6 +5,7 @@
  * Other wired keys are dropped: their value comes from the wire.
  */
 
+import type { EvalContext, NodeDef } from '../core/define-node.ts';
 import { inputSpec, ownEntry } from '../core/port-lookup.ts';
 import { portValueToJson } from '../core/port-values.ts';
 import type { Vec2 } from '../core/values.ts';
@@ -41,26 +42,44 @@ export function firstHandle(evaluation: Evaluation, nodeId: string): string | un
 }
 
 /**
- * The patches that move `target` to world point `to`: the dragged node's own unconnected keys
- * first, then upstream nodes in the order the drag reached them.
+ * How one kind of handle drags (the plane's here, space's in drag-patches-3d.ts): the node's own
+ * map of a handle position to param values (undefined: the node has no such hook), and where the
+ * value of a WIRED input sends the drag upstream (undefined: nowhere, the key is dropped).
  */
-export function dragPatches(
+export interface DragKind<P> {
+  drag(def: NodeDef, handle: string, at: P, ctx: EvalContext): Readonly<Record<string, unknown>> | undefined;
+  forward(
+    def: NodeDef,
+    key: string,
+    value: unknown,
+    ctx: EvalContext,
+    upstream: string,
+  ): { handle: string; at: P } | undefined;
+}
+
+/**
+ * The walk both kinds share: the dragged node's own unconnected keys first, then upstream nodes in
+ * the order the drag reached them (at most `maxDepth` wires up).
+ */
+export function walkDrag<P>(
   evaluation: Evaluation,
+  kind: DragKind<P>,
   target: HandleRef,
-  to: Vec2,
-  maxDepth = MAX_FORWARD_DEPTH,
+  to: P,
+  maxDepth: number,
 ): NodePatch[] {
   const byNode = new Map<string, Record<string, unknown>>();
-  const visit = (nodeId: string, handle: string, at: Vec2, depth: number) => {
+  const visit = (nodeId: string, handle: string, at: P, depth: number) => {
     const def = evaluation.analysis.nodes.get(nodeId)?.def;
     const ctx = evaluation.nodes.get(nodeId)?.ctx;
-    if (!def?.drag || !ctx) return;
-    let patch: Readonly<Record<string, unknown>>;
+    if (!def || !ctx) return;
+    let patch: Readonly<Record<string, unknown>> | undefined;
     try {
-      patch = def.drag(handle, at, ctx);
+      patch = kind.drag(def, handle, at, ctx);
     } catch {
       return; // a node that cannot follow this position keeps its params
     }
+    if (!patch) return;
     const incoming = evaluation.analysis.incoming.get(nodeId);
     for (const [key, value] of Object.entries(patch)) {
       const edge = incoming?.get(key)?.[0];
@@ -70,13 +89,36 @@ export function dragPatches(
         byNode.set(nodeId, own);
         continue;
       }
-      if (inputSpec(def, key)?.type !== 'point' || depth >= maxDepth || !isVec2(value)) continue;
-      const upstream = firstHandle(evaluation, edge.from.node);
-      if (upstream !== undefined) visit(edge.from.node, upstream, value, depth + 1);
+      if (depth >= maxDepth) continue;
+      const next = kind.forward(def, key, value, ctx, edge.from.node);
+      if (next) visit(edge.from.node, next.handle, next.at, depth + 1);
     }
   };
   visit(target.nodeId, target.handle, to, 0);
   return [...byNode].map(([nodeId, params]) => ({ nodeId, params }));
+}
+
+/** Plane handles: a wired point input moves the upstream node through its first handle. */
+const planeDrag = (evaluation: Evaluation): DragKind<Vec2> => ({
+  drag: (def, handle, at, ctx) => def.drag?.(handle, at, ctx),
+  forward: (def, key, value, _ctx, upstream) => {
+    if (inputSpec(def, key)?.type !== 'point' || !isVec2(value)) return undefined;
+    const handle = firstHandle(evaluation, upstream);
+    return handle === undefined ? undefined : { handle, at: value };
+  },
+});
+
+/**
+ * The patches that move `target` to world point `to`: the dragged node's own unconnected keys
+ * first, then upstream nodes in the order the drag reached them.
+ */
+export function dragPatches(
+  evaluation: Evaluation,
+  target: HandleRef,
+  to: Vec2,
+  maxDepth = MAX_FORWARD_DEPTH,
+): NodePatch[] {
+  return walkDrag(evaluation, planeDrag(evaluation), target, to, maxDepth);
 }
 
 /**

@@ -13,7 +13,7 @@ import type { AnimationExportOptions } from '../animation-export.ts';
 import { ANIMATION_FORMATS, type AnimationFormat, evenSize } from '../animation-formats.ts';
 import { useModalDialog } from '../use-modal-dialog.ts';
 import type { Size } from './ExportDialog.tsx';
-import { ExportDialogShell } from './ExportDialogShell.tsx';
+import { ExportDialogShell, ExportRunFooter } from './ExportDialogShell.tsx';
 import { useExportRun } from './use-export-run.ts';
 
 interface Props {
@@ -221,33 +221,17 @@ export function AnimationExportDialog({ viewSize, view, defaultSamples, loop, ru
           (Chrome, Edge and Firefox desktop can write video).
         </p>
       )}
-      {busy && (
-        <div className="kf-export__progress">
-          <progress max={1} value={progress} aria-label="Export progress" />
-          <span>{`Rendering frame ${Math.min(frames, Math.floor(progress * frames) + 1)} of ${frames}…`}</span>
-        </div>
-      )}
-      {error && (
-        <p className="kf-export__error" role="alert">
-          {error}
-        </p>
-      )}
-      <footer className="kf-export__actions">
-        {busy ? (
-          <button type="button" className="kf-button" onClick={exportRun.cancel}>
-            Cancel
-          </button>
-        ) : (
-          <>
-            <button type="button" className="kf-button" onClick={close}>
-              Close
-            </button>
-            <button type="button" className="kf-button kf-button--primary" onClick={() => void start()}>
-              Export {frames} frames
-            </button>
-          </>
-        )}
-      </footer>
+      <ExportRunFooter
+        progress={progress}
+        progressText={(progress) =>
+          `Rendering frame ${Math.min(frames, Math.floor(progress * frames) + 1)} of ${frames}…`
+        }
+        error={error}
+        startLabel={`Export ${frames} frames`}
+        onStart={() => void start()}
+        onCancel={exportRun.cancel}
+        onClose={close}
+      />
     </ExportDialogShell>
   );
 }

@@ -8,7 +8,7 @@ import { useState } from 'react';
 import { LIMITS, type View } from '../../../nodes/core/scene.ts';
 import type { PngExportOptions } from '../export.ts';
 import { useModalDialog } from '../use-modal-dialog.ts';
-import { ExportDialogShell } from './ExportDialogShell.tsx';
+import { ExportDialogShell, ExportRunFooter } from './ExportDialogShell.tsx';
 import { useExportRun } from './use-export-run.ts';
 
 export interface Size {
@@ -163,33 +163,17 @@ export function ExportDialog({ viewSize, view, defaultSamples, edgeWidth, run, o
           {edgeFactor.toFixed(2)}) so the picture looks like the view.
         </p>
       )}
-      {busy && (
-        <div className="kf-export__progress">
-          <progress max={1} value={progress} aria-label="Export progress" />
-          <span>{progress < 1 ? `Rendering… ${Math.round(progress * 100)}%` : 'Encoding the PNG…'}</span>
-        </div>
-      )}
-      {error && (
-        <p className="kf-export__error" role="alert">
-          {error}
-        </p>
-      )}
-      <footer className="kf-export__actions">
-        {busy ? (
-          <button type="button" className="kf-button" onClick={exportRun.cancel}>
-            Cancel
-          </button>
-        ) : (
-          <>
-            <button type="button" className="kf-button" onClick={close}>
-              Close
-            </button>
-            <button type="button" className="kf-button kf-button--primary" onClick={() => void start()}>
-              Export {width} × {height}
-            </button>
-          </>
-        )}
-      </footer>
+      <ExportRunFooter
+        progress={progress}
+        progressText={(progress) =>
+          progress < 1 ? `Rendering… ${Math.round(progress * 100)}%` : 'Encoding the PNG…'
+        }
+        error={error}
+        startLabel={`Export ${width} × ${height}`}
+        onStart={() => void start()}
+        onCancel={exportRun.cancel}
+        onClose={close}
+      />
     </ExportDialogShell>
   );
 }

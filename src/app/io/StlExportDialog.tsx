@@ -12,7 +12,7 @@ import {
   parseBounds,
 } from '../../../nodes/geometry/space/voxel-mesh.ts';
 import { useModalDialog } from '../use-modal-dialog.ts';
-import { ExportDialogShell } from './ExportDialogShell.tsx';
+import { ExportDialogShell, ExportRunFooter } from './ExportDialogShell.tsx';
 import { useExportRun } from './use-export-run.ts';
 
 export interface StlExportOptions {
@@ -90,38 +90,18 @@ export function StlExportDialog({ run, onClose }: Props) {
           <span className="kf-export__note"> needed when plane mirrors repeat the solid without end</span>
         </span>
       </div>
-      {busy && (
-        <div className="kf-export__progress">
-          <progress max={1} value={progress} aria-label="Export progress" />
-          <span>{progress < 1 ? `Meshing… ${Math.round(progress * 100)}%` : 'Writing the STL…'}</span>
-        </div>
-      )}
-      {(boundsError ?? error) && (
-        <p className="kf-export__error" role="alert">
-          {boundsError ?? error}
-        </p>
-      )}
-      <footer className="kf-export__actions">
-        {busy ? (
-          <button type="button" className="kf-button" onClick={exportRun.cancel}>
-            Cancel
-          </button>
-        ) : (
-          <>
-            <button type="button" className="kf-button" onClick={close}>
-              Close
-            </button>
-            <button
-              type="button"
-              className="kf-button kf-button--primary"
-              disabled={boundsError !== null}
-              onClick={() => void start()}
-            >
-              Export {resolution}³
-            </button>
-          </>
-        )}
-      </footer>
+      <ExportRunFooter
+        progress={progress}
+        progressText={(progress) =>
+          progress < 1 ? `Meshing… ${Math.round(progress * 100)}%` : 'Writing the STL…'
+        }
+        error={boundsError ?? error}
+        startLabel={`Export ${resolution}³`}
+        startDisabled={boundsError !== null}
+        onStart={() => void start()}
+        onCancel={exportRun.cancel}
+        onClose={close}
+      />
     </ExportDialogShell>
   );
 }

@@ -1,7 +1,7 @@
 /**
  * Inspect mode of the render pane: a click (in inspect mode) or an Alt-click (any time) on the
- * picture picks a point; it is traced on the CPU and probed on the GPU again whenever the graph or
- * the view changes, so the panel always explains the picture on screen. A press that moves is a
+ * picture picks a point; it is traced on the CPU and probed on the GPU again once the graph or the
+ * view has changed and settled, so the panel always explains the picture on screen. A press that moves is a
  * pan, not a click. Escape closes the panel, then leaves inspect mode.
  */
 import { type RefObject, useEffect, useRef, useState } from 'react';
@@ -16,6 +16,8 @@ import { type Inspection, inspect } from './inspection.ts';
 
 /** A press that moves less than this (CSS px) before release is a click. */
 const CLICK_SLOP = 4;
+/** The panel follows edits and pans once they have been still this long (ms). */
+const SETTLE_MS = 150;
 
 export interface PixelInspectState {
   /** The inspected world point (the clicked one), or null when the panel is closed. */
@@ -107,13 +109,27 @@ export function usePixelInspect(p: Inputs): PixelInspectState {
   }, [p.mode]);
 
   const { evaluation, view, width, height, viewport } = p;
+  const probedAnchor = useRef<Vec2 | null>(null);
   useEffect(() => {
     if (!anchor || width === 0 || height === 0) {
+      probedAnchor.current = null;
       setInspection(null);
-      return;
+      return undefined;
     }
-    const probe = probeAt(viewport.current, { view, width, height }, anchor);
-    setInspection(probe ? inspect(evaluation, probe) : null);
+    const run = () => {
+      probedAnchor.current = anchor;
+      const probe = probeAt(viewport.current, { view, width, height }, anchor);
+      setInspection(probe ? inspect(evaluation, probe) : null);
+    };
+    // A new point is answered at once. While the graph or the view keeps changing (a drag, a pan)
+    // the GPU read-back — a pipeline stall — waits until they have been still for a moment, so it
+    // never runs once per frame of a gesture.
+    if (probedAnchor.current !== anchor) {
+      run();
+      return undefined;
+    }
+    const timer = setTimeout(run, SETTLE_MS);
+    return () => clearTimeout(timer);
   }, [anchor, evaluation, view, width, height, viewport]);
 
   const css = anchor ? toCss({ view, width, height }, anchor) : null;

@@ -207,7 +207,7 @@ export function RenderPane({
       {size.width > 0 && scene3d && (
         <RenderOverlay3d
           evaluation={evaluation}
-          scene={readOnly ? { ...scene3d, handles: [] } : scene3d}
+          scene={scene3d}
           camera={camera3d.camera}
           width={size.width}
           height={size.height}
@@ -215,6 +215,7 @@ export function RenderPane({
           onHoverNode={onHoverNode}
           onPreview={(patches) => store.preview(patchChange(patches))}
           onCommit={(patches) => store.commit(patchChange(patches), 'drag in the render')}
+          readOnly={readOnly}
         />
       )}
       {size.width > 0 && !scene3d && (

@@ -35,6 +35,8 @@ export interface RenderOverlay3dProps {
   onPreview(patches: NodePatch[]): void;
   /** On pointer-up after a drag: one undo step. */
   onCommit(patches: NodePatch[]): void;
+  /** Presenting or embedded: the construction is drawn, but there is nothing to grab (as in 2D). */
+  readOnly?: boolean;
 }
 
 const FALLBACK_COLOR = '#ffffff';
@@ -87,7 +89,7 @@ function labelAt(item: Screen3dItem): Vec2 | null {
 }
 
 export function RenderOverlay3d(props: RenderOverlay3dProps): JSX.Element {
-  const { evaluation, scene, camera, width, height, hoveredNodeId } = props;
+  const { evaluation, scene, camera, width, height, hoveredNodeId, readOnly = false } = props;
   const ref = useRef<SVGSVGElement>(null);
   const sized = width > 0 && height > 0;
   const pane = useMemo<PaneSize>(() => ({ width, height }), [width, height]);
@@ -97,12 +99,12 @@ export function RenderOverlay3d(props: RenderOverlay3dProps): JSX.Element {
   );
   const handles = useMemo(
     () =>
-      (sized ? placeHandles3d(scene.handles, camera, pane) : []).map((h) => ({
+      (sized && !readOnly ? placeHandles3d(scene.handles, camera, pane) : []).map((h) => ({
         item: h,
         at: [h.x, h.y] as Vec2,
         color: evaluation.analysis.nodes.get(h.nodeId)?.def?.color ?? FALLBACK_COLOR,
       })),
-    [sized, scene, camera, pane, evaluation],
+    [sized, readOnly, scene, camera, pane, evaluation],
   );
   const { drag, hoverHandle } = useOverlayPointer(ref, {
     evaluation,
@@ -140,7 +142,11 @@ export function RenderOverlay3d(props: RenderOverlay3dProps): JSX.Element {
       height={height}
       viewBox={`0 0 ${width} ${height}`}
       role="img"
-      aria-label="3D construction overlay: drag the handles to move points and spheres"
+      aria-label={
+        readOnly
+          ? '3D construction overlay (read-only)'
+          : '3D construction overlay: drag the handles to move points and spheres'
+      }
       style={{
         position: 'absolute',
         inset: 0,

@@ -25,7 +25,7 @@ import {
 import { createEditorStore } from './state/store.ts';
 import { StoreContext } from './state/use-store.ts';
 
-function start(): { doc: GraphDoc; messages: Message[]; hold: AutosaveHold } {
+function start(): { doc: GraphDoc; messages: Message[]; hold: AutosaveHold; fresh: boolean } {
   let restored: Restored = { kind: 'none' };
   try {
     restored = restore(window.localStorage);
@@ -34,8 +34,8 @@ function start(): { doc: GraphDoc; messages: Message[]; hold: AutosaveHold } {
   }
   const fallback = defaultExample()?.doc ?? emptyDocument();
   const free = createAutosaveHold(false);
-  if (restored.kind === 'ok') return { doc: restored.doc, messages: [], hold: free };
-  if (restored.kind === 'none') return { doc: fallback, messages: [], hold: free };
+  if (restored.kind === 'ok') return { doc: restored.doc, messages: [], hold: free, fresh: false };
+  if (restored.kind === 'none') return { doc: fallback, messages: [], hold: free, fresh: true };
   const { text, problems, backedUp } = restored;
   // Without a backup the broken save is the only copy: autosave waits until it is taken care of.
   const hold = createAutosaveHold(!backedUp);
@@ -67,6 +67,7 @@ function start(): { doc: GraphDoc; messages: Message[]; hold: AutosaveHold } {
     : 'the browser storage has no room for a backup copy, so autosave is paused until you download or discard it';
   return {
     doc: fallback,
+    fresh: true,
     hold,
     messages: [
       {
@@ -85,14 +86,14 @@ function start(): { doc: GraphDoc; messages: Message[]; hold: AutosaveHold } {
   };
 }
 
-const { doc, messages, hold } = start();
+const { doc, messages, hold, fresh } = start();
 const mode = appMode(window.location.search);
 const store = createEditorStore(doc, registry);
 createRoot(document.getElementById('root')!).render(
   <StrictMode>
     <StoreContext.Provider value={store}>
       {mode === 'editor' ? (
-        <App initialMessages={messages} autosaveHold={hold} />
+        <App initialMessages={messages} autosaveHold={hold} fitStartView={fresh} />
       ) : (
         <PresentApp mode={mode} />
       )}

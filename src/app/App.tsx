@@ -50,9 +50,11 @@ interface Props {
   readonly initialMessages: readonly Message[];
   /** Held while an unreadable autosave without a backup must not be overwritten (see main.tsx). */
   readonly autosaveHold?: AutosaveHold;
+  /** The start-up example (no autosave yet): framed to the pane once it is laid out, as Examples does. */
+  readonly fitStartView?: boolean;
 }
 
-export function App({ initialMessages, autosaveHold }: Props) {
+export function App({ initialMessages, autosaveHold, fitStartView = false }: Props) {
   const store = useStore();
   const doc = useEditorState((s) => s.doc);
   const time = useEditorState((s) => s.time);
@@ -102,6 +104,17 @@ export function App({ initialMessages, autosaveHold }: Props) {
     rememberWelcome(storage());
     setWelcome(false);
   }, []);
+  useEffect(() => {
+    if (!fitStartView) return;
+    // After layout, so the pane has its size; silent: framing is not an edit to undo.
+    const frame = requestAnimationFrame(() => {
+      const { view } = store.getState().doc;
+      const { center, scale } = fitSquareView(view, renderPaneSize());
+      if (scale !== view.scale)
+        store.dispatchSilently({ type: 'set-view', view: { center: [center[0], center[1]], scale } });
+    });
+    return () => cancelAnimationFrame(frame);
+  }, [fitStartView, store]);
   const openExample = useCallback(
     (ex: (typeof EXAMPLES)[number]) => {
       const replacing = store.getState().doc.nodes.length > 0;

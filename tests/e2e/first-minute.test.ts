@@ -119,6 +119,31 @@ describe('first visit, unfinished graphs and the walkthrough — dev server (npm
     await other.context().close();
   });
 
+  it('frames the start-up example whole in a tall phone pane, as opening it from Examples does', async () => {
+    const phone = await (await app.newContext({ width: 390, height: 844 }, { firstVisit: true })).newPage();
+    await phone.goto(`${app.url}?test`);
+    await phone.getByRole('region', { name: 'Welcome to Kleinflow' }).waitFor();
+    const read = () =>
+      phone.evaluate(() => {
+        const pane = document.querySelector<HTMLElement>('[data-testid="render-pane"]')!;
+        const k = (
+          window as unknown as {
+            __kleinflow: { store: { getState(): { doc: { view: { scale: number } } } } };
+          }
+        ).__kleinflow;
+        return { w: pane.clientWidth, h: pane.clientHeight, scale: k.store.getState().doc.view.scale };
+      });
+    // The example is framed for a square pane of height 2.08 (the unit disk and a margin): in a
+    // 390-wide pane the disk fits only when the pane's world height is 2.08 · H/W.
+    await expect
+      .poll(async () => {
+        const { w, h, scale } = await read();
+        return w > 0 && Math.abs(scale - (2.08 * h) / w) < 1e-6;
+      })
+      .toBe(true);
+    await phone.context().close();
+  });
+
   it('shows an empty graph as a calm pane that says what to do — never a flat error colour', async () => {
     await page.getByRole('button', { name: 'New' }).click();
     await expect.poll(() => hint().textContent()).toBe(HINTS.empty);

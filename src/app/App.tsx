@@ -6,10 +6,11 @@
 import { ReactFlowProvider } from '@xyflow/react';
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
-import { emptyDocument, type GraphDoc } from '../../nodes/graph/document.ts';
+import { emptyDocument, type GraphDoc, type GraphNode } from '../../nodes/graph/document.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { fixPatches } from '../editor/diagnostic-fix.ts';
 import { GraphEditor } from '../editor/GraphEditor.tsx';
+import { InspectorExtrasContext } from '../editor/inspector-extras.ts';
 import { isTyping } from '../editor/typing.ts';
 import type { AutosaveHold } from '../state/autosave.ts';
 import { createEvaluator } from '../state/evaluation.ts';
@@ -22,6 +23,7 @@ import { EXAMPLES } from './examples.ts';
 import { ExamplesGallery } from './gallery/ExamplesGallery.tsx';
 import { HelpDialog } from './help/HelpDialog.tsx';
 import { loadedMessage, PRESENTING_READ_ONLY, useDocumentIo } from './io/use-document-io.tsx';
+import { LiveSourceSection } from './LiveSourceSection.tsx';
 import { Presentation } from './present/Presentation.tsx';
 import { type RenderInfo, RenderPane } from './RenderPane.tsx';
 import { SplitPane } from './SplitPane.tsx';
@@ -51,6 +53,8 @@ interface Props {
   /** Held while an unreadable autosave without a backup must not be overwritten (see main.tsx). */
   readonly autosaveHold?: AutosaveHold;
 }
+
+const liveSourceSection = (node: GraphNode) => <LiveSourceSection node={node} />;
 
 export function App({ initialMessages, autosaveHold }: Props) {
   const store = useStore();
@@ -153,16 +157,18 @@ export function App({ initialMessages, autosaveHold }: Props) {
   );
 
   const graphEditor = (inspectorTab: boolean) => (
-    <ReactFlowProvider>
-      <GraphEditor
-        evaluation={evaluation}
-        extraDiagnostics={renderDiagnostics}
-        hoveredNodeId={hovered}
-        frameKey={frameKey}
-        onHoverNode={setHovered}
-        inspectorTab={inspectorTab}
-      />
-    </ReactFlowProvider>
+    <InspectorExtrasContext.Provider value={liveSourceSection}>
+      <ReactFlowProvider>
+        <GraphEditor
+          evaluation={evaluation}
+          extraDiagnostics={renderDiagnostics}
+          hoveredNodeId={hovered}
+          frameKey={frameKey}
+          onHoverNode={setHovered}
+          inspectorTab={inspectorTab}
+        />
+      </ReactFlowProvider>
+    </InspectorExtrasContext.Provider>
   );
 
   if (presenting)

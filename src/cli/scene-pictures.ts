@@ -3,6 +3,7 @@
  * Nodes keep pictures as data: URLs; the CLI decodes PNG ones with src/io/png.ts. Any other format
  * is an error that says what to do, never a silently wrong image.
  */
+import { tileImages } from '../../nodes/core/live-source.ts';
 import type { Scene } from '../../nodes/core/scene.ts';
 import { BUILTIN_PICTURE } from '../../nodes/core/values.ts';
 import type { DecodedPicture } from '../../shader-gen/picture.ts';
@@ -10,9 +11,8 @@ import { decodePng } from '../io/png.ts';
 
 /** Every picture src the scene uses (the built-in one excluded: the raster draws it). */
 export function pictureSources(scene: Scene): string[] {
-  const srcs = new Set<string>();
-  if (scene.tile.coloring.mode === 'image') srcs.add(scene.tile.coloring.image.src);
-  for (const seed of scene.tile.seeds ?? []) if (seed.kind === 'image') srcs.add(seed.image.src);
+  // A live source's src is its fallback picture: the CLI has no camera or video, so draws that.
+  const srcs = new Set(tileImages(scene.tile).map((image) => image.src));
   srcs.delete(BUILTIN_PICTURE.src);
   return [...srcs];
 }

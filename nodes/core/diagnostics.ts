@@ -165,6 +165,34 @@ export const DIAGNOSTICS = table({
     text: (seed: string, element: string) =>
       `seed "${seed}" is not in the fundamental domain: the region of element "${element}" holds part of it, so its images overlap (move the seed out of that region)`,
   },
+  cameraUnavailable: {
+    code: 'KF320',
+    severity: 'warning',
+    text: (why: string) => `the camera could not start (${why}): the fallback picture is drawn instead`,
+  },
+  cameraOff: {
+    code: 'KF321',
+    severity: 'info',
+    text: () =>
+      'the camera is off: press “Start camera” (in the render or here; the browser asks once). Until then the fallback picture is drawn',
+  },
+  videoMissing: {
+    code: 'KF322',
+    severity: 'info',
+    text: (name: string) =>
+      `choose the video file${name ? ` “${name}”` : ''} in the inspector (a large video is not kept in the document): until then the fallback picture is drawn`,
+  },
+  videoUnplayable: {
+    code: 'KF323',
+    severity: 'warning',
+    text: (why: string) => `the video could not be played (${why}): the fallback picture is drawn instead`,
+  },
+  liveFallback: {
+    code: 'KF324',
+    severity: 'info',
+    text: (what: string) =>
+      `${what} is a live source, only in the browser: the fallback picture is drawn here`,
+  },
   tooManyElements: {
     code: 'KF401',
     severity: 'error',

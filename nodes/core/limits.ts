@@ -28,6 +28,11 @@ export const LIMITS = {
   shareInflatedMaxBytes: 4 * 1024 * 1024,
   /** Longest picture data: URL an image node keeps (the document carries it inline). */
   maxImageDataUrlChars: 4 * 1024 * 1024,
+  /**
+   * Longest video data: URL an image node keeps inline (about a 1.5 MB file: a short loop). A
+   * bigger video is kept by name only and chosen again after reopening (README "Live sources").
+   */
+  maxVideoDataUrlChars: 2 * 1024 * 1024,
   /** Largest width or height of a picture used as a texture (every WebGL2 GPU has 4096). */
   maxPictureSide: 4096,
   /** Orbit seeds a tile may have (each one is tested at every step of every sample). */

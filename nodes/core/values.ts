@@ -27,6 +27,23 @@ export interface ImageRef {
   readonly src: string;
   readonly width: number;
   readonly height: number;
+  /**
+   * A live source (camera, video) the browser draws in place of the picture, cropped to its
+   * width:height; `src` is then the fallback drawn wherever the source is not running (the CLI,
+   * a denied camera). See nodes/core/live-source.ts.
+   */
+  readonly live?: LiveRef;
+}
+
+/** Which live source an image node asked for (the stream itself never enters the document). */
+export interface LiveRef {
+  readonly kind: 'webcam' | 'video';
+  /** The image node that asked for it (its messages go there; a video is per node). */
+  readonly nodeId: string;
+  /** The video file's name (a label only); '' for the camera. */
+  readonly label: string;
+  /** A small video kept inline in the document (data:video/… URL), else ''. */
+  readonly src: string;
 }
 
 /**

@@ -10,6 +10,7 @@
  * picture: see `shadesWithoutBlending`) shade can work in sRGB throughout and the output needs no
  * encoding at all (`ColourSpace`).
  */
+import { pictureKey } from '../../nodes/core/live-source.ts';
 import type { Coloring, TileSpec } from '../../nodes/core/scene.ts';
 import type { Color } from '../../nodes/core/values.ts';
 import type { DepthColoring, MeasureColoring } from '../colour.ts';
@@ -161,7 +162,7 @@ export function finalColourGlsl(
   const { image, center, size, rotation } = coloring;
   const rect = v.vec('u_picture', [center[0], center[1], (size * image.width) / image.height, size]);
   const rot = v.vec('u_pictureRot', rotationPair(rotation));
-  const sampler = v.picture(image.src);
+  const sampler = v.picture(pictureKey(image));
   return glslFunction(
     'finalColour',
     `${head}\n  return textureLod(${sampler}, placeUv(${rect}, ${rot}, p), 0.0).rgb;\n}`,

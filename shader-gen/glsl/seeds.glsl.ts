@@ -4,6 +4,7 @@
  * u_seedColorN for a disk; u_seedN = (c.x, c.y, w, h), u_seedRotN = (cos θ, sin θ) and a sampler
  * for an image rectangle.
  */
+import { pictureKey } from '../../nodes/core/live-source.ts';
 import type { SeedSpec } from '../../nodes/core/scene.ts';
 import { rotationPair } from '../placement.ts';
 import { type ColourSpace, colourValue } from './colour.glsl.ts';
@@ -61,7 +62,7 @@ export function seedsGlsl(
     } else {
       const rect = v.vec(`u_seed${i}`, [seed.center[0], seed.center[1], seed.width, seed.height]);
       const rot = v.vec(`u_seedRot${i}`, rotationPair(seed.rotation));
-      const sampler = v.picture(seed.image.src);
+      const sampler = v.picture(pictureKey(seed.image));
       at.push(
         '  {',
         `    vec2 uv = placeUv(${param('vec4', rect)}, ${param('vec2', rot)}, p);`,

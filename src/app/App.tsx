@@ -6,10 +6,11 @@
 import { ReactFlowProvider } from '@xyflow/react';
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
-import { emptyDocument, type GraphDoc } from '../../nodes/graph/document.ts';
+import { emptyDocument, type GraphDoc, type GraphNode } from '../../nodes/graph/document.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { fixPatches } from '../editor/diagnostic-fix.ts';
 import { GraphEditor } from '../editor/GraphEditor.tsx';
+import { InspectorExtrasContext } from '../editor/inspector-extras.ts';
 import { isTyping } from '../editor/typing.ts';
 import type { AutosaveHold } from '../state/autosave.ts';
 import { createEvaluator } from '../state/evaluation.ts';
@@ -22,6 +23,7 @@ import { EXAMPLES } from './examples.ts';
 import { ExamplesGallery } from './gallery/ExamplesGallery.tsx';
 import { HelpDialog } from './help/HelpDialog.tsx';
 import { loadedMessage, PRESENTING_READ_ONLY, useDocumentIo } from './io/use-document-io.tsx';
+import { LiveSourceSection } from './LiveSourceSection.tsx';
 import { Presentation } from './present/Presentation.tsx';
 import { type RenderInfo, RenderPane } from './RenderPane.tsx';
 import { SplitPane } from './SplitPane.tsx';
@@ -53,6 +55,8 @@ interface Props {
   /** The start-up example (no autosave yet): framed to the pane once it is laid out, as Examples does. */
   readonly fitStartView?: boolean;
 }
+
+const liveSourceSection = (node: GraphNode) => <LiveSourceSection node={node} />;
 
 export function App({ initialMessages, autosaveHold, fitStartView = false }: Props) {
   const store = useStore();
@@ -166,16 +170,18 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
   );
 
   const graphEditor = (inspectorTab: boolean) => (
-    <ReactFlowProvider>
-      <GraphEditor
-        evaluation={evaluation}
-        extraDiagnostics={renderDiagnostics}
-        hoveredNodeId={hovered}
-        frameKey={frameKey}
-        onHoverNode={setHovered}
-        inspectorTab={inspectorTab}
-      />
-    </ReactFlowProvider>
+    <InspectorExtrasContext.Provider value={liveSourceSection}>
+      <ReactFlowProvider>
+        <GraphEditor
+          evaluation={evaluation}
+          extraDiagnostics={renderDiagnostics}
+          hoveredNodeId={hovered}
+          frameKey={frameKey}
+          onHoverNode={setHovered}
+          inspectorTab={inspectorTab}
+        />
+      </ReactFlowProvider>
+    </InspectorExtrasContext.Provider>
   );
 
   if (presenting)

@@ -13,6 +13,7 @@ import { registry } from '../../nodes/types/index.ts';
 import { isTyping } from '../editor/typing.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
 import { fitBounds, pictureBounds } from '../viewport/fit-view.ts';
+import { liveMedia } from '../viewport/live-media.ts';
 import { attachOrbitControls } from '../viewport/orbit-controls.ts';
 import { OrbitOverlay } from '../viewport/overlay/OrbitOverlay.tsx';
 import { type NodePatch, RenderOverlay } from '../viewport/overlay/RenderOverlay.tsx';
@@ -24,6 +25,7 @@ import { usePixelInspect } from './inspect/use-pixel-inspect.ts';
 import { renderHint } from './render-hint.ts';
 import { exposeForTests } from './test-hooks.ts';
 import { useCamera3d } from './use-camera-3d.ts';
+import { useLiveSources } from './use-live-sources.ts';
 
 /** Pan/zoom settles into the document this long after the last wheel tick or drag. */
 const VIEW_STORE_DELAY_MS = 300;
@@ -63,6 +65,7 @@ export function RenderPane({
 }: Props) {
   const store = useStore();
   const doc = useEditorState((s) => s.doc);
+  const time = useEditorState((s) => s.time);
   const pane = useRef<HTMLDivElement>(null);
   const canvas = useRef<HTMLCanvasElement>(null);
   const viewport = useRef<Viewport | null>(null);
@@ -73,6 +76,13 @@ export function RenderPane({
   viewRef.current = view;
   const callbacks = useRef({ onDiagnostics, onFrame });
   callbacks.current = { onDiagnostics, onFrame };
+  // The app hears the compiler's messages and the live sources' (camera, video) as one list.
+  const [compileDiagnostics, setCompileDiagnostics] = useState<Diagnostic[]>([]);
+  const live = useLiveSources(evaluation, doc, time);
+  useEffect(
+    () => callbacks.current.onDiagnostics([...compileDiagnostics, ...live.diagnostics]),
+    [compileDiagnostics, live.diagnostics],
+  );
 
   // The document's view changes from outside (load, New, example): follow it.
   useEffect(() => setView(doc.view), [doc.view]);
@@ -80,7 +90,7 @@ export function RenderPane({
   useEffect(() => {
     try {
       const v = new Viewport(canvas.current!, {
-        onDiagnostics: (d) => callbacks.current.onDiagnostics(d),
+        onDiagnostics: setCompileDiagnostics,
         onFrame: (info) => callbacks.current.onFrame(info),
       });
       viewport.current = v;
@@ -150,7 +160,7 @@ export function RenderPane({
   const fit = () => (is3d ? camera3d.reset() : bounds && showView(fitBounds(bounds, size)));
   // Pan/zoom listens natively on the pane: a press on the button must not start a pan (React's
   // own stopPropagation runs at the root, after the pane has seen the event).
-  const fitButton = useCallback((b: HTMLButtonElement | null) => {
+  const paneButton = useCallback((b: HTMLButtonElement | null) => {
     if (!b) return undefined;
     const stop = (e: PointerEvent) => e.stopPropagation();
     b.addEventListener('pointerdown', stop);
@@ -250,10 +260,21 @@ export function RenderPane({
           type="button"
           className="kf-button kf-render__fit"
           title={is3d ? "Back to the render node's camera (F)" : 'Show the whole picture (F)'}
-          ref={fitButton}
+          ref={paneButton}
           onClick={fit}
         >
           {is3d ? 'Reset view' : 'Fit'}
+        </button>
+      )}
+      {live.cameraWanted && (
+        <button
+          type="button"
+          className="kf-button kf-render__camera"
+          title="Draw the camera live (the browser asks once; nothing is recorded or saved)"
+          ref={paneButton}
+          onClick={() => void liveMedia.startCamera()}
+        >
+          Start camera
         </button>
       )}
       {failure && <div className="kf-render__failure">{failure}</div>}

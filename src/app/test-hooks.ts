@@ -4,11 +4,14 @@
  * counts, snapshots). A normal session never creates it.
  */
 import type { EditorStore } from '../state/store.ts';
+import { type LiveMedia, liveMedia } from '../viewport/live-media.ts';
 import type { Viewport } from '../viewport/viewport.ts';
 
 export interface TestHooks {
   store: EditorStore;
   viewport: Viewport | null;
+  /** The page's camera and videos (live-media.ts). */
+  live: LiveMedia;
 }
 
 declare global {
@@ -23,5 +26,5 @@ const enabled = () =>
 /** Publishes the store and the viewport now drawing (null when it is gone), when `?test` is set. */
 export function exposeForTests(store: EditorStore, viewport: Viewport | null): void {
   if (!enabled()) return;
-  window.__kleinflow = { store, viewport };
+  window.__kleinflow = { store, viewport, live: liveMedia };
 }

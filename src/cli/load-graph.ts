@@ -4,6 +4,7 @@
  * (parse → migrate → validate, through src/io/document-io.ts), evaluate it
  * into a Scene, and collect every diagnostic. File problems become one-line CliErrors.
  */
+
 import type { Diagnostic, Severity } from '../../nodes/core/diagnostics.ts';
 import { hasErrors } from '../../nodes/core/diagnostics.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
@@ -17,6 +18,7 @@ import { fileLimit, tooLargeMessage } from '../io/input-limits.ts';
 import { readPngText } from '../io/png.ts';
 import { PNG_GRAPH_KEY } from '../io/png-graph.ts';
 import { CliError, type CliIo } from './command.ts';
+import { liveFallbackNotes } from './scene-pictures.ts';
 
 /** The iTXt keyword under which exported PNGs carry their graph JSON (its home: src/io/png-graph.ts). */
 export { PNG_GRAPH_KEY };
@@ -149,8 +151,10 @@ export const countBySeverity = (ds: readonly Diagnostic[]): Record<Severity, num
  */
 async function loadChecked(io: CliIo, path: string): Promise<GraphLoad & { evaluation: Evaluation }> {
   const load = await loadGraph(io, path);
-  for (const d of load.diagnostics) {
-    if (d.severity !== 'info') io.stderr.write(`${path}: ${formatDiagnostic(d, load.doc)}\n`);
+  // Live sources are notes worth printing, though info: the picture is not what the browser shows.
+  const live = load.evaluation && !load.evaluation.scene3d ? liveFallbackNotes(load.evaluation.scene) : [];
+  for (const d of [...load.diagnostics.filter((d) => d.severity !== 'info'), ...live]) {
+    io.stderr.write(`${path}: ${formatDiagnostic(d, load.doc)}\n`);
   }
   if (!load.evaluation || hasErrors(load.diagnostics)) {
     const n = countBySeverity(load.diagnostics).error;

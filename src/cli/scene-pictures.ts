@@ -3,6 +3,8 @@
  * Nodes keep pictures as data: URLs; the CLI decodes PNG ones with src/io/png.ts. Any other format
  * is an error that says what to do, never a silently wrong image.
  */
+import { type Diagnostic, diag } from '../../nodes/core/diagnostics.ts';
+import { tileImages, tileLiveSources } from '../../nodes/core/live-source.ts';
 import type { Scene } from '../../nodes/core/scene.ts';
 import { BUILTIN_PICTURE } from '../../nodes/core/values.ts';
 import type { DecodedPicture } from '../../shader-gen/picture.ts';
@@ -10,9 +12,8 @@ import { decodePng } from '../io/png.ts';
 
 /** Every picture src the scene uses (the built-in one excluded: the raster draws it). */
 export function pictureSources(scene: Scene): string[] {
-  const srcs = new Set<string>();
-  if (scene.tile.coloring.mode === 'image') srcs.add(scene.tile.coloring.image.src);
-  for (const seed of scene.tile.seeds ?? []) if (seed.kind === 'image') srcs.add(seed.image.src);
+  // A live source's src is its fallback picture: the CLI has no camera or video, so draws that.
+  const srcs = new Set(tileImages(scene.tile).map((image) => image.src));
   srcs.delete(BUILTIN_PICTURE.src);
   return [...srcs];
 }
@@ -36,4 +37,15 @@ export function decodePicture(src: string): DecodedPicture {
 
 export function scenePictures(scene: Scene): Map<string, DecodedPicture> {
   return new Map(pictureSources(scene).map((src) => [src, decodePicture(src)]));
+}
+
+/** One note (KF324) per live source: the CLI has no camera or video, so it draws the fallback picture. */
+export function liveFallbackNotes(scene: Scene): Diagnostic[] {
+  return tileLiveSources(scene.tile).map((ref) =>
+    diag(
+      'liveFallback',
+      { nodeId: ref.nodeId },
+      ref.kind === 'webcam' ? 'the camera' : `the video “${ref.label}”`,
+    ),
+  );
 }

@@ -3,7 +3,7 @@
  * and param that matters in the node's set-up (field-visibility.ts; "More" fields included), the
  * read-out and the full list of its diagnostics.
  */
-import { useEffect, useState } from 'react';
+import { useContext, useEffect, useState } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import { isFieldShown } from '../../nodes/core/field-visibility.ts';
 import { PORT_TYPE_INFO } from '../../nodes/core/ports.ts';
@@ -12,6 +12,7 @@ import type { NodeEvaluation } from '../../nodes/graph/evaluate.ts';
 import { nodeDef } from '../../nodes/graph/group-def.ts';
 import { useEditorActions } from './editor-context.ts';
 import { FixButton } from './FixButton.tsx';
+import { InspectorExtrasContext } from './inspector-extras.ts';
 import { SaveGroup } from './tools/SaveGroup.tsx';
 import { hasInlineEditor } from './widgets/inline-editor.ts';
 import { InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
@@ -30,6 +31,7 @@ interface Props {
 export function Inspector({ node, connected, evaluation, diagnostics, onLabel, onMute, onClose }: Props) {
   const { registry, editParam, runFix } = useEditorActions();
   const def = nodeDef(registry, node);
+  const extras = useContext(InspectorExtrasContext);
   const [label, setLabel] = useState(node.label ?? '');
   useEffect(() => setLabel(node.label ?? ''), [node.label]);
   // Only the fields that matter in this set-up (and any with a problem of its own), as on the node.
@@ -109,6 +111,7 @@ export function Inspector({ node, connected, evaluation, diagnostics, onLabel, o
               {spec.doc && <p className="kf-inspector__hint">{spec.doc}</p>}
             </div>
           ))}
+        {extras?.(node)}
         {evaluation?.readout && (
           <>
             <h3>Read-out</h3>

@@ -4,11 +4,14 @@
  * shader-gen/picture.ts samplePicture does), LINEAR filtering without mipmaps, REPEAT wrap, row 0
  * = the picture's top row (v = 0). The built-in picture is drawn on the CPU and uploaded at once;
  * a data: URL is decoded with createImageBitmap, and until it is ready a 1×1 grey stands in
- * (`onReady` then restarts the picture).
+ * (`onReady` then restarts the picture). A live picture key (nodes/core/live-source.ts) binds the
+ * live texture once it has a frame (live-textures.ts), else its fallback picture.
  */
+import { parseLiveKey } from '../../nodes/core/live-source.ts';
 import { BUILTIN_PICTURE } from '../../nodes/core/values.ts';
 import { PICTURE_SAMPLER } from '../../shader-gen/glsl/values.ts';
 import { builtinPicture } from '../../shader-gen/picture.ts';
+import { LiveTextures } from './live-textures.ts';
 import type { GpuProgram } from './uniforms.ts';
 
 type Entry =
@@ -22,11 +25,15 @@ const MAX_CACHED = 16;
 export class PictureTextures {
   private readonly entries = new Map<string, Entry>();
   private placeholder: WebGLTexture | null = null;
+  /** The camera's and videos' frames (the viewport refills them every animation frame). */
+  readonly live: LiveTextures;
 
   constructor(
     private readonly gl: WebGL2RenderingContext,
     private readonly onReady: () => void = () => {},
-  ) {}
+  ) {
+    this.live = new LiveTextures(gl);
+  }
 
   /**
    * Binds pictures[i] to texture unit i and points sampler u_image{i} at it; the program must be
@@ -35,11 +42,12 @@ export class PictureTextures {
   bind(gp: GpuProgram, pictures: readonly string[]): boolean {
     const gl = this.gl;
     let ready = true;
-    pictures.forEach((src, i) => {
-      const entry = this.obtain(src);
-      ready &&= entry.state !== 'loading';
+    pictures.forEach((key, i) => {
+      const live = this.live.texture(key);
+      const entry = live ? null : this.obtain(parseLiveKey(key)?.fallback ?? key);
+      ready &&= entry?.state !== 'loading';
       gl.activeTexture(gl.TEXTURE0 + i);
-      gl.bindTexture(gl.TEXTURE_2D, entry.state === 'ready' ? entry.texture : this.grey());
+      gl.bindTexture(gl.TEXTURE_2D, live ?? (entry?.state === 'ready' ? entry.texture : this.grey()));
       const name = `${PICTURE_SAMPLER}${i}`;
       let loc = gp.locations.get(name);
       if (loc === undefined) {
@@ -54,8 +62,8 @@ export class PictureTextures {
 
   /** Resolves once every picture is decoded (or has failed: then the placeholder shows). */
   async whenReady(pictures: readonly string[]): Promise<void> {
-    for (const src of pictures) {
-      const entry = this.obtain(src);
+    for (const key of pictures) {
+      const entry = this.obtain(parseLiveKey(key)?.fallback ?? key);
       if (entry.state === 'loading') await entry.promise;
     }
   }
@@ -67,6 +75,7 @@ export class PictureTextures {
   }
 
   dispose(): void {
+    this.live.dispose();
     if (this.gl.isContextLost()) return;
     for (const entry of this.entries.values())
       if (entry.state === 'ready') this.gl.deleteTexture(entry.texture);

@@ -27,6 +27,8 @@ export interface ViewportStats {
   readonly samples: number;
   /** Whether the baked program draws now. */
   readonly baked: boolean;
+  /** Animation frames that brought a new camera or video frame (live-textures.ts). */
+  readonly liveUploads: number;
 }
 
 export interface RenderToPixelsOptions {

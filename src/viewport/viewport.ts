@@ -10,6 +10,8 @@ import type { Camera3d } from '../../nodes/core/scene-3d.ts';
 import { DEFAULT_VIEW, type View } from '../../nodes/core/view.ts';
 import { sampleOffset } from '../../shader-gen/view.ts';
 import { type Drawable, is3d } from './drawable.ts';
+import { liveMedia } from './live-media.ts';
+import { refreshLive } from './live-textures.ts';
 import { inspectCssPoint, type PixelInspection } from './pixel-probe.ts';
 import { createTarget, disposeTarget, type RenderTarget } from './render-target.ts';
 import { Renderer } from './renderer.ts';
@@ -57,6 +59,11 @@ export class Viewport {
   private disposed = false;
   private readonly idleBakeMs: number;
   private readonly detach: () => void;
+  /** A live source (camera, video) feeds the program: frames are requested continuously. */
+  private liveRunning = false;
+  /** Live frames are held still while an export draws its tiles (one frame for the whole PNG). */
+  private exporting = false;
+  private liveUploads = 0;
 
   constructor(
     private readonly canvas: HTMLCanvasElement,
@@ -94,7 +101,10 @@ export class Viewport {
     };
     canvas.addEventListener('webglcontextlost', onLost);
     canvas.addEventListener('webglcontextrestored', onRestored);
+    // A source starting or failing changes what is bound (its frames or its fallback).
+    const unsubscribe = liveMedia.subscribe(() => this.restart());
     this.detach = () => {
+      unsubscribe();
       canvas.removeEventListener('webglcontextlost', onLost);
       canvas.removeEventListener('webglcontextrestored', onRestored);
     };
@@ -107,6 +117,7 @@ export class Viewport {
       frames: this.framesDrawn,
       samples: this.samplesDone,
       baked: this.active?.baked ?? false,
+      liveUploads: this.liveUploads,
     };
   }
 
@@ -160,20 +171,27 @@ export class Viewport {
     const renderer = this.requireRenderer();
     const program = this.programs.exportProgram(renderer, scene);
     await renderer.pictures.whenReady(program.pictures);
-    return renderTiled(
-      () => this.requireRenderer(),
-      () => program,
-      {
-        width: opts.width,
-        height: opts.height,
-        samples: opts.samples,
-        view: opts.view ?? this.view(scene),
-        camera: this.camera(scene, opts.camera),
-        transparent: opts.transparent ?? false,
-        tile: opts.tile,
-        onProgress: opts.onProgress,
-      },
-    );
+    // The live sources' current frame, held for every tile.
+    this.refreshLiveFrames(renderer, program.pictures);
+    this.exporting = true;
+    try {
+      return await renderTiled(
+        () => this.requireRenderer(),
+        () => program,
+        {
+          width: opts.width,
+          height: opts.height,
+          samples: opts.samples,
+          view: opts.view ?? this.view(scene),
+          camera: this.camera(scene, opts.camera),
+          transparent: opts.transparent ?? false,
+          tile: opts.tile,
+          onProgress: opts.onProgress,
+        },
+      );
+    } finally {
+      this.exporting = false;
+    }
   }
 
   /** The picture on the canvas now (resolved from the accumulation buffer), top row first; null before the first frame. */
@@ -225,6 +243,15 @@ export class Viewport {
     return this.renderer;
   }
 
+  /** Uploads the live sources' new frames (none while exporting); true when the picture changed. */
+  private refreshLiveFrames(renderer: Renderer, pictures: readonly string[]): boolean {
+    if (this.exporting) return false;
+    const r = refreshLive(renderer.pictures.live, pictures, (id) => liveMedia.frameOf(id));
+    this.liveRunning = r.running;
+    if (r.changed) this.liveUploads++;
+    return r.changed;
+  }
+
   private restart(): void {
     if (!this.restartPending) this.frameClock = performance.now();
     this.restartPending = true;
@@ -262,6 +289,7 @@ export class Viewport {
     }
     const baked = this.programs.pollBake(renderer, scene, now, this.idleBakeMs);
     if (baked) this.active = baked;
+    if (this.active && this.refreshLiveFrames(renderer, this.active.pictures)) this.restartPending = true;
     const target = Math.max(1, scene.samples);
     if (this.active && (this.restartPending || this.samplesDone < target)) {
       this.drawFrame(renderer, this.active, scene, target);
@@ -302,7 +330,7 @@ export class Viewport {
   /** Keeps the loop running while there is work; sleeps (no frames at all) until the bake is due. */
   private schedule(now: number, target: number): void {
     const drawing = this.active !== null && (this.restartPending || this.samplesDone < target);
-    if (this.sceneDirty || drawing || this.programs.bakeInFlight()) {
+    if (this.sceneDirty || drawing || this.liveRunning || this.programs.bakeInFlight()) {
       this.requestFrame();
       return;
     }

@@ -27,7 +27,12 @@ export interface ServedApp {
   close(): Promise<void>;
 }
 
-export async function serveApp(): Promise<ServedApp> {
+export interface ServeOptions {
+  /** More Chromium flags, e.g. `--use-fake-device-for-media-stream` for a fake camera. */
+  readonly launchArgs?: readonly string[];
+}
+
+export async function serveApp(options: ServeOptions = {}): Promise<ServedApp> {
   const outDir = mkdtempSync(join(tmpdir(), 'kleinflow-e2e-'));
   await build({ root: repoRoot, logLevel: 'error', build: { outDir, emptyOutDir: true } });
   const server: PreviewServer = await preview({
@@ -36,10 +41,14 @@ export async function serveApp(): Promise<ServedApp> {
     build: { outDir },
     preview: { port: 0, host: '127.0.0.1' },
   });
-  return openBrowserOn(server.resolvedUrls!.local[0], async () => {
-    await new Promise((r) => server.httpServer.close(r));
-    rmSync(outDir, { recursive: true, force: true });
-  });
+  return openBrowserOn(
+    server.resolvedUrls!.local[0],
+    async () => {
+      await new Promise((r) => server.httpServer.close(r));
+      rmSync(outDir, { recursive: true, force: true });
+    },
+    options.launchArgs,
+  );
 }
 
 /** The dev server exactly as `npm start` runs it (vite.config.ts, StrictMode), on a free port. */
@@ -53,8 +62,12 @@ export async function serveDevApp(): Promise<ServedApp> {
   return openBrowserOn(server.resolvedUrls!.local[0], () => server.close());
 }
 
-async function openBrowserOn(url: string, stopServer: () => Promise<void>): Promise<ServedApp> {
-  const browser = await launchChromium();
+async function openBrowserOn(
+  url: string,
+  stopServer: () => Promise<void>,
+  launchArgs: readonly string[] = [],
+): Promise<ServedApp> {
+  const browser = await launchChromium(launchArgs);
   return {
     url,
     browser,

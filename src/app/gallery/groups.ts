@@ -55,7 +55,7 @@ export const GALLERY_SECTIONS: readonly GallerySection[] = [
       'fig42-maskit-inversions',
     ],
   },
-  { title: 'Pictures', ids: ['image-kaleidoscope-245', 'seed-picture-orbit'] },
+  { title: 'Pictures', ids: ['image-kaleidoscope-245', 'seed-picture-orbit', 'webcam-kaleidoscope'] },
   { title: 'Animation', ids: ['animated-breathing-loxodromic', 'fig39-schottky-waltz', 'fig40-morph'] },
   {
     title: '3D',

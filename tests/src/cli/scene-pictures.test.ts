@@ -3,7 +3,12 @@ import type { Coloring } from '../../../nodes/core/scene.ts';
 import { BUILTIN_PICTURE } from '../../../nodes/core/values.ts';
 import { rasterize, sampleColour, sampleContext } from '../../../shader-gen/raster.ts';
 import { toLinear } from '../../../shader-gen/srgb.ts';
-import { decodePicture, pictureSources, scenePictures } from '../../../src/cli/scene-pictures.ts';
+import {
+  decodePicture,
+  liveFallbackNotes,
+  pictureSources,
+  scenePictures,
+} from '../../../src/cli/scene-pictures.ts';
 import { encodePng } from '../../../src/io/png.ts';
 import { makeScene, reflection } from '../../shader-gen/support/scenes.ts';
 
@@ -48,5 +53,20 @@ describe('the CLI decodes the pictures a scene uses', () => {
   it('another format is refused with a message saying what to do', () => {
     expect(() => decodePicture('data:image/jpeg;base64,/9j/4AAQ')).toThrow(/PNG data URLs only.*image\/jpeg/);
     expect(() => decodePicture('data:image/png;base64,AAAA')).toThrow(/could not be decoded/);
+  });
+});
+
+describe('a live source on the CLI', () => {
+  it('decodes its fallback picture, and notes (KF324) that the fallback is drawn', () => {
+    const scene = pictureScene(ORANGE);
+    const coloring = scene.tile.coloring as Extract<Coloring, { mode: 'image' }>;
+    const live = { kind: 'webcam', nodeId: 'cam', label: '', src: '' } as const;
+    const withCamera = {
+      ...scene,
+      tile: { ...scene.tile, coloring: { ...coloring, image: { ...coloring.image, live } } },
+    };
+    expect(pictureSources(withCamera)).toEqual([ORANGE]);
+    expect(liveFallbackNotes(withCamera)).toMatchObject([{ code: 'KF324', nodeId: 'cam' }]);
+    expect(liveFallbackNotes(scene)).toEqual([]);
   });
 });

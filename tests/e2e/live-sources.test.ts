@@ -3,7 +3,8 @@
  * a moving test pattern; `--use-fake-ui-for-media-stream`: the permission prompt says yes). A
  * webcam document asks for nothing on load; "Start camera" makes the kaleidoscope follow the
  * camera frame by frame with no recompile; a denied camera leaves a node message and the fallback
- * picture; a video made in the page (MediaRecorder of a canvas) plays from the inspector's file input.
+ * picture; a video recorded in the page from the fake camera plays from the inspector's file input
+ * and follows the animation time.
  */
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';

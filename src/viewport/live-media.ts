@@ -129,11 +129,9 @@ export class LiveMedia {
       return;
     }
     if (!v.paused) v.pause();
-    const d = v.duration;
-    if (!(Number.isFinite(d) && d > 0)) return;
-    const t = ((this.clock % d) + d) % d;
+    const t = timelinePosition(this.clock, v.duration);
     // A seek per timeline tick, but not for differences below a frame (seeking is not free).
-    if (Math.abs(v.currentTime - t) > 1 / 120 && !v.seeking) v.currentTime = t;
+    if (t !== null && Math.abs(v.currentTime - t) > 1 / 120 && !v.seeking) v.currentTime = t;
   }
 
   private put(
@@ -162,6 +160,7 @@ export class LiveMedia {
     };
     if ('requestVideoFrameCallback' in video) video.requestVideoFrameCallback(count);
     await video.play();
+    await knowDuration(video);
     source.state = { status: 'live' };
     this.follow(source);
     this.changed();
@@ -179,6 +178,34 @@ export class LiveMedia {
   private changed(): void {
     for (const l of this.listeners) l();
   }
+}
+
+/**
+ * Where a video of `duration` seconds stands at timeline time t: t mod duration (also for t < 0),
+ * or null while its length is unknown.
+ */
+export function timelinePosition(time: number, duration: number): number | null {
+  if (!(Number.isFinite(duration) && duration > 0 && Number.isFinite(time))) return null;
+  return ((time % duration) + duration) % duration;
+}
+
+/**
+ * A WebM from a browser's MediaRecorder has no duration (Infinity) until it was read to the end:
+ * a seek far past the end makes the browser find it, then playback goes on from the start.
+ */
+async function knowDuration(video: HTMLVideoElement): Promise<void> {
+  if (Number.isFinite(video.duration)) return;
+  const found = new Promise<void>((resolve) => {
+    const check = () => {
+      if (!Number.isFinite(video.duration)) return;
+      video.removeEventListener('durationchange', check);
+      resolve();
+    };
+    video.addEventListener('durationchange', check);
+  });
+  video.currentTime = Number.MAX_SAFE_INTEGER;
+  await Promise.race([found, new Promise((r) => setTimeout(r, 2000))]);
+  video.currentTime = 0;
 }
 
 function newVideo(): HTMLVideoElement {

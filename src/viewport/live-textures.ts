@@ -8,6 +8,9 @@
 import { parseLiveKey } from '../../nodes/core/live-source.ts';
 import type { LiveFrame } from './live-media.ts';
 
+/** Live textures kept per context (least recently created go first: a source no longer drawn). */
+const MAX_LIVE = 8;
+
 interface Entry {
   texture: WebGLTexture;
   width: number;
@@ -92,6 +95,11 @@ export class LiveTextures {
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.REPEAT);
     const entry = { texture, width: 0, height: 0, serial: Number.NaN };
     this.entries.set(key, entry);
+    for (const [old, e] of this.entries) {
+      if (this.entries.size <= MAX_LIVE) break;
+      gl.deleteTexture(e.texture);
+      this.entries.delete(old);
+    }
     return entry;
   }
 }

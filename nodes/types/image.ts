@@ -107,7 +107,7 @@ export const imageNode = defineNode({
       // Twice the picture limit, so a slightly too big picture loads and says why it is not shown.
       maxLength: 2 * LIMITS.maxImageDataUrlChars,
       label: 'picture',
-      doc: `a data:image URL (at most ${MB(LIMITS.maxImageDataUrlChars)}); empty = the built-in checker with an arrow`,
+      doc: `a data:image URL (at most ${MB(LIMITS.maxImageDataUrlChars)}) — “Choose picture…” in the inspector fills it, shrinking a bigger picture to fit; empty = the built-in checker with an arrow`,
     },
     width: {
       kind: 'number',

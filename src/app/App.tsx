@@ -24,6 +24,7 @@ import { ExamplesGallery } from './gallery/ExamplesGallery.tsx';
 import { HelpDialog } from './help/HelpDialog.tsx';
 import { loadedMessage, PRESENTING_READ_ONLY, useDocumentIo } from './io/use-document-io.tsx';
 import { LiveSourceSection } from './LiveSourceSection.tsx';
+import { PictureFileSection } from './PictureFileSection.tsx';
 import { Presentation } from './present/Presentation.tsx';
 import { type RenderInfo, RenderPane } from './RenderPane.tsx';
 import { SplitPane } from './SplitPane.tsx';
@@ -56,7 +57,12 @@ interface Props {
   readonly fitStartView?: boolean;
 }
 
-const liveSourceSection = (node: GraphNode) => <LiveSourceSection node={node} />;
+const imageSections = (node: GraphNode) => (
+  <>
+    <PictureFileSection node={node} />
+    <LiveSourceSection node={node} />
+  </>
+);
 
 export function App({ initialMessages, autosaveHold, fitStartView = false }: Props) {
   const store = useStore();
@@ -170,7 +176,7 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
   );
 
   const graphEditor = (inspectorTab: boolean) => (
-    <InspectorExtrasContext.Provider value={liveSourceSection}>
+    <InspectorExtrasContext.Provider value={imageSections}>
       <ReactFlowProvider>
         <GraphEditor
           evaluation={evaluation}

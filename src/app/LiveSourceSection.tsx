@@ -10,15 +10,8 @@ import { liveSourceId } from '../../nodes/core/live-source.ts';
 import type { GraphNode } from '../../nodes/graph/document.ts';
 import { useStore } from '../state/use-store.ts';
 import { liveMedia } from '../viewport/live-media.ts';
+import { readDataUrl } from './picture-file.ts';
 import { useLiveMediaVersion } from './use-live-sources.ts';
-
-const readDataUrl = (file: Blob) =>
-  new Promise<string>((resolve, reject) => {
-    const reader = new FileReader();
-    reader.onload = () => resolve(String(reader.result));
-    reader.onerror = () => reject(reader.error);
-    reader.readAsDataURL(file);
-  });
 
 /** A file small enough to keep: its base64 data: URL (≈ 4/3 of its bytes) fits the limit. */
 const keepable = (file: File) => (file.size * 4) / 3 + 200 <= LIMITS.maxVideoDataUrlChars;

@@ -102,3 +102,18 @@ export function documentPath(doc: Pick<GraphDoc, 'nodes'>, path: readonly string
   }
   return out;
 }
+
+/** A node's path in the document: group ids from the top, then its own id (a top-level node: [id]). */
+export type NodePath = readonly string[];
+
+/** The document path of the node `flatId` names in the flattened graph. */
+export const pathOf = (origin: ReadonlyMap<string, NodePath>, flatId: string): NodePath =>
+  origin.get(flatId) ?? [flatId];
+
+/** Whether `path` is `prefix` or lies inside it (a node inside the group at `prefix`). */
+export const isUnder = (path: NodePath, prefix: NodePath): boolean =>
+  prefix.length <= path.length && prefix.every((id, i) => path[i] === id);
+
+/** The id at the group level `level` (a path of group ids) that `path` belongs to, or null when elsewhere. */
+export const idAtLevel = (path: NodePath, level: NodePath): string | null =>
+  path.length > level.length && isUnder(path, level) ? path[level.length] : null;

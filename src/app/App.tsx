@@ -7,6 +7,7 @@ import { ReactFlowProvider } from '@xyflow/react';
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import { emptyDocument, type GraphDoc } from '../../nodes/graph/document.ts';
+import type { NodePath } from '../../nodes/graph/flatten.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { fixPatches } from '../editor/diagnostic-fix.ts';
 import { GraphEditor } from '../editor/GraphEditor.tsx';
@@ -60,7 +61,8 @@ export function App({ initialMessages, autosaveHold }: Props) {
   const history = useEditorState((s) => s.history);
   const evaluate = useMemo(() => createEvaluator(registry), []);
   const evaluation = useMemo(() => evaluate(doc, time), [evaluate, doc, time]);
-  const [hovered, setHovered] = useState<string | null>(null);
+  // The hovered node by its document path, so a group hovered in the graph lights up all it draws.
+  const [hovered, setHovered] = useState<NodePath | null>(null);
   const [renderDiagnostics, setRenderDiagnostics] = useState<Diagnostic[]>([]);
   const [renderInfo, setRenderInfo] = useState<RenderInfo | null>(null);
   const [messages, setMessages] = useState<readonly Message[]>(initialMessages);
@@ -157,9 +159,9 @@ export function App({ initialMessages, autosaveHold }: Props) {
       <GraphEditor
         evaluation={evaluation}
         extraDiagnostics={renderDiagnostics}
-        hoveredNodeId={hovered}
+        hovered={hovered}
         frameKey={frameKey}
-        onHoverNode={setHovered}
+        onHover={setHovered}
         inspectorTab={inspectorTab}
       />
     </ReactFlowProvider>
@@ -206,8 +208,8 @@ export function App({ initialMessages, autosaveHold }: Props) {
         right={
           <RenderPane
             evaluation={evaluation}
-            hoveredNodeId={hovered}
-            onHoverNode={setHovered}
+            hovered={hovered}
+            onHover={setHovered}
             onDiagnostics={setRenderDiagnostics}
             onFrame={setRenderInfo}
             onViewport={onViewport}

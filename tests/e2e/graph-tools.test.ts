@@ -1,7 +1,8 @@
 /**
  * Graph tools end to end in Chromium: M mutes and unmutes a node (greyed, the picture changes,
  * undo restores it), a frame around two nodes carries them when its title bar is dragged, nodes
- * grouped with Ctrl+G open, lead back out by the breadcrumb and ungroup again, and a reroute point
+ * grouped with Ctrl+G light up their construction when the group is hovered, open, lead back out
+ * by the breadcrumb and ungroup again, and a reroute point
  * is added to a wire, dragged and removed.
  */
 import type { BrowserContext, Page } from 'playwright-core';
@@ -131,6 +132,15 @@ describe('graph tools', () => {
     const group = page.locator('.react-flow__node:has([data-node-type="group"])');
     await expect.poll(() => group.count()).toBe(1);
     expect(thumbDiff(before, await picture())).toBeLessThan(2);
+
+    // Hovering the group lights up what its inner nodes draw (the kaleidoscope's mirrors), by
+    // their ids in the picture; off the group, nothing is highlighted.
+    const halos = page.locator('.kf-render-overlay g[data-node]:has(> path[opacity="0.25"])');
+    await expect.poll(() => halos.count()).toBe(0);
+    await group.locator('.kf-node__header').hover();
+    await expect
+      .poll(() => halos.evaluateAll((gs) => [...new Set(gs.map((g) => g.getAttribute('data-node')))]))
+      .toEqual([kaleido]);
 
     // A fresh session (the autosave) reopens the grouped document.
     const other = await context.newPage();

@@ -6,6 +6,7 @@
  */
 import { useEffect, useMemo, useState } from 'react';
 import type { GraphDoc } from '../../../nodes/graph/document.ts';
+import type { NodePath } from '../../../nodes/graph/flatten.ts';
 import { registry } from '../../../nodes/types/index.ts';
 import { createEvaluator } from '../../state/evaluation.ts';
 import { useEditorState, useStore } from '../../state/use-store.ts';
@@ -28,13 +29,13 @@ function Embed() {
   const time = useEditorState((s) => s.time);
   const evaluate = useMemo(() => createEvaluator(registry), []);
   const evaluation = useMemo(() => evaluate(doc, time), [evaluate, doc, time]);
-  const [hovered, setHovered] = useState<string | null>(null);
+  const [hovered, setHovered] = useState<NodePath | null>(null);
   return (
     <div className="kf-present kf-present--embed" data-testid="embed-mode">
       <RenderPane
         evaluation={evaluation}
-        hoveredNodeId={hovered}
-        onHoverNode={setHovered}
+        hovered={hovered}
+        onHover={setHovered}
         onDiagnostics={noop}
         onFrame={noop}
         onViewport={noop}

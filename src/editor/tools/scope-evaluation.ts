@@ -5,12 +5,11 @@
  */
 import type { Diagnostic } from '../../../nodes/core/diagnostics.ts';
 import type { Evaluation, NodeEvaluation } from '../../../nodes/graph/evaluate.ts';
+import { idAtLevel, pathOf } from '../../../nodes/graph/flatten.ts';
 
 /** The id at level `path` that flattened node `flatId` belongs to, or null when it is elsewhere. */
 function localId(evaluation: Evaluation, flatId: string, path: readonly string[]): string | null {
-  const origin = evaluation.origin.get(flatId) ?? [flatId];
-  if (origin.length <= path.length || path.some((id, i) => origin[i] !== id)) return null;
-  return origin[path.length];
+  return idAtLevel(pathOf(evaluation.origin, flatId), path);
 }
 
 export function scopeEvaluation(evaluation: Evaluation, path: readonly string[]): Evaluation {

@@ -11,6 +11,7 @@ import type { NodePath } from '../../nodes/graph/flatten.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { fixPatches } from '../editor/diagnostic-fix.ts';
 import { GraphEditor } from '../editor/GraphEditor.tsx';
+import { scopeEvaluation } from '../editor/tools/scope-evaluation.ts';
 import { isTyping } from '../editor/typing.ts';
 import type { AutosaveHold } from '../state/autosave.ts';
 import { createEvaluator } from '../state/evaluation.ts';
@@ -149,9 +150,10 @@ export function App({ initialMessages, autosaveHold }: Props) {
   const onViewport = useCallback((v: Viewport | null) => {
     viewport.current = v;
   }, []);
+  // The status list is the top level's: a problem inside a group names the group and the node in it.
   const allDiagnostics = useMemo(
-    () => [...evaluation.diagnostics, ...renderDiagnostics],
-    [evaluation, renderDiagnostics],
+    () => [...scopeEvaluation(evaluation, [], doc).diagnostics, ...renderDiagnostics],
+    [evaluation, doc, renderDiagnostics],
   );
 
   const graphEditor = (inspectorTab: boolean) => (

@@ -17,6 +17,7 @@ import {
   thumbDiff,
   waitRendered,
 } from './editor-page.ts';
+import { openViaPicker } from './io-page.ts';
 
 let app: ServedApp;
 let context: BrowserContext;
@@ -188,6 +189,49 @@ describe('graph tools', () => {
     const back = await center(dot);
     await page.mouse.dblclick(back.x, back.y);
     await expect.poll(() => dot.count()).toBe(0);
+    expect(problems).toEqual([]);
+  });
+
+  it('a problem inside a group: the group’s badge and the status list name the group and the node; inside, the node’s own', async () => {
+    const broken = {
+      format: 'kleinflow',
+      version: 1,
+      meta: { title: 'Broken group' },
+      view: { center: [0, 0], scale: 4 },
+      nodes: [
+        {
+          id: 'g',
+          type: 'group',
+          label: 'Mirror pair',
+          position: [0, 0],
+          params: {},
+          group: {
+            nodes: [
+              { id: 'c', type: 'circle', label: 'Circle 2', position: [0, 0], params: { radius: -1 } },
+              { id: 'i', type: 'inversion', position: [260, 0], params: {} },
+            ],
+            edges: [{ id: 'e1', from: { node: 'c', port: 'circle' }, to: { node: 'i', port: 'circle' } }],
+            inputs: [],
+            outputs: [{ name: 'element', from: { node: 'i', port: 'element' } }],
+          },
+        },
+        { id: 'out', type: 'render', position: [400, 0], params: {} },
+      ],
+      edges: [{ id: 'e2', from: { node: 'g', port: 'element' }, to: { node: 'out', port: 'elements' } }],
+    };
+    await openViaPicker(page, 'broken.kleinflow.json', Buffer.from(JSON.stringify(broken)));
+    const badge = nodeEl(page, 'g').locator('.kf-badge--error');
+    await badge.waitFor();
+    expect(await badge.getAttribute('title')).toMatch(/in group ‘Mirror pair’ → node ‘Circle 2’: /);
+    await page.getByTestId('diagnostics-count').click();
+    const list = page.getByRole('list', { name: 'Diagnostics' });
+    await expect.poll(() => list.textContent()).toMatch(/g in group ‘Mirror pair’ → node ‘Circle 2’: /);
+    await page.getByTestId('diagnostics-count').click();
+    await nodeEl(page, 'g').getByRole('button', { name: 'Open group' }).click();
+    const inner = nodeEl(page, 'c').locator('.kf-badge--error');
+    await inner.waitFor();
+    expect(await inner.getAttribute('title')).not.toMatch(/in group/);
+    await page.getByRole('navigation', { name: 'Open group' }).getByRole('button', { name: 'Graph' }).click();
     expect(problems).toEqual([]);
   });
 });

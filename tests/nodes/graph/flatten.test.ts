@@ -88,6 +88,33 @@ describe('diagnostics of grouped nodes', () => {
     const problem = evaluateGraph(bad, registry).diagnostics.find((x) => x.nodeId === 'c');
     expect(problem?.path).toBe('nodes[0].group.nodes[0].params.radius');
   });
+
+  it('name a wire’s path in the document: inside its group, or the outer wire it was copied from', () => {
+    // p's point wired into i's circle input: a type mismatch on the wire inside the group.
+    const inside = groupNodes(
+      doc(
+        [node('p', 'point'), node('i', 'inversion'), node('out', 'render')],
+        [edge('e1', 'p.point', 'i.circle'), edge('e2', 'i.element', 'out.elements')],
+      ),
+      ['p', 'i'],
+      'g',
+    );
+    const wrong = evaluateGraph(inside, registry).diagnostics.find((x) => x.code === 'KF206');
+    expect(wrong?.path).toBe('nodes[0].group.edges[0]');
+    // The same mismatch on a wire from outside into the group's exposed input.
+    const outside = groupNodes(
+      doc(
+        [node('p', 'point'), node('i', 'inversion'), node('out', 'render')],
+        [edge('e2', 'i.element', 'out.elements'), edge('e1', 'p.point', 'i.circle')],
+      ),
+      ['i'],
+      'g',
+    );
+    const flat = flattenGroups(outside);
+    expect(flat.edgeOrigin.has('e1')).toBe(false); // a top-level wire keeps its id
+    const crossing = evaluateGraph(outside, registry).diagnostics.find((x) => x.code === 'KF206');
+    expect(crossing?.path).toBe(`edges[${outside.edges.findIndex((e) => e.id === 'e1')}]`);
+  });
 });
 
 describe('document round trips', () => {

@@ -1,7 +1,7 @@
 /** Flattening groups, and documents with the graph tools' fields through a save and a load. */
 import { describe, expect, it } from 'vitest';
 import { LIMITS } from '../../../nodes/core/limits.ts';
-import type { GraphDoc, GraphNode } from '../../../nodes/graph/document.ts';
+import type { GraphDoc, GraphFrame, GraphNode } from '../../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
 import { flattenGroups } from '../../../nodes/graph/flatten.ts';
 import { groupDef } from '../../../nodes/graph/group-def.ts';
@@ -118,11 +118,24 @@ describe('diagnostics of grouped nodes', () => {
 });
 
 describe('document round trips', () => {
-  it('groups, muted nodes, frames and reroute points survive save and load exactly', () => {
+  it('groups, muted nodes, frames (in groups too) and reroute points survive save and load exactly', () => {
     const d = grouped();
+    const inner: GraphFrame = {
+      id: 'f',
+      title: 'Inside',
+      color: '#2f5b4a',
+      position: [0, 0],
+      size: [200, 100],
+    };
     const full: GraphDoc = {
       ...d,
-      nodes: d.nodes.map((n) => (n.id === 'out' ? { ...n, muted: true } : n)),
+      nodes: d.nodes.map((n) =>
+        n.id === 'out'
+          ? { ...n, muted: true }
+          : n.group
+            ? { ...n, group: { ...n.group, frames: [inner] } }
+            : n,
+      ),
       edges: d.edges.map((e) => ({ ...e, via: [[10, 20] as [number, number]] })),
       frames: [{ id: 'f', title: 'Mirrors', color: '#335577', position: [-20, -40], size: [400, 300] }],
     };

@@ -1,8 +1,8 @@
 /**
  * Graph tools end to end in Chromium: M mutes and unmutes a node (greyed, the picture changes,
  * undo restores it), a frame around two nodes carries them when its title bar is dragged, nodes
- * grouped with Ctrl+G light up their construction when the group is hovered, open, lead back out
- * by the breadcrumb and ungroup again, and a reroute point
+ * grouped with Ctrl+G light up their construction when the group is hovered, open (a frame made
+ * inside stays in the group), lead back out by the breadcrumb and ungroup again, and a reroute point
  * is added to a wire, dragged and removed.
  */
 import type { BrowserContext, Page } from 'playwright-core';
@@ -158,15 +158,33 @@ describe('graph tools', () => {
     await crumbs.waitFor();
     await expect.poll(() => page.locator('.react-flow__node-kf').count()).toBe(2);
     expect(await nodeEl(page, kaleido).count()).toBe(1);
+    // A frame inside the group: made and titled there, kept in the group (not at the top level).
+    // (The frame of the test before carried only these two nodes: it came inside with them.)
+    const frames = page.getByRole('region', { name: /^Frame / });
+    const framesBefore = await frames.count();
+    await select(kaleido);
+    await page.getByRole('button', { name: 'Frame', exact: true }).click();
+    await expect.poll(() => frames.count()).toBe(framesBefore + 1);
+    const title = frames.last().getByRole('textbox', { name: 'Frame title' });
+    await title.fill('Mirrors');
+    await title.press('Enter');
+    await page.getByRole('region', { name: 'Frame Mirrors' }).waitFor();
     await crumbs.getByRole('button', { name: 'Graph' }).click();
     await crumbs.waitFor({ state: 'detached' });
     await expect.poll(() => page.locator('.react-flow__node-kf').count()).toBe(count - 1);
+    expect(await page.getByRole('region', { name: 'Frame Mirrors' }).count()).toBe(0);
+    await group.getByRole('button', { name: 'Open group' }).click();
+    await page.getByRole('region', { name: 'Frame Mirrors' }).waitFor();
+    await crumbs.getByRole('button', { name: 'Graph' }).click();
+    await crumbs.waitFor({ state: 'detached' });
 
     await select((await group.getAttribute('data-id'))!);
     await page.keyboard.press('Control+Shift+g');
     await expect.poll(() => page.locator('.react-flow__node-kf').count()).toBe(count);
     expect(await nodeEl(page, kaleido).count()).toBe(1);
     expect(await nodeEl(page, tile).count()).toBe(1);
+    // Ungrouped, the group's frame comes out with its node.
+    await page.getByRole('region', { name: 'Frame Mirrors' }).waitFor();
     expect(thumbDiff(before, await picture())).toBeLessThan(2);
     expect(problems).toEqual([]);
   });

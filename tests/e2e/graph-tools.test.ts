@@ -7,7 +7,7 @@
  */
 import type { BrowserContext, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { type ServedApp, serveApp } from './app-server.ts';
+import { openAppSession, type ServedApp } from './app-server.ts';
 import {
   emptyCanvasPoint,
   nodeCount,
@@ -25,11 +25,7 @@ let page: Page;
 const problems: string[] = [];
 
 beforeAll(async () => {
-  app = await serveApp();
-  context = await app.newContext();
-  page = await context.newPage();
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  await page.goto(app.url);
+  ({ app, context, page } = await openAppSession({ problems }));
 }, 180_000);
 
 afterAll(async () => {

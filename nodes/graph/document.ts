@@ -47,6 +47,15 @@ export const groupOutputSchema = z.strictObject({
   from: portRefSchema,
 });
 
+/** A frame: a titled, coloured backdrop; dragging it moves the nodes inside it. Drawing only. */
+export const frameSchema = z.strictObject({
+  id,
+  title: z.string().max(200),
+  color: z.string().regex(/^#[0-9a-fA-F]{6}$/, 'expected a colour "#rrggbb"'),
+  position: vec2,
+  size: z.tuple([finite.positive(), finite.positive()]),
+});
+
 /**
  * A node: a node type with its params, or (type "group") a subgraph of its own nodes and edges
  * with exposed inputs and outputs (docs/architecture.md "Groups"). Inner ids are scoped to the
@@ -73,15 +82,8 @@ export const groupBodySchema = z.strictObject({
   edges: z.array(edgeSchema),
   inputs: z.array(groupInputSchema),
   outputs: z.array(groupOutputSchema),
-});
-
-/** A frame: a titled, coloured backdrop; dragging it moves the nodes inside it. Drawing only. */
-export const frameSchema = z.strictObject({
-  id,
-  title: z.string().max(200),
-  color: z.string().regex(/^#[0-9a-fA-F]{6}$/, 'expected a colour "#rrggbb"'),
-  position: vec2,
-  size: z.tuple([finite.positive(), finite.positive()]),
+  /** The frames drawn inside the group when it is open (ids scoped to the group). */
+  frames: z.array(frameSchema).max(1000).optional(),
 });
 
 /** A View (nodes/core/view.ts) as stored in a document. */

@@ -13,7 +13,7 @@ import type { Handle3dItem, Overlay3dItem, Scene3d } from '../core/scene-3d.ts';
 import { DEFAULT_TILE } from '../core/tile-spec.ts';
 import { type Analysis, analyzeGraph } from './analyze.ts';
 import type { GraphDoc, GraphNode } from './document.ts';
-import { documentPath, flattenGroups, hasGroups } from './flatten.ts';
+import { documentPath, type Flattened, flattenGroups, hasGroups } from './flatten.ts';
 import { nodeVersion, nodeVersionProblem } from './migrate.ts';
 import { mirrorDiagnostics } from './mirror-check.ts';
 import { mutedOutputs } from './mute.ts';
@@ -160,23 +160,25 @@ export function evaluateGraph(
       // A check, not the picture: a geometry corner case here must never withhold the render.
     }
   }
-  const located = flat ? diagnostics.map((d) => inDocument(d, source, analysis, origin)) : diagnostics;
+  const located = flat ? diagnostics.map((d) => inDocument(d, source, flat)) : diagnostics;
   return { scene, scene3d, nodes: results, diagnostics: located, analysis, origin };
 }
 
-/** A grouped node's diagnostic with its path in the document, not in the flattened graph. */
-function inDocument(
-  d: Diagnostic,
-  doc: GraphDoc,
-  analysis: Analysis,
-  origin: ReadonlyMap<string, readonly string[]>,
-): Diagnostic {
-  const path = d.nodeId ? origin.get(d.nodeId) : undefined;
-  const index = d.nodeId ? analysis.nodes.get(d.nodeId)?.index : undefined;
-  const flatPrefix = `nodes[${index}]`;
-  if (!path || index === undefined || !d.path?.startsWith(flatPrefix)) return d;
-  const real = documentPath(doc, path);
-  return real ? { ...d, path: real + d.path.slice(flatPrefix.length) } : d;
+/**
+ * A diagnostic of a grouped document with its path in the document, not in the flattened graph:
+ * a grouped node's `nodes[i]…` and a grouped (or reconnected) wire's `edges[i]…` become where they
+ * live (`nodes[2].group.nodes[0].params.radius`, `nodes[2].group.edges[1]`).
+ */
+function inDocument(d: Diagnostic, doc: GraphDoc, flat: Flattened): Diagnostic {
+  const at = d.path?.match(/^(nodes|edges)\[(\d+)\]/);
+  if (!d.path || !at) return d;
+  const kind = at[1] as 'nodes' | 'edges';
+  const id = flat.doc[kind][Number(at[2])]?.id;
+  // A node diagnostic names its node: the index must be that node's (not a neighbour's).
+  if (id === undefined || (kind === 'nodes' && d.nodeId !== undefined && d.nodeId !== id)) return d;
+  const path = (kind === 'nodes' ? flat.origin : flat.edgeOrigin).get(id);
+  const real = path && documentPath(doc, path, kind);
+  return real ? { ...d, path: real + d.path.slice(at[0].length) } : d;
 }
 
 const NO_EDGES: ReadonlyMap<string, unknown> = new Map();

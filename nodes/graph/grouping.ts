@@ -2,12 +2,20 @@
  * Group and ungroup (docs/architecture.md "Groups"), pure on documents. Grouping moves the chosen
  * nodes and the wires between them into one group node, exposing one input per outside output
  * that feeds the selection (wired inside to every port it fed) and one output per inner output
- * read outside. Ungrouping puts everything back: nodes, params, positions and ids as they were.
+ * read outside; a frame whose nodes are all chosen goes inside with them. Ungrouping puts
+ * everything back: nodes, params, positions, ids and frames as they were.
  */
-import type { GraphDoc, GraphEdge, GraphNode, PortRef } from './document.ts';
+import type { GraphDoc, GraphEdge, GraphFrame, GraphNode, PortRef } from './document.ts';
+import { nodesInFrame } from './frames.ts';
 import { GROUP_TYPE } from './group-def.ts';
 
-type Graph = Pick<GraphDoc, 'nodes' | 'edges'>;
+type Graph = Pick<GraphDoc, 'nodes' | 'edges' | 'frames'>;
+
+/** `graph` with these frames; none removes the key (a graph without frames stays as it was). */
+function withFrames<G extends Graph>(graph: G, frames: readonly GraphFrame[]): G {
+  const { frames: _old, ...rest } = graph;
+  return (frames.length > 0 ? { ...rest, frames } : rest) as G;
+}
 const key = (r: PortRef) => JSON.stringify([r.node, r.port]);
 
 /** `wanted`, or `wanted2`, `wanted3`… — the first not in `taken` (which it joins). */
@@ -56,6 +64,13 @@ export function groupNodes<G extends Graph>(graph: G, ids: Iterable<string>, gro
       edges.push({ ...e, from: { node: groupId, port: out.name } });
     } else edges.push(e);
   }
+  // A frame goes inside when it carries nodes and all of them are grouped.
+  const carried = new Set(
+    (graph.frames ?? []).filter((f) => {
+      const ids = nodesInFrame(graph.nodes, f);
+      return ids.length > 0 && ids.every((id) => inside.has(id));
+    }),
+  );
   const group: GraphNode = {
     id: groupId,
     type: GROUP_TYPE,
@@ -66,11 +81,18 @@ export function groupNodes<G extends Graph>(graph: G, ids: Iterable<string>, gro
       edges: innerEdges,
       inputs: [...inputs.values()].map(({ name, label, targets }) => ({ name, label, targets })),
       outputs: [...outputs.values()],
+      ...(carried.size > 0 ? { frames: [...carried] } : {}),
     },
   };
   const first = graph.nodes.findIndex((n) => inside.has(n.id));
   const nodes = graph.nodes.flatMap((n, i) => (i === first ? [group] : inside.has(n.id) ? [] : [n]));
-  return { ...graph, nodes, edges };
+  const grouped = { ...graph, nodes, edges };
+  return carried.size > 0
+    ? withFrames(
+        grouped,
+        (graph.frames ?? []).filter((f) => !carried.has(f)),
+      )
+    : grouped;
 }
 
 /**
@@ -90,6 +112,7 @@ export function ungroupNode<G extends Graph>(
   const taken = new Set([
     ...graph.nodes.filter((n) => n.id !== groupId).map((n) => n.id),
     ...graph.edges.map((e) => e.id),
+    ...(graph.frames ?? []).map((f) => f.id),
   ]);
   const rename = (id: string) => (taken.has(id) ? freshId(id.replace(/\d+$/, '')) : id);
   const ids = new Map(body.nodes.map((n) => [n.id, rename(n.id)]));
@@ -127,5 +150,12 @@ export function ungroupNode<G extends Graph>(
     if (from && to) edges.push({ ...e, id: taken.has(e.id) ? freshId('e') : e.id, from, to });
   }
   const nodes = [...graph.nodes.slice(0, at), ...inner, ...graph.nodes.slice(at + 1)];
-  return { ...graph, nodes, edges };
+  const ungrouped = { ...graph, nodes, edges };
+  if (!body.frames?.length) return ungrouped;
+  const frames = body.frames.map((f) => ({
+    ...f,
+    id: taken.has(f.id) ? freshId(f.id.replace(/\d+$/, '')) : f.id,
+    position: [f.position[0] + dx, f.position[1] + dy] as [number, number],
+  }));
+  return withFrames(ungrouped, [...(graph.frames ?? []), ...frames]);
 }

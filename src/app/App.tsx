@@ -7,10 +7,12 @@ import { ReactFlowProvider } from '@xyflow/react';
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import { emptyDocument, type GraphDoc, type GraphNode } from '../../nodes/graph/document.ts';
+import type { NodePath } from '../../nodes/graph/flatten.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { fixPatches } from '../editor/diagnostic-fix.ts';
 import { GraphEditor } from '../editor/GraphEditor.tsx';
 import { InspectorExtrasContext } from '../editor/inspector-extras.ts';
+import { scopeEvaluation } from '../editor/tools/scope-evaluation.ts';
 import { isTyping } from '../editor/typing.ts';
 import type { AutosaveHold } from '../state/autosave.ts';
 import { createEvaluator } from '../state/evaluation.ts';
@@ -72,7 +74,8 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
   const history = useEditorState((s) => s.history);
   const evaluate = useMemo(() => createEvaluator(registry), []);
   const evaluation = useMemo(() => evaluate(doc, time), [evaluate, doc, time]);
-  const [hovered, setHovered] = useState<string | null>(null);
+  // The hovered node by its document path, so a group hovered in the graph lights up all it draws.
+  const [hovered, setHovered] = useState<NodePath | null>(null);
   const [renderDiagnostics, setRenderDiagnostics] = useState<Diagnostic[]>([]);
   const [renderInfo, setRenderInfo] = useState<RenderInfo | null>(null);
   const [messages, setMessages] = useState<readonly Message[]>(initialMessages);
@@ -170,9 +173,10 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
   const onViewport = useCallback((v: Viewport | null) => {
     viewport.current = v;
   }, []);
+  // The status list is the top level's: a problem inside a group names the group and the node in it.
   const allDiagnostics = useMemo(
-    () => [...evaluation.diagnostics, ...renderDiagnostics],
-    [evaluation, renderDiagnostics],
+    () => [...scopeEvaluation(evaluation, [], doc).diagnostics, ...renderDiagnostics],
+    [evaluation, doc, renderDiagnostics],
   );
 
   const graphEditor = (inspectorTab: boolean) => (
@@ -181,9 +185,9 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
         <GraphEditor
           evaluation={evaluation}
           extraDiagnostics={renderDiagnostics}
-          hoveredNodeId={hovered}
+          hovered={hovered}
           frameKey={frameKey}
-          onHoverNode={setHovered}
+          onHover={setHovered}
           inspectorTab={inspectorTab}
         />
       </ReactFlowProvider>
@@ -231,8 +235,8 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
         right={
           <RenderPane
             evaluation={evaluation}
-            hoveredNodeId={hovered}
-            onHoverNode={setHovered}
+            hovered={hovered}
+            onHover={setHovered}
             onDiagnostics={setRenderDiagnostics}
             onFrame={setRenderInfo}
             onViewport={onViewport}

@@ -9,6 +9,7 @@ import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import type { View } from '../../nodes/core/scene.ts';
 import type { Evaluation } from '../../nodes/graph/evaluate.ts';
+import { isUnder, type NodePath, pathOf } from '../../nodes/graph/flatten.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { isTyping } from '../editor/typing.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
@@ -39,8 +40,12 @@ export interface RenderInfo {
 
 interface Props {
   readonly evaluation: Evaluation;
-  readonly hoveredNodeId: string | null;
-  onHoverNode(id: string | null): void;
+  /**
+   * The hovered node by its document path (flatten.ts NodePath): a node's construction is drawn
+   * highlighted; a group's path highlights everything its inner nodes draw.
+   */
+  readonly hovered: NodePath | null;
+  onHover(path: NodePath | null): void;
   onDiagnostics(d: Diagnostic[]): void;
   onFrame(info: RenderInfo): void;
   /** Gives the app the viewport (for PNG export) once it exists. */
@@ -52,10 +57,19 @@ interface Props {
   onInspectingOff?(): void;
 }
 
+const NONE: ReadonlySet<string> = new Set();
+
+/** The flattened ids of the nodes at or inside `path` (what the overlay draws for it). */
+function nodesUnder(evaluation: Evaluation, path: NodePath | null): ReadonlySet<string> {
+  if (!path) return NONE;
+  const ids = [...evaluation.analysis.nodes.keys()];
+  return new Set(ids.filter((id) => isUnder(pathOf(evaluation.origin, id), path)));
+}
+
 export function RenderPane({
   evaluation,
-  hoveredNodeId,
-  onHoverNode,
+  hovered,
+  onHover,
   onDiagnostics,
   onFrame,
   onViewport,
@@ -206,6 +220,8 @@ export function RenderPane({
   });
 
   const hint = useMemo(() => renderHint(doc, evaluation, registry), [doc, evaluation]);
+  const hoveredNodeIds = useMemo(() => nodesUnder(evaluation, hovered), [evaluation, hovered]);
+  const onHoverNode = (id: string | null) => onHover(id === null ? null : pathOf(evaluation.origin, id));
   const patchChange = (patches: NodePatch[]) => ({ type: 'set-params' as const, patches });
   return (
     <div
@@ -221,7 +237,7 @@ export function RenderPane({
           camera={camera3d.camera}
           width={size.width}
           height={size.height}
-          hoveredNodeId={hoveredNodeId}
+          hoveredNodeIds={hoveredNodeIds}
           onHoverNode={onHoverNode}
           onPreview={(patches) => store.preview(patchChange(patches))}
           onCommit={(patches) => store.commit(patchChange(patches), 'drag in the render')}
@@ -235,7 +251,7 @@ export function RenderPane({
           view={view}
           width={size.width}
           height={size.height}
-          hoveredNodeId={hoveredNodeId}
+          hoveredNodeIds={hoveredNodeIds}
           onHoverNode={onHoverNode}
           onPreview={(patches) => store.preview(patchChange(patches))}
           onCommit={(patches) => store.commit(patchChange(patches), 'drag in the render')}

@@ -18,6 +18,7 @@ import {
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import type { Evaluation } from '../../nodes/graph/evaluate.ts';
+import { idAtLevel, type NodePath } from '../../nodes/graph/flatten.ts';
 import { registry } from '../../nodes/types/index.ts';
 import type { Change } from '../state/changes.ts';
 import { idAllocator } from '../state/ids.ts';
@@ -51,10 +52,11 @@ interface Props {
   readonly evaluation: Evaluation;
   /** Diagnostics from the renderer (e.g. a shader error), shown on their nodes too. */
   readonly extraDiagnostics: readonly Diagnostic[];
-  readonly hoveredNodeId: string | null;
+  /** The hovered node's document path (shared with the render): at this level, the node holding it. */
+  readonly hovered: NodePath | null;
   /** Changes when a document is loaded: the graph is framed again. */
   readonly frameKey: number;
-  onHoverNode(id: string | null): void;
+  onHover(path: NodePath | null): void;
   /** The phone's Inspector tab: the inspector is open and covers the pane. */
   readonly inspectorTab?: boolean;
 }
@@ -75,9 +77,9 @@ export function GraphEditor(props: Props) {
 function GraphCanvas({
   evaluation,
   extraDiagnostics,
-  hoveredNodeId,
+  hovered,
   frameKey,
-  onHoverNode,
+  onHover,
   inspectorTab = false,
   scope,
 }: Props & { readonly scope: GroupScope }) {
@@ -98,6 +100,7 @@ function GraphCanvas({
     [evaluation, extraDiagnostics],
   );
 
+  const hoveredNodeId = hovered && idAtLevel(hovered, scope.path);
   useEffect(() => {
     setNodes((prev) =>
       toFlowNodes(
@@ -122,13 +125,13 @@ function GraphCanvas({
         if (final) store.commit(change, `edit ${key}`);
         else store.preview(change);
       },
-      setHoveredNode: onHoverNode,
+      setHoveredNode: (id) => onHover(id === null ? null : [...scope.path, id]),
       // Fixes name nodes by their flattened ids: run on the whole document (routed into groups).
       runFix: (fix) =>
         scope.base.dispatch({ type: 'set-params', patches: fixPatches(scope.full.current, fix) }, fix.label),
       openGroup: scope.open,
     }),
-    [store, onHoverNode, scope.base, scope.full, scope.open],
+    [store, onHover, scope.path, scope.base, scope.full, scope.open],
   );
 
   const frames = useFrames(doc, store, setNodes);

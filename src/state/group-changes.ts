@@ -16,14 +16,20 @@ type Routed =
   | SetParams
   | { readonly type: 'in-group'; readonly path: readonly string[]; readonly change: SetParams };
 
-/** The subgraph of the group at `path` as a document (frames stay at the top level), or null. */
+/** A group's body as a document: its nodes, edges and frames with the document's view and meta. */
+function bodyDocument(doc: GraphDoc, body: GroupBody): GraphDoc {
+  const { frames: _outer, ...rest } = doc;
+  const inner = { ...rest, nodes: body.nodes, edges: body.edges };
+  return body.frames ? { ...inner, frames: body.frames } : inner;
+}
+
+/** The subgraph of the group at `path` as a document (its own frames), or null. */
 export function scopeDocument(doc: GraphDoc, path: readonly string[]): GraphDoc | null {
   let current: GraphDoc = doc;
   for (const id of path) {
     const body = current.nodes.find((n) => n.id === id)?.group;
     if (!body) return null;
-    const { frames: _top, ...rest } = current;
-    current = { ...rest, nodes: body.nodes, edges: body.edges };
+    current = bodyDocument(current, body);
   }
   return current;
 }
@@ -54,11 +60,12 @@ export function applyInGroup<C>(
   const at = doc.nodes.findIndex((n) => n.id === head);
   const group = doc.nodes[at];
   if (!group?.group) return doc;
-  const { frames: _top, ...base } = doc;
-  const inner: GraphDoc = { ...base, nodes: group.group.nodes, edges: group.group.edges };
+  const inner = bodyDocument(doc, group.group);
   const next = applyInGroup(inner, rest, change, apply);
   if (next === inner) return doc;
-  const body = pruneBody({ ...group.group, nodes: next.nodes, edges: next.edges });
+  const { frames: _old, ...kept } = group.group;
+  const frames = next.frames?.length ? { frames: next.frames } : {};
+  const body = pruneBody({ ...kept, nodes: next.nodes, edges: next.edges, ...frames });
   const ports = new Set([...body.inputs, ...body.outputs].map((p) => p.name));
   const nodes = doc.nodes.map((n, i) => (i === at ? { ...group, group: body } : n));
   // Wires to ports the group no longer exposes go with them.

@@ -6,25 +6,20 @@
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { ALL_FORMATS, BufferSource, Input } from 'mediabunny';
-import type { BrowserContext, Page } from 'playwright-core';
+import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { countGifFrames, gifFrameBlocks } from '../../src/io/gif.ts';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { openAppSession, repoRoot, type ServedApp } from './app-server.ts';
 import { waitRendered } from './editor-page.ts';
 import { menu, openViaPicker } from './io-page.ts';
 
 let app: ServedApp;
-let context: BrowserContext;
 let page: Page;
 const problems: string[] = [];
 const EXAMPLE = join(repoRoot, 'examples', 'animated-breathing-loxodromic.kleinflow.json');
 
 beforeAll(async () => {
-  app = await serveApp();
-  context = await app.newContext();
-  page = await context.newPage();
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  await page.goto(app.url);
+  ({ app, page } = await openAppSession({ problems }));
   await waitRendered(page);
   await openViaPicker(page, 'animated.kleinflow.json', readFileSync(EXAMPLE));
   await waitRendered(page);

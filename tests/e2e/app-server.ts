@@ -7,7 +7,7 @@
 import { mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import type { Browser, BrowserContext } from 'playwright-core';
+import type { Browser, BrowserContext, Page } from 'playwright-core';
 import { build, createServer, type PreviewServer, preview } from 'vite';
 import { launchChromium } from '../support/browser.ts';
 
@@ -86,4 +86,37 @@ async function openBrowserOn(
       await stopServer();
     },
   };
+}
+
+/** One suite's app, context and page (`app.close()` ends them all). */
+export interface AppSession {
+  readonly app: ServedApp;
+  readonly context: BrowserContext;
+  readonly page: Page;
+}
+
+/**
+ * The set-up most suites share: the built app (serveApp), a fresh context (`viewport`), and a page
+ * opened at the app (`query`, e.g. '?test', after its address) whose page errors — and console
+ * errors too with `consoleErrors` — are added to `problems`.
+ */
+export async function openAppSession(
+  options: {
+    readonly viewport?: { width: number; height: number };
+    readonly query?: string;
+    readonly problems?: string[];
+    readonly consoleErrors?: boolean;
+  } = {},
+): Promise<AppSession> {
+  const app = await serveApp();
+  const context = await app.newContext(options.viewport);
+  const page = await context.newPage();
+  const { problems } = options;
+  if (problems) {
+    if (options.consoleErrors)
+      page.on('console', (m) => m.type() === 'error' && problems.push(`console: ${m.text()}`));
+    page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
+  }
+  await page.goto(`${app.url}${options.query ?? ''}`);
+  return { app, context, page };
 }

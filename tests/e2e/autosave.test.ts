@@ -3,22 +3,18 @@
  * claim a backup that does not exist, edits must not overwrite the only copy, and after a reload
  * it is still there; "Discard it" resumes autosaving and the banner then says so.
  */
-import type { BrowserContext, Page } from 'playwright-core';
+import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { type ServedApp, serveApp } from './app-server.ts';
+import { openAppSession, type ServedApp } from './app-server.ts';
 
 let app: ServedApp;
-let context: BrowserContext;
 let page: Page;
 
 /** About 4.5 M characters of broken JSON (the rest of the storage is filled up before reload). */
 const BROKEN_CHARS = 4_500_000;
 
 beforeAll(async () => {
-  app = await serveApp();
-  context = await app.newContext({ width: 1280, height: 720 });
-  page = await context.newPage();
-  await page.goto(`${app.url}?test`);
+  ({ app, page } = await openAppSession({ viewport: { width: 1280, height: 720 }, query: '?test' }));
   await page.waitForSelector('.react-flow__node');
 }, 180_000);
 

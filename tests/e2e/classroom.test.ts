@@ -130,7 +130,7 @@ describe('classroom', () => {
       expect(await toggle.evaluate((b) => b === document.activeElement)).toBe(true); // focus not lost
     });
 
-    it('presenting is read-only: undo, delete, cut, paste, drop and drags leave the graph alone', async () => {
+    it('presenting is read-only: undo, delete, cut, paste, drop, a typed link and drags leave the graph alone', async () => {
       // An edit in the editor first, so that an undo would visibly change the graph.
       const count = await page.locator('.react-flow__node').count();
       await page.locator('.react-flow__node').last().locator('.kf-node__header').click();
@@ -160,6 +160,16 @@ describe('classroom', () => {
         Buffer.from(exampleText('hyperbolic-237')),
         'application/json',
       );
+      // A share link typed into the address bar (only the hash changes) is refused and cleared.
+      const other = JSON.parse(exampleText('hyperbolic-237')) as GraphDoc;
+      const typed = shareLinkFor(other, { origin: new URL(app.url).origin, pathname: '/' });
+      if (!typed.ok) throw new Error(typed.message);
+      await page.evaluate((hash) => {
+        window.location.hash = hash;
+      }, new URL(typed.url).hash);
+      await expect.poll(() => page.evaluate(() => window.location.hash)).toBe('');
+      await page.getByRole('status').filter({ hasText: 'read-only' }).waitFor();
+      expect(await page.getByTestId('present-mode').count()).toBe(1);
       expect(await page.locator('[data-handle]').count()).toBe(0);
       const stage = await boxOf(page.getByTestId('render-pane'));
       await page.mouse.move(stage.x + stage.width / 2, stage.y + stage.height / 2);

@@ -9,7 +9,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { EXAMPLES_3D_DIR, EXAMPLES_THUMB_DIR, exampleNames, examplePath } from '../../src/cli/examples.ts';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { openAppSession, repoRoot, type ServedApp } from './app-server.ts';
 import {
   addNode,
   connect,
@@ -42,14 +42,7 @@ const thumbCount =
   examples3d.filter((name) => existsSync(join(EXAMPLES_THUMB_DIR, `${name}.png`))).length;
 
 beforeAll(async () => {
-  app = await serveApp();
-  context = await app.newContext();
-  page = await context.newPage();
-  page.on('console', (m) => {
-    if (m.type() === 'error') problems.push(`console: ${m.text()}`);
-  });
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  await page.goto(app.url);
+  ({ app, context, page } = await openAppSession({ problems, consoleErrors: true }));
 }, 180_000);
 
 afterAll(async () => {

@@ -1,12 +1,13 @@
 /**
  * Graph tools end to end in Chromium: M mutes and unmutes a node (greyed, the picture changes,
  * undo restores it), a frame around two nodes carries them when its title bar is dragged, nodes
- * grouped with Ctrl+G open, lead back out by the breadcrumb and ungroup again, and a reroute point
+ * grouped with Ctrl+G light up their construction when the group is hovered, open (a frame made
+ * inside stays in the group), lead back out by the breadcrumb and ungroup again, and a reroute point
  * is added to a wire, dragged and removed.
  */
 import type { BrowserContext, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { type ServedApp, serveApp } from './app-server.ts';
+import { openAppSession, type ServedApp } from './app-server.ts';
 import {
   emptyCanvasPoint,
   nodeCount,
@@ -16,6 +17,7 @@ import {
   thumbDiff,
   waitRendered,
 } from './editor-page.ts';
+import { openViaPicker } from './io-page.ts';
 
 let app: ServedApp;
 let context: BrowserContext;
@@ -23,11 +25,7 @@ let page: Page;
 const problems: string[] = [];
 
 beforeAll(async () => {
-  app = await serveApp();
-  context = await app.newContext();
-  page = await context.newPage();
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  await page.goto(app.url);
+  ({ app, context, page } = await openAppSession({ problems }));
 }, 180_000);
 
 afterAll(async () => {
@@ -132,6 +130,15 @@ describe('graph tools', () => {
     await expect.poll(() => group.count()).toBe(1);
     expect(thumbDiff(before, await picture())).toBeLessThan(2);
 
+    // Hovering the group lights up what its inner nodes draw (the kaleidoscope's mirrors), by
+    // their ids in the picture; off the group, nothing is highlighted.
+    const halos = page.locator('.kf-render-overlay g[data-node]:has(> path[opacity="0.25"])');
+    await expect.poll(() => halos.count()).toBe(0);
+    await group.locator('.kf-node__header').hover();
+    await expect
+      .poll(() => halos.evaluateAll((gs) => [...new Set(gs.map((g) => g.getAttribute('data-node')))]))
+      .toEqual([kaleido]);
+
     // A fresh session (the autosave) reopens the grouped document.
     const other = await context.newPage();
     await other.goto(app.url);
@@ -147,15 +154,33 @@ describe('graph tools', () => {
     await crumbs.waitFor();
     await expect.poll(() => page.locator('.react-flow__node-kf').count()).toBe(2);
     expect(await nodeEl(page, kaleido).count()).toBe(1);
+    // A frame inside the group: made and titled there, kept in the group (not at the top level).
+    // (The frame of the test before carried only these two nodes: it came inside with them.)
+    const frames = page.getByRole('region', { name: /^Frame / });
+    const framesBefore = await frames.count();
+    await select(kaleido);
+    await page.getByRole('button', { name: 'Frame', exact: true }).click();
+    await expect.poll(() => frames.count()).toBe(framesBefore + 1);
+    const title = frames.last().getByRole('textbox', { name: 'Frame title' });
+    await title.fill('Mirrors');
+    await title.press('Enter');
+    await page.getByRole('region', { name: 'Frame Mirrors' }).waitFor();
     await crumbs.getByRole('button', { name: 'Graph' }).click();
     await crumbs.waitFor({ state: 'detached' });
     await expect.poll(() => page.locator('.react-flow__node-kf').count()).toBe(count - 1);
+    expect(await page.getByRole('region', { name: 'Frame Mirrors' }).count()).toBe(0);
+    await group.getByRole('button', { name: 'Open group' }).click();
+    await page.getByRole('region', { name: 'Frame Mirrors' }).waitFor();
+    await crumbs.getByRole('button', { name: 'Graph' }).click();
+    await crumbs.waitFor({ state: 'detached' });
 
     await select((await group.getAttribute('data-id'))!);
     await page.keyboard.press('Control+Shift+g');
     await expect.poll(() => page.locator('.react-flow__node-kf').count()).toBe(count);
     expect(await nodeEl(page, kaleido).count()).toBe(1);
     expect(await nodeEl(page, tile).count()).toBe(1);
+    // Ungrouped, the group's frame comes out with its node.
+    await page.getByRole('region', { name: 'Frame Mirrors' }).waitFor();
     expect(thumbDiff(before, await picture())).toBeLessThan(2);
     expect(problems).toEqual([]);
   });
@@ -178,6 +203,49 @@ describe('graph tools', () => {
     const back = await center(dot);
     await page.mouse.dblclick(back.x, back.y);
     await expect.poll(() => dot.count()).toBe(0);
+    expect(problems).toEqual([]);
+  });
+
+  it('a problem inside a group: the group’s badge and the status list name the group and the node; inside, the node’s own', async () => {
+    const broken = {
+      format: 'kleinflow',
+      version: 1,
+      meta: { title: 'Broken group' },
+      view: { center: [0, 0], scale: 4 },
+      nodes: [
+        {
+          id: 'g',
+          type: 'group',
+          label: 'Mirror pair',
+          position: [0, 0],
+          params: {},
+          group: {
+            nodes: [
+              { id: 'c', type: 'circle', label: 'Circle 2', position: [0, 0], params: { radius: -1 } },
+              { id: 'i', type: 'inversion', position: [260, 0], params: {} },
+            ],
+            edges: [{ id: 'e1', from: { node: 'c', port: 'circle' }, to: { node: 'i', port: 'circle' } }],
+            inputs: [],
+            outputs: [{ name: 'element', from: { node: 'i', port: 'element' } }],
+          },
+        },
+        { id: 'out', type: 'render', position: [400, 0], params: {} },
+      ],
+      edges: [{ id: 'e2', from: { node: 'g', port: 'element' }, to: { node: 'out', port: 'elements' } }],
+    };
+    await openViaPicker(page, 'broken.kleinflow.json', Buffer.from(JSON.stringify(broken)));
+    const badge = nodeEl(page, 'g').locator('.kf-badge--error');
+    await badge.waitFor();
+    expect(await badge.getAttribute('title')).toMatch(/in group ‘Mirror pair’ → node ‘Circle 2’: /);
+    await page.getByTestId('diagnostics-count').click();
+    const list = page.getByRole('list', { name: 'Diagnostics' });
+    await expect.poll(() => list.textContent()).toMatch(/g in group ‘Mirror pair’ → node ‘Circle 2’: /);
+    await page.getByTestId('diagnostics-count').click();
+    await nodeEl(page, 'g').getByRole('button', { name: 'Open group' }).click();
+    const inner = nodeEl(page, 'c').locator('.kf-badge--error');
+    await inner.waitFor();
+    expect(await inner.getAttribute('title')).not.toMatch(/in group/);
+    await page.getByRole('navigation', { name: 'Open group' }).getByRole('button', { name: 'Graph' }).click();
     expect(problems).toEqual([]);
   });
 });

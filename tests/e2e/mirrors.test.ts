@@ -7,9 +7,9 @@
 
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
-import type { BrowserContext, Page } from 'playwright-core';
+import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { openAppSession, repoRoot, type ServedApp } from './app-server.ts';
 import {
   addNode,
   connect,
@@ -24,16 +24,11 @@ import {
 } from './editor-page.ts';
 
 let app: ServedApp;
-let context: BrowserContext;
 let page: Page;
 const problems: string[] = [];
 
 beforeAll(async () => {
-  app = await serveApp();
-  context = await app.newContext();
-  page = await context.newPage();
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  await page.goto(app.url);
+  ({ app, page } = await openAppSession({ problems }));
 }, 180_000);
 
 afterAll(async () => {

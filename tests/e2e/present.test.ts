@@ -2,12 +2,15 @@
  * Presenting, as a teacher does it: Present from the top bar opens at step 1 with the step list,
  * the author writes the title, description and step notes (Markdown shown as text styling, never
  * HTML), they are saved in the document and come back from the file; the present link and the
- * embed snippet open a read-only presentation; Esc goes back to the editor.
+ * embed snippet open a read-only presentation (another link typed into its address bar shows that
+ * graph, still read-only); Esc goes back to the editor.
  */
 import { mkdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import type { GraphDoc } from '../../nodes/graph/document.ts';
+import { shareLinkFor } from '../../src/app/io/share-link.ts';
 import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
 import { currentDoc, openViaPicker } from './io-page.ts';
 
@@ -116,6 +119,17 @@ describe('presentation', () => {
     expect(await student.getByRole('link', { name: 'Edit in Kleinflow' }).getAttribute('href')).toMatch(
       /#g=/,
     );
+    // Another present link typed into the address bar (a hash change) shows that graph, read-only.
+    const next = JSON.parse(example('kaleidoscope-333')) as GraphDoc;
+    next.meta.title = 'Next lesson';
+    const typed = shareLinkFor(next, { origin: new URL(app.url).origin, pathname: '/' });
+    if (!typed.ok) throw new Error(typed.message);
+    await student.evaluate((hash) => {
+      window.location.hash = hash;
+    }, new URL(typed.url).hash);
+    await student.getByRole('heading', { name: 'Next lesson' }).waitFor();
+    expect(await student.getByRole('button', { name: 'Edit text' }).count()).toBe(0);
+    expect(await student.locator('[data-handle]').count()).toBe(0);
     await student.close();
   });
 

@@ -4,24 +4,20 @@
  */
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import type { BrowserContext, Page } from 'playwright-core';
+import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { parseXml } from '../support/xml.ts';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { openAppSession, repoRoot, type ServedApp } from './app-server.ts';
 import { waitRendered } from './editor-page.ts';
 import { currentDoc, menu, openViaPicker } from './io-page.ts';
 
 let app: ServedApp;
-let context: BrowserContext;
 let page: Page;
 
 const example = (id: string) => readFileSync(join(repoRoot, 'examples', `${id}.kleinflow.json`));
 
 beforeAll(async () => {
-  app = await serveApp();
-  context = await app.newContext();
-  page = await context.newPage();
-  await page.goto(app.url);
+  ({ app, page } = await openAppSession());
   await waitRendered(page);
 }, 180_000);
 

@@ -104,14 +104,18 @@ export function useDocumentIo({ store, scene, load, viewport, locked = false }: 
   );
   const save = useCallback(() => saveDocument(store.getState().doc), [store]);
 
+  const lockedNow = useRef(locked);
+  lockedNow.current = locked;
   // A `#g=` link the page was opened with: loaded over the autosaved graph (undo returns to it).
-  // A link pasted into the address bar of an open tab only changes the hash: same treatment.
+  // A link pasted into the address bar of an open tab only changes the hash: same treatment, except
+  // while presenting, which never changes the graph (the link is refused and cleared).
   useEffect(() => {
     const apply = () => {
       const link = readStartupLink(window.location.hash);
       if (link.kind === 'none') return;
       clearFragment();
-      if (link.kind === 'ok') {
+      if (lockedNow.current) say('ok', PRESENTING_READ_ONLY);
+      else if (link.kind === 'ok') {
         load(link.doc, 'open shared link');
         say('ok', loadedMessage('the shared graph'));
       } else
@@ -126,8 +130,6 @@ export function useDocumentIo({ store, scene, load, viewport, locked = false }: 
     return () => window.removeEventListener('hashchange', apply);
   }, [load, say]);
 
-  const lockedNow = useRef(locked);
-  lockedNow.current = locked;
   // Drop a file anywhere; paste a whole document or share link (copied nodes stay the editor's).
   useEffect(() => {
     let depth = 0;

@@ -6,6 +6,7 @@
  */
 import { useEffect, useMemo, useState } from 'react';
 import type { GraphDoc } from '../../../nodes/graph/document.ts';
+import type { NodePath } from '../../../nodes/graph/flatten.ts';
 import { registry } from '../../../nodes/types/index.ts';
 import { createEvaluator } from '../../state/evaluation.ts';
 import { useEditorState, useStore } from '../../state/use-store.ts';
@@ -28,13 +29,13 @@ function Embed() {
   const time = useEditorState((s) => s.time);
   const evaluate = useMemo(() => createEvaluator(registry), []);
   const evaluation = useMemo(() => evaluate(doc, time), [evaluate, doc, time]);
-  const [hovered, setHovered] = useState<string | null>(null);
+  const [hovered, setHovered] = useState<NodePath | null>(null);
   return (
     <div className="kf-present kf-present--embed" data-testid="embed-mode">
       <RenderPane
         evaluation={evaluation}
-        hoveredNodeId={hovered}
-        onHoverNode={setHovered}
+        hovered={hovered}
+        onHover={setHovered}
         onDiagnostics={noop}
         onFrame={noop}
         onViewport={noop}
@@ -52,15 +53,23 @@ export function PresentApp({ mode }: { mode: 'present' | 'embed' }) {
   const doc = useEditorState((s) => s.doc);
   const [report, setReport] = useState<OpenReport | null>(null);
 
+  // The link is the document: one typed into the address bar later (a hash change) is shown too,
+  // still read-only — this page never edits, so nobody's graph is replaced.
   useEffect(() => {
-    const link = readStartupLink(window.location.hash);
-    if (link.kind === 'ok') store.dispatch({ type: 'load-document', doc: link.doc }, 'open shared link');
-    else if (link.kind === 'broken')
-      setReport({
-        kind: 'error',
-        title: 'The shared link could not be opened; showing the graph saved in this browser.',
-        items: [{ path: '(link)', text: link.message, code: 'KF501' }],
-      });
+    const apply = (shown: string) => {
+      const link = readStartupLink(window.location.hash);
+      if (link.kind === 'ok') store.dispatch({ type: 'load-document', doc: link.doc }, 'open shared link');
+      else if (link.kind === 'broken')
+        setReport({
+          kind: 'error',
+          title: `The shared link could not be opened; ${shown}.`,
+          items: [{ path: '(link)', text: link.message, code: 'KF501' }],
+        });
+    };
+    apply('showing the graph saved in this browser');
+    const onHash = () => apply('the picture is unchanged');
+    window.addEventListener('hashchange', onHash);
+    return () => window.removeEventListener('hashchange', onHash);
   }, [store]);
 
   return (

@@ -7,6 +7,7 @@
  * links; Esc goes back. Opened from a link (`?mode=present`) it is for the audience only.
  */
 import { useCallback, useEffect, useMemo, useState } from 'react';
+import type { NodePath } from '../../../nodes/graph/flatten.ts';
 import { registry } from '../../../nodes/types/index.ts';
 import { isTyping } from '../../editor/typing.ts';
 import { createEvaluator } from '../../state/evaluation.ts';
@@ -37,7 +38,7 @@ export function Presentation({ onExit, editorHref }: Props) {
   const evaluation = useMemo(() => evaluate(doc, time), [evaluate, doc, time]);
   const steps = useMemo(() => constructionSteps(evaluation), [evaluation]);
   const [count, setCount] = useState(1);
-  const [hovered, setHovered] = useState<string | null>(null);
+  const [hovered, setHovered] = useState<NodePath | null>(null);
   const [listOpen, setListOpen] = useState(!narrow);
   // On a phone the list covers the picture: closed by default, and closed again once a step is picked.
   useEffect(() => setListOpen(!narrow), [narrow]);
@@ -79,8 +80,8 @@ export function Presentation({ onExit, editorHref }: Props) {
       <div className="kf-present__stage">
         <RenderPane
           evaluation={shown}
-          hoveredNodeId={hovered}
-          onHoverNode={setHovered}
+          hovered={hovered}
+          onHover={setHovered}
           onDiagnostics={noop}
           onFrame={noop}
           onViewport={noop}

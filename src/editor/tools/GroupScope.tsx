@@ -40,7 +40,7 @@ export function useGroupScope(evaluation: Evaluation, loadKey: number): GroupSco
     if (path.length > 0 && !scopeDocument(doc, path)) setPath([]);
   }, [doc, path]);
   const store = useMemo(() => scopedStore(base, path), [base, path]);
-  const scoped = useMemo(() => scopeEvaluation(evaluation, path), [evaluation, path]);
+  const scoped = useMemo(() => scopeEvaluation(evaluation, path, doc), [evaluation, path, doc]);
   const full = useRef(evaluation);
   full.current = evaluation;
   const open = useCallback(

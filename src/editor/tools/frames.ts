@@ -4,6 +4,7 @@
  * when a drag begins move with it. Pure helpers: the editor turns them into one undo step each.
  */
 import type { GraphDoc, GraphFrame } from '../../../nodes/graph/document.ts';
+import { nodesInFrame as nodesIn } from '../../../nodes/graph/frames.ts';
 import { registry } from '../../../nodes/types/index.ts';
 import type { Change } from '../../state/changes.ts';
 import { idAllocator } from '../../state/ids.ts';
@@ -39,13 +40,7 @@ export function frameAround(doc: GraphDoc, selection: ReadonlySet<string>): Chan
 }
 
 /** Ids of the nodes whose top-left corner lies inside the frame: they move with it. */
-export function nodesInFrame(doc: GraphDoc, frame: GraphFrame): string[] {
-  const [fx, fy] = frame.position;
-  const [w, h] = frame.size;
-  return doc.nodes
-    .filter(({ position: [x, y] }) => x >= fx && x <= fx + w && y >= fy && y <= fy + h)
-    .map((n) => n.id);
-}
+export const nodesInFrame = (doc: GraphDoc, frame: GraphFrame): string[] => nodesIn(doc.nodes, frame);
 
 /**
  * Moving a frame by (dx, dy): the frame and the nodes that were inside it at `before`, as ONE

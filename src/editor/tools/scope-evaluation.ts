@@ -1,35 +1,33 @@
 /**
  * The evaluation as the graph editor shows it at one level of groups: evaluation runs on the
  * flattened graph (nodes/graph/flatten.ts), so its results and diagnostics name flattened ids.
- * At a level, a node inside it shows its own; a group node shows every diagnostic from inside it.
+ * At a level, a node inside it shows its own; a group node shows every diagnostic from inside it,
+ * each saying which inner node it is about (nodes/graph/group-diagnostics.ts).
  */
 import type { Diagnostic } from '../../../nodes/core/diagnostics.ts';
+import type { GraphDoc } from '../../../nodes/graph/document.ts';
 import type { Evaluation, NodeEvaluation } from '../../../nodes/graph/evaluate.ts';
+import { idAtLevel, pathOf } from '../../../nodes/graph/flatten.ts';
+import { diagnosticAtLevel } from '../../../nodes/graph/group-diagnostics.ts';
+import { registry } from '../../../nodes/types/index.ts';
 
-/** The id at level `path` that flattened node `flatId` belongs to, or null when it is elsewhere. */
-function localId(evaluation: Evaluation, flatId: string, path: readonly string[]): string | null {
-  const origin = evaluation.origin.get(flatId) ?? [flatId];
-  if (origin.length <= path.length || path.some((id, i) => origin[i] !== id)) return null;
-  return origin[path.length];
-}
-
-export function scopeEvaluation(evaluation: Evaluation, path: readonly string[]): Evaluation {
+export function scopeEvaluation(
+  evaluation: Evaluation,
+  path: readonly string[],
+  doc: Pick<GraphDoc, 'nodes'>,
+): Evaluation {
   if (path.length === 0 && evaluation.origin.size === 0) return evaluation;
   const nodes = new Map<string, NodeEvaluation>();
   for (const [id, result] of evaluation.nodes) {
-    const local = localId(evaluation, id, path);
+    const local = idAtLevel(pathOf(evaluation.origin, id), path);
     // Only a node directly at this level has a result of its own (a group has none).
     if (local !== null && (evaluation.origin.get(id)?.length ?? 1) === path.length + 1)
       nodes.set(local, result);
   }
   const diagnostics: Diagnostic[] = [];
   for (const d of evaluation.diagnostics) {
-    if (!d.nodeId) {
-      if (path.length === 0) diagnostics.push(d);
-      continue;
-    }
-    const local = localId(evaluation, d.nodeId, path);
-    if (local !== null) diagnostics.push({ ...d, nodeId: local });
+    const shown = diagnosticAtLevel(d, doc, evaluation.origin, path, registry);
+    if (shown) diagnostics.push(shown);
   }
   return { ...evaluation, nodes, diagnostics };
 }

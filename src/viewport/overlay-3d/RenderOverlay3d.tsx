@@ -29,7 +29,8 @@ export interface RenderOverlay3dProps {
   camera: Camera3d;
   width: number;
   height: number;
-  hoveredNodeId: string | null;
+  /** The nodes drawn highlighted: one node's, or everything a hovered group's nodes draw. */
+  hoveredNodeIds: ReadonlySet<string>;
   onHoverNode(id: string | null): void;
   /** Live while dragging (at most once per animation frame), no history. */
   onPreview(patches: NodePatch[]): void;
@@ -89,7 +90,7 @@ function labelAt(item: Screen3dItem): Vec2 | null {
 }
 
 export function RenderOverlay3d(props: RenderOverlay3dProps): JSX.Element {
-  const { evaluation, scene, camera, width, height, hoveredNodeId, readOnly = false } = props;
+  const { evaluation, scene, camera, width, height, hoveredNodeIds, readOnly = false } = props;
   const ref = useRef<SVGSVGElement>(null);
   const sized = width > 0 && height > 0;
   const pane = useMemo<PaneSize>(() => ({ width, height }), [width, height]);
@@ -115,7 +116,7 @@ export function RenderOverlay3d(props: RenderOverlay3dProps): JSX.Element {
     onPreview: props.onPreview,
     onCommit: props.onCommit,
   });
-  const hot = drag ? drag.target.nodeId : hoveredNodeId;
+  const hot = drag ? new Set([drag.target.nodeId]) : hoveredNodeIds;
   // Keys: the node id and how many of that node's items came before (a node may draw several).
   const wireframes: JSX.Element[] = [];
   const labels: JSX.Element[] = [];
@@ -124,7 +125,7 @@ export function RenderOverlay3d(props: RenderOverlay3dProps): JSX.Element {
   for (const item of items) {
     const n = seen.get(item.nodeId) ?? 0;
     seen.set(item.nodeId, n + 1);
-    wireframes.push(<Wireframe key={`${item.nodeId}:${n}`} item={item} hot={item.nodeId === hot} />);
+    wireframes.push(<Wireframe key={`${item.nodeId}:${n}`} item={item} hot={hot.has(item.nodeId)} />);
     const at = item.label && !labelled.has(item.nodeId) ? labelAt(item) : null;
     if (at) labelled.add(item.nodeId);
     if (at)
@@ -171,7 +172,7 @@ export function RenderOverlay3d(props: RenderOverlay3dProps): JSX.Element {
       </g>
       <HandleKnobs
         handles={handles}
-        hoveredNodeId={hoveredNodeId}
+        hoveredNodeIds={hoveredNodeIds}
         hoverHandle={hoverHandle}
         dragTarget={drag?.target ?? null}
       />

@@ -7,7 +7,7 @@ const points = (ps: readonly (readonly number[])[]) => ps.map((p) => `${p[0]},${
 export function KeptSides(props: {
   shapes: readonly KeptSideShape[];
   colorOf(nodeId: string): string;
-  hoveredNodeId: string | null;
+  hoveredNodeIds: ReadonlySet<string>;
 }) {
   const colors = [...new Set(props.shapes.map((s) => props.colorOf(s.nodeId)))];
   const hatch = (color: string) => `url(#kf-hatch-${colors.indexOf(color)})`;
@@ -31,7 +31,7 @@ export function KeptSides(props: {
       </defs>
       {props.shapes.map((s, i) => {
         const color = props.colorOf(s.nodeId);
-        const hot = s.nodeId === props.hoveredNodeId;
+        const hot = props.hoveredNodeIds.has(s.nodeId);
         if (s.kind === 'circle') {
           // The back of a circle mirror is its inside (its outside when it keeps the inside): a
           // hatched ring just within (beyond) the rim. The hovered one shades its back: the disk,

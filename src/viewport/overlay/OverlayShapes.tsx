@@ -19,7 +19,7 @@ export interface OverlayShapesProps {
   readonly handles: readonly ScreenHandle[];
   readonly width: number;
   readonly height: number;
-  readonly hoveredNodeId: string | null;
+  readonly hoveredNodeIds: ReadonlySet<string>;
   readonly hoverHandle: HandleItem | null;
   readonly dragTarget: HandleItem | null;
   readonly showLabels: boolean;
@@ -78,7 +78,7 @@ function layoutLabels(
   handles: readonly ScreenHandle[],
   width: number,
   height: number,
-  hoveredNodeId: string | null,
+  hoveredNodeIds: ReadonlySet<string>,
 ): { key: string; text: string; at: [number, number] }[] {
   const font = OVERLAY_PX.labelFont;
   const requests: (LabelRequest & { text: string })[] = [];
@@ -93,7 +93,7 @@ function layoutLabels(
       width: labelWidth(item.label),
       height: LABEL_HEIGHT_EM * font,
       gap: s.shape === 'point' ? OVERLAY_PX.labelOffset : OVERLAY_PX.labelOffset / 2,
-      priority: (item.nodeId === hoveredNodeId ? 2 : 0) + (s.shape === 'point' ? 1 : 0),
+      priority: (hoveredNodeIds.has(item.nodeId) ? 2 : 0) + (s.shape === 'point' ? 1 : 0),
       candidates: s.shape === 'point' ? pointCandidates(s.at) : circleCandidates(s.c, s.r),
     });
   });
@@ -119,11 +119,11 @@ function layoutLabels(
 }
 
 export function OverlayShapes(props: OverlayShapesProps): JSX.Element {
-  const { items, handles, width, height, hoveredNodeId, hoverHandle, dragTarget, showLabels } = props;
+  const { items, handles, width, height, hoveredNodeIds, hoverHandle, dragTarget, showLabels } = props;
   const strokes: JSX.Element[] = [];
   const dots: JSX.Element[] = [];
   items.forEach((item, i) => {
-    const hot = item.nodeId === hoveredNodeId;
+    const hot = hoveredNodeIds.has(item.nodeId);
     const w = hot ? OVERLAY_PX.strokeHover : OVERLAY_PX.stroke;
     const key = `${item.nodeId}:${i}`;
     if (item.shape.shape === 'point') {
@@ -156,7 +156,7 @@ export function OverlayShapes(props: OverlayShapesProps): JSX.Element {
       );
     }
   });
-  const labels = showLabels ? layoutLabels(items, handles, width, height, hoveredNodeId) : [];
+  const labels = showLabels ? layoutLabels(items, handles, width, height, hoveredNodeIds) : [];
   return (
     <>
       <g>{strokes}</g>
@@ -180,7 +180,7 @@ export function OverlayShapes(props: OverlayShapesProps): JSX.Element {
       </g>
       <HandleKnobs
         handles={handles}
-        hoveredNodeId={hoveredNodeId}
+        hoveredNodeIds={hoveredNodeIds}
         hoverHandle={hoverHandle}
         dragTarget={dragTarget}
       />
@@ -190,19 +190,19 @@ export function OverlayShapes(props: OverlayShapesProps): JSX.Element {
 
 export interface HandleKnobsProps<T extends HandleRef> {
   readonly handles: readonly { readonly item: T; readonly at: Vec2; readonly color: string }[];
-  readonly hoveredNodeId: string | null;
+  readonly hoveredNodeIds: ReadonlySet<string>;
   readonly hoverHandle: T | null;
   readonly dragTarget: T | null;
 }
 
 /** The grab handles (2D and 3D overlays): bigger when hovered, dragged, or their node is hovered. */
 export function HandleKnobs<T extends HandleRef>(props: HandleKnobsProps<T>): JSX.Element {
-  const { handles, hoveredNodeId, hoverHandle, dragTarget } = props;
+  const { handles, hoveredNodeIds, hoverHandle, dragTarget } = props;
   return (
     <g>
       {handles.map(({ item, at, color }) => {
         const big =
-          sameHandle(hoverHandle, item) || sameHandle(dragTarget, item) || item.nodeId === hoveredNodeId;
+          sameHandle(hoverHandle, item) || sameHandle(dragTarget, item) || hoveredNodeIds.has(item.nodeId);
         const r = big ? OVERLAY_PX.handleRadiusHover : OVERLAY_PX.handleRadius;
         // A knob: the node's colour in a white ring on a dark rim, so it reads on any picture.
         return (

@@ -1,6 +1,6 @@
 /**
  * Direct manipulation in the render: the construction (points, infinite lines, circles, labels)
- * drawn over the picture, hover in both directions (pointer → onHoverNode, hoveredNodeId →
+ * drawn over the picture, hover in both directions (pointer → onHoverNode, hoveredNodeIds →
  * highlight), and draggable handles whose moves become params patches (onPreview while dragging,
  * onCommit once on release; Shift snaps, Escape cancels). Mounted by the editor over the canvas.
  *
@@ -31,7 +31,8 @@ export interface RenderOverlayProps {
   view: View;
   width: number;
   height: number;
-  hoveredNodeId: string | null;
+  /** The nodes drawn highlighted: one node's, or everything a hovered group's nodes draw. */
+  hoveredNodeIds: ReadonlySet<string>;
   onHoverNode(id: string | null): void;
   /** Live while dragging (at most once per animation frame), no history. */
   onPreview(patches: NodePatch[]): void;
@@ -61,8 +62,10 @@ function grabInPlane(screen: Screen, target: HandleItem, css: Vec2, evaluation: 
   };
 }
 
+const NONE: ReadonlySet<string> = new Set();
+
 export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
-  const { evaluation, view, width, height, hoveredNodeId, showLabels = true, readOnly = false } = props;
+  const { evaluation, view, width, height, hoveredNodeIds, showLabels = true, readOnly = false } = props;
   const ref = useRef<SVGSVGElement>(null);
   const screen = useMemo<Screen>(() => ({ view, width, height }), [view, width, height]);
   // A pane not laid out yet (0 × 0) has no pixel mapping: draw nothing rather than NaNs.
@@ -127,14 +130,14 @@ export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
       <KeptSides
         shapes={keptSides}
         colorOf={(id) => evaluation.analysis.nodes.get(id)?.def?.color ?? FALLBACK_COLOR}
-        hoveredNodeId={drag ? null : hoveredNodeId}
+        hoveredNodeIds={drag ? NONE : hoveredNodeIds}
       />
       <OverlayShapes
         items={items}
         handles={handles}
         width={width}
         height={height}
-        hoveredNodeId={drag ? drag.target.nodeId : hoveredNodeId}
+        hoveredNodeIds={drag ? new Set([drag.target.nodeId]) : hoveredNodeIds}
         hoverHandle={hoverHandle}
         dragTarget={drag?.target ?? null}
         showLabels={showLabels}

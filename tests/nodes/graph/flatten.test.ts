@@ -1,7 +1,7 @@
 /** Flattening groups, and documents with the graph tools' fields through a save and a load. */
 import { describe, expect, it } from 'vitest';
 import { LIMITS } from '../../../nodes/core/limits.ts';
-import type { GraphDoc, GraphNode } from '../../../nodes/graph/document.ts';
+import type { GraphDoc, GraphFrame, GraphNode } from '../../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
 import { flattenGroups } from '../../../nodes/graph/flatten.ts';
 import { groupDef } from '../../../nodes/graph/group-def.ts';
@@ -88,14 +88,54 @@ describe('diagnostics of grouped nodes', () => {
     const problem = evaluateGraph(bad, registry).diagnostics.find((x) => x.nodeId === 'c');
     expect(problem?.path).toBe('nodes[0].group.nodes[0].params.radius');
   });
+
+  it('name a wire’s path in the document: inside its group, or the outer wire it was copied from', () => {
+    // p's point wired into i's circle input: a type mismatch on the wire inside the group.
+    const inside = groupNodes(
+      doc(
+        [node('p', 'point'), node('i', 'inversion'), node('out', 'render')],
+        [edge('e1', 'p.point', 'i.circle'), edge('e2', 'i.element', 'out.elements')],
+      ),
+      ['p', 'i'],
+      'g',
+    );
+    const wrong = evaluateGraph(inside, registry).diagnostics.find((x) => x.code === 'KF206');
+    expect(wrong?.path).toBe('nodes[0].group.edges[0]');
+    // The same mismatch on a wire from outside into the group's exposed input.
+    const outside = groupNodes(
+      doc(
+        [node('p', 'point'), node('i', 'inversion'), node('out', 'render')],
+        [edge('e2', 'i.element', 'out.elements'), edge('e1', 'p.point', 'i.circle')],
+      ),
+      ['i'],
+      'g',
+    );
+    const flat = flattenGroups(outside);
+    expect(flat.edgeOrigin.has('e1')).toBe(false); // a top-level wire keeps its id
+    const crossing = evaluateGraph(outside, registry).diagnostics.find((x) => x.code === 'KF206');
+    expect(crossing?.path).toBe(`edges[${outside.edges.findIndex((e) => e.id === 'e1')}]`);
+  });
 });
 
 describe('document round trips', () => {
-  it('groups, muted nodes, frames and reroute points survive save and load exactly', () => {
+  it('groups, muted nodes, frames (in groups too) and reroute points survive save and load exactly', () => {
     const d = grouped();
+    const inner: GraphFrame = {
+      id: 'f',
+      title: 'Inside',
+      color: '#2f5b4a',
+      position: [0, 0],
+      size: [200, 100],
+    };
     const full: GraphDoc = {
       ...d,
-      nodes: d.nodes.map((n) => (n.id === 'out' ? { ...n, muted: true } : n)),
+      nodes: d.nodes.map((n) =>
+        n.id === 'out'
+          ? { ...n, muted: true }
+          : n.group
+            ? { ...n, group: { ...n.group, frames: [inner] } }
+            : n,
+      ),
       edges: d.edges.map((e) => ({ ...e, via: [[10, 20] as [number, number]] })),
       frames: [{ id: 'f', title: 'Mirrors', color: '#335577', position: [-20, -40], size: [400, 300] }],
     };

@@ -70,13 +70,40 @@ describe('My groups', () => {
 describe('scopeEvaluation', () => {
   it('a problem inside a group shows on the group at the top and on its node inside', () => {
     const ev = evaluateGraph(grouped(), registry);
-    const top = scopeEvaluation(ev, []);
+    const top = scopeEvaluation(ev, [], grouped());
     expect(top.diagnostics.some((d) => d.nodeId === 'g' && d.severity === 'error')).toBe(true);
     expect(top.nodes.has('c')).toBe(false);
     expect(top.nodes.has('out')).toBe(true);
-    const inside = scopeEvaluation(ev, ['g']);
+    const inside = scopeEvaluation(ev, ['g'], grouped());
     expect(inside.diagnostics.some((d) => d.nodeId === 'c' && d.severity === 'error')).toBe(true);
     expect([...inside.nodes.keys()].sort()).toEqual(['c', 'i']);
     expect(inside.diagnostics.some((d) => d.nodeId === 'out')).toBe(false);
+  });
+
+  it('at the top the group’s badge says which inner node it is about; inside, the node’s own message', () => {
+    const d = grouped();
+    const labelled: GraphDoc = {
+      ...d,
+      nodes: d.nodes.map((n) =>
+        n.group
+          ? {
+              ...n,
+              label: 'Mirror pair',
+              group: {
+                ...n.group,
+                nodes: n.group.nodes.map((m) => (m.id === 'c' ? { ...m, label: 'Circle 2' } : m)),
+              },
+            }
+          : n,
+      ),
+    };
+    const ev = evaluateGraph(labelled, registry);
+    const own = ev.diagnostics.find((x) => x.nodeId === 'c' && x.severity === 'error')!;
+    const top = scopeEvaluation(ev, [], labelled).diagnostics.filter((x) => x.nodeId === 'g');
+    expect(top.map((x) => x.message)).toContain(`in group ‘Mirror pair’ → node ‘Circle 2’: ${own.message}`);
+    expect(top.every((x) => x.port === undefined)).toBe(true); // g has no port of c's name
+    const inside = scopeEvaluation(ev, ['g'], labelled).diagnostics.filter((x) => x.nodeId === 'c');
+    expect(inside.map((x) => x.message)).toContain(own.message);
+    expect(inside.some((x) => x.message.startsWith('in '))).toBe(false);
   });
 });

@@ -63,7 +63,7 @@ function Harness(): JSX.Element {
         view={doc.view}
         width={SIZE}
         height={SIZE}
-        hoveredNodeId={hovered}
+        hoveredNodeIds={new Set(hovered ? [hovered] : [])}
         onHoverNode={(id) => {
           log({ kind: 'hover', id });
           setHovered(id);

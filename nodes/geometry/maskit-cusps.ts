@@ -118,13 +118,17 @@ export function maskitCusps(): readonly MaskitCusp[] {
   return cached;
 }
 
-/** The cusps as flat arrays (x, y, q): the boundary tests run per pixel on the CPU raster. */
-let flat: { xs: number[]; ys: number[]; qs: number[] } | null = null;
-const flatCusps = () => {
-  const cusps = maskitCusps();
-  flat ??= { xs: cusps.map((c) => c.mu[0]), ys: cusps.map((c) => c.mu[1]), qs: cusps.map((c) => c.q) };
-  return flat;
-};
+/** The polyline through the cusps with q ≤ maxQ, as flat arrays, per maxQ (the CPU raster asks per pixel). */
+const polylines = new Map<number, { readonly xs: Float64Array; readonly ys: Float64Array }>();
+function polyline(maxQ: number) {
+  let line = polylines.get(maxQ);
+  if (!line) {
+    const kept = maskitCusps().filter((c) => c.q <= maxQ);
+    line = { xs: Float64Array.from(kept, (c) => c.mu[0]), ys: Float64Array.from(kept, (c) => c.mu[1]) };
+    polylines.set(maxQ, line);
+  }
+  return line;
+}
 
 /** x folded into one period, [−2, 0): x − 2⌊x/2 + 1⌋. */
 const foldPeriod = (x: number) => x - 2 * Math.floor(x * 0.5 + 1);
@@ -136,47 +140,44 @@ const foldPeriod = (x: number) => x - 2 * Math.floor(x * 0.5 + 1);
  * means below. A segment a–b counts when (a.x > x) ≠ (b.x > x) and its height at x is above |y|.
  */
 export function belowMaskitBoundary(x: number, y: number, maxQ: number): boolean {
-  const { xs, ys, qs } = flatCusps();
+  const { xs, ys } = polyline(maxQ);
   const fx = foldPeriod(x);
   const fy = Math.abs(y);
   let below = false;
-  let ax = xs[0];
-  let ay = ys[0];
   for (let i = 1; i < xs.length; i++) {
-    if (qs[i] > maxQ) continue;
-    const bx = xs[i];
-    const by = ys[i];
+    const [ax, ay, bx, by] = [xs[i - 1], ys[i - 1], xs[i], ys[i]];
     if (ax > fx !== bx > fx && ay + ((fx - ax) * (by - ay)) / (bx - ax) > fy) below = !below;
-    ax = bx;
-    ay = by;
   }
   return below;
 }
 
-/** Distance from (x, y) to the segment a–b. */
-function segmentDistance(x: number, y: number, ax: number, ay: number, bx: number, by: number): number {
+/** Squared distance from (x, y) to the segment a–b. */
+function segmentDistance2(x: number, y: number, ax: number, ay: number, bx: number, by: number): number {
   const dx = bx - ax;
   const dy = by - ay;
   const t = Math.min(1, Math.max(0, ((x - ax) * dx + (y - ay) * dy) / (dx * dx + dy * dy)));
-  return Math.hypot(x - ax - t * dx, y - ay - t * dy);
+  const ex = x - ax - t * dx;
+  const ey = y - ay - t * dy;
+  return ex * ex + ey * ey;
 }
 
 /**
  * The distance from μ to the boundary polyline (q ≤ maxQ): from (x folded, |y|) to the polyline
- * and its translates by ±2 (the folded point may be nearest the next period's end segments).
+ * and its translates by ±2 (the folded point may be nearest the next period's end segments). A
+ * segment whose x-range is farther than the best so far is skipped (it cannot be nearer).
  */
 export function maskitBoundaryDistance(x: number, y: number, maxQ: number): number {
-  const { xs, ys, qs } = flatCusps();
+  const { xs, ys } = polyline(maxQ);
   const fx = foldPeriod(x);
   const fy = Math.abs(y);
-  let d = Number.POSITIVE_INFINITY;
-  let ax = xs[0];
-  let ay = ys[0];
-  for (let i = 1; i < xs.length; i++) {
-    if (qs[i] > maxQ) continue;
-    for (const shift of [-2, 0, 2]) d = Math.min(d, segmentDistance(fx + shift, fy, ax, ay, xs[i], ys[i]));
-    ax = xs[i];
-    ay = ys[i];
+  let best = Number.POSITIVE_INFINITY;
+  for (const shift of [-2, 0, 2]) {
+    const px = fx + shift;
+    for (let i = 1; i < xs.length; i++) {
+      const gap = Math.max(xs[i] - px, px - xs[i - 1], 0); // xs decrease along the polyline
+      if (gap * gap >= best) continue;
+      best = Math.min(best, segmentDistance2(px, fy, xs[i - 1], ys[i - 1], xs[i], ys[i]));
+    }
   }
-  return d;
+  return Math.sqrt(best);
 }

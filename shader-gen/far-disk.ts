@@ -69,7 +69,10 @@ export function limitReach(elements: readonly SceneElement[]): number | null {
     } else if (e.kind === 'mobius-matrix') {
       take(e.forward);
       take(e.backward);
-    } else if (e.kind === 'maskit') reach = Math.min(reach, 1); // its isometric circles' radius
+    } else if (e.kind === 'maskit')
+      reach = Math.min(reach, 1); // its isometric circles' radius
+    // The slice's edge distance is already the distance to what it paints in the limit colour.
+    else if (e.kind === 'maskit-slice') reach = 0;
   }
   return Number.isFinite(reach) ? reach : null;
 }

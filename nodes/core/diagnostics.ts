@@ -153,6 +153,12 @@ export const DIAGNOSTICS = table({
     text: (port: string, node: string) =>
       `input "${port}" is muted: node "${node}" is muted (or fed by a muted node) and passes nothing on`,
   },
+  outsideMaskitSlice: {
+    code: 'KF325',
+    severity: 'info',
+    text: (mu: string) =>
+      `μ = ${mu} lies below the Maskit slice's boundary: that group is not discrete and free, and a Maskit group node given it draws no true limit set`,
+  },
   drawnInstead: { code: 'KF315', severity: 'info', text: (detail: string) => detail },
   cameraInside: {
     code: 'KF316',

@@ -19,4 +19,9 @@ export interface HandleItem {
   /** Handle id, unique within the node, passed back to the node type's `drag`. */
   readonly handle: string;
   readonly at: Vec2;
+  /**
+   * A click (press and release without moving) on empty space in the render places this handle
+   * there, as one undo step, while a drag on empty space still pans (the maskit-slice's μ).
+   */
+  readonly placeOnClick?: boolean;
 }

@@ -139,6 +139,16 @@ export interface MaskitElement extends ElementBase {
   readonly mu: Vec2;
 }
 
+/**
+ * The Maskit slice drawn in the parameter plane (docs/math.md "The Maskit slice boundary"): the
+ * point of the picture is μ, and its inside is the complement of the slice — below the polyline
+ * through the cusps of denominator ≤ `maxDenominator` (periodic in Re μ, mirrored in Im μ = 0).
+ */
+export interface MaskitSliceElement extends ElementBase {
+  readonly kind: 'maskit-slice';
+  readonly maxDenominator: number;
+}
+
 export type SceneElement =
   | InversionElement
   | OuterInversionElement
@@ -151,5 +161,6 @@ export type SceneElement =
   | GlideReflectionElement
   | RotationElement
   | SpiralSimilarityElement
-  | MaskitElement;
+  | MaskitElement
+  | MaskitSliceElement;
 export type ElementKind = SceneElement['kind'];

@@ -18,6 +18,7 @@ import { lineNode } from './line.ts';
 import { parallelLineNode, perpendicularBisectorNode, perpendicularLineNode } from './line-constructions.ts';
 import { loxodromicNode } from './loxodromic.ts';
 import { maskitNode } from './maskit.ts';
+import { maskitSliceNode } from './maskit-slice.ts';
 import { angleNode, distanceNode } from './measures.ts';
 import { mobiusNode } from './mobius.ts';
 import { mobius3dNode } from './mobius-3d.ts';
@@ -69,6 +70,7 @@ export const NODE_TYPES = [
   loxodromicNode,
   mobiusMatrixNode,
   maskitNode,
+  maskitSliceNode,
   recipeNode,
   translationNode,
   latticeNode,

@@ -10,6 +10,7 @@ import { glideReflection } from './glide-reflection.ts';
 import { inversion, outerInversion } from './inversion.ts';
 import { loxodromic } from './loxodromic.ts';
 import { maskit } from './maskit.ts';
+import { maskitSlice } from './maskit-slice.ts';
 import { mobius } from './mobius.ts';
 import { mobiusMatrix } from './mobius-matrix.ts';
 import { parallelMirrors } from './parallel-mirrors.ts';
@@ -39,6 +40,7 @@ export const ELEMENTS: ElementRegistry = {
   rotation,
   'spiral-similarity': spiralSimilarity,
   maskit,
+  'maskit-slice': maskitSlice,
 };
 
 /** The record of `e`'s kind (one lookup; the cast is safe by the registry's mapped type). */

@@ -106,6 +106,7 @@ const KIND_NAMES: Partial<Record<SceneElement['kind'], string>> = {
   rotation: 'a rotation fold',
   'spiral-similarity': 'a spiral similarity',
   maskit: 'a Maskit group',
+  'maskit-slice': 'the Maskit slice (a picture of parameters, not of a group)',
 };
 
 /** A key equal for curves that agree to `eps` (world units): the enumeration's duplicate test. */

@@ -71,6 +71,8 @@ describe('one sample, nothing blended: no conversion at all', () => {
         'triangle-333-orbit-trap',
         'maskit-2i-cosine-edges',
         'maskit-cusp-limit-set',
+        'maskit-slice-edges',
+        'maskit-slice-limit-set',
       ].sort(),
     );
   });

@@ -34,6 +34,7 @@ export const GALLERY_SECTIONS: readonly GallerySection[] = [
       'schottky-pair',
       'schottky-matrix-generators',
       'recipe-grandma-maskit',
+      'maskit-slice',
       'spiral-similarity-pearls',
     ],
   },

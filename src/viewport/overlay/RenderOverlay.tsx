@@ -21,6 +21,7 @@ import { OverlayShapes } from './OverlayShapes.tsx';
 import { SnapGuides } from './SnapGuides.tsx';
 import { placeHandles, placeOverlays, pxPerWorld, type Screen, toWorld } from './screen.ts';
 import { snapHandle } from './snap-rules.ts';
+import { useClickToPlace } from './use-click-to-place.ts';
 import { type DragPlacer, useOverlayPointer } from './use-overlay-pointer.ts';
 
 export type { NodePatch } from '../../../nodes/graph/drag-patches.ts';
@@ -104,7 +105,22 @@ export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
     onCommit: props.onCommit,
     inspecting: props.inspecting ?? false,
   });
-  const cursor = props.inspecting ? 'crosshair' : drag ? 'grabbing' : hoverHandle ? 'grab' : undefined;
+  // Registered after the handle drags (see use-click-to-place.ts): the first placeable handle.
+  const placeable = readOnly ? undefined : evaluation.scene.handles.find((h) => h.placeOnClick);
+  useClickToPlace(ref, {
+    place: placeable && sized ? (css) => dragPatches(evaluation, placeable, toWorld(screen, css)) : null,
+    onCommit: props.onCommit,
+    inspecting: props.inspecting ?? false,
+  });
+  const cursor = props.inspecting
+    ? 'crosshair'
+    : drag
+      ? 'grabbing'
+      : hoverHandle
+        ? 'grab'
+        : placeable
+          ? 'crosshair'
+          : undefined;
   return (
     <svg
       ref={ref}

@@ -5,6 +5,8 @@
 export const OVERLAY_PX = {
   /** A pointer this close to a handle's centre grabs it (the nearest handle wins). */
   handleHit: 8,
+  /** A press and release this close together (no pan to speak of) is a click: it may place a handle. */
+  clickSlop: 3,
   /** A pointer this close to a point, line or circle hovers its node. */
   geometryHit: 5,
   /** A dragged rim this close to tangency with another circle snaps to it (Shift held). */

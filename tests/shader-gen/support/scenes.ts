@@ -174,6 +174,12 @@ export const MASKIT_2I: SceneElement[] = [{ kind: 'maskit', nodeId: 'mk', mu: [0
 /** Near the 2/5 cusp: the circles overlap, so the step's choice changes along a line (lens). */
 export const MASKIT_CUSP: SceneElement[] = [{ kind: 'maskit', nodeId: 'mk', mu: [0.766588, 1.642139] }];
 
+/** The Maskit slice in the parameter plane, its boundary through the cusps with q ≤ 24 (and ≤ 5). */
+export const MASKIT_SLICE: SceneElement[] = [{ kind: 'maskit-slice', nodeId: 'ms', maxDenominator: 24 }];
+export const MASKIT_SLICE_COARSE: SceneElement[] = [
+  { kind: 'maskit-slice', nodeId: 'ms', maxDenominator: 5 },
+];
+
 /** Every element kind at least once, in one scene. */
 export const EVERY_KIND: SceneElement[] = [
   ...TRIANGLE_333,
@@ -185,6 +191,7 @@ export const EVERY_KIND: SceneElement[] = [
   ...LOXODROMIC,
   ...SPHERICAL_WEDGE,
   ...MASKIT_2I,
+  ...MASKIT_SLICE_COARSE,
 ];
 
 /** A disk seed and a picture seed outside the Schottky circles (both inside the tile). */
@@ -307,6 +314,13 @@ export const HAND_MADE_SCENES: Readonly<Record<string, Scene>> = {
     maxIterations: 200,
     center: [0, 0.8],
     scale: 2.5,
+  }),
+  // The Maskit slice (shader-gen/elements/maskit-slice.ts): the verdict, its edge and its glow.
+  'maskit-slice-edges': makeScene(MASKIT_SLICE, { edgeWidth: 1.5, center: [0, 1.5], scale: 4.3 }),
+  'maskit-slice-limit-set': makeScene(MASKIT_SLICE_COARSE, {
+    coloring: COLORINGS['limit-set'],
+    center: [0.4, 1.7],
+    scale: 1.2,
   }),
   'maskit-cusp-limit-set': makeScene(MASKIT_CUSP, {
     coloring: COLORINGS['limit-set'],

@@ -70,7 +70,7 @@ describe('the tracer bound (docs/math-3d.md §8)', () => {
       }),
       { ...SEED, numRuns: 150 },
     );
-  });
+  }, 120_000);
 
   it('is within a small factor of the brute-force distance where the plain estimate overshoots', () => {
     const ratios: number[] = [];

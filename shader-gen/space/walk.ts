@@ -3,8 +3,10 @@
  * over the scene's elements, recording one stack entry per inversion, then the safe distance
  * bound folded back through the stack (docs/math-3d.md "§8 The tracer's distance bound"):
  *
- *   D_end = min(seed distances, covers of the orbit inside every region) at the final point,
- *   D ← min(local_k, r_k² · D / (far_k · min(reach_k, far_k + D)))   for k = top−1 … 0.
+ *   D_end = min(seed distances, covers of the orbit inside every region, each raised to its
+ *           mirrored cover where larger) at the final point,
+ *   D ← max(r_k²·D/(far_k·(far_k + D)), min(local_k, r_k²·D/(far_k·min(reach_k, far_k + D))))
+ *   for k = top−1 … 0.
  *
  * cover_j is max(distance to the content ball H_j, distance to the ball B_j) for a sphere inversion
  * (the orbit inside B_j lies in H_j ∩ B_j), else the distance to the element's region itself; an
@@ -76,7 +78,8 @@ function coverDistance(
   return d;
 }
 
-const image: Walk3dState = { x: 0, y: 0, z: 0, s: 1, depth: 0 };
+/** Scratch state for the mirror image p* (the CPU tracer is single-threaded, like the stack). */
+const mirrorImage: Walk3dState = { x: 0, y: 0, z: 0, s: 1, depth: 0 };
 
 /**
  * The mirrored cover of element j, a lower bound of dist(p, orbit ∩ region_j) when j is one
@@ -87,25 +90,25 @@ const image: Walk3dState = { x: 0, y: 0, z: 0, s: 1, depth: 0 };
 function mirroredCover(plan: TracePlan, x: number, y: number, z: number, j: number): number {
   const cpu = plan.records[j]!.cpu;
   if (!cpu.mirror) return 0;
-  const r2 = cpu.mirror(plan.scene.elements[j]!, x, y, z, image);
-  const local = coverDistance(plan, image.x, image.y, image.z, j);
+  const r2 = cpu.mirror(plan.scene.elements[j]!, x, y, z, mirrorImage);
+  const local = coverDistance(plan, mirrorImage.x, mirrorImage.y, mirrorImage.z, j);
   if (r2 === 0) return local;
-  const far = Math.sqrt(image.s * r2); // |p* − c| = r²/|p − c|, the factor s being r²/|p − c|²
+  const far = Math.sqrt(mirrorImage.s * r2); // |p* − c| = r²/|p − c|, the factor s being r²/|p − c|²
   return r2 * (local / (far * Math.min(plan.reach[j]!, far + local)));
 }
 
 /**
  * One step of the fold (docs/math-3d.md "§8 The tracer's distance bound"): the better of two safe
  * bounds at the point before the inversion, given D ≤ dist(x', orbit):
- *   split:     min(L, r²D/(F·min(M, F + D)))  (orbit outside the ball ≥ L away, inside it via M);
- *   invariant: r²D/(F·(F + D))                (the orbit is its own image, no split).
+ *   split: min(L, r²D/(F·min(M, F + D)))  (orbit outside the ball ≥ L away, inside it via M);
+ *   whole: r²D/(F·(F + D))                (the orbit is its own image, no split).
  * The split one is tighter unless L is small: where the balls overlap (dihedral angles π/n, the
  * sphairahedra) a point in this ball may lie in another's cover, L = 0, and the split alone
- * would stall the march there; the invariant one stays positive.
+ * would stall the march there; the whole-orbit one stays positive.
  */
-export function foldRecord(local: number, r2: number, far: number, reach: number, d: number): number {
-  const invariant = r2 * (d / (far * (far + d)));
-  return Math.max(invariant, Math.min(local, r2 * (d / (far * Math.min(reach, far + d)))));
+function foldRecord(local: number, r2: number, far: number, reach: number, d: number): number {
+  const whole = r2 * (d / (far * (far + d)));
+  return Math.max(whole, Math.min(local, r2 * (d / (far * Math.min(reach, far + d)))));
 }
 
 /**

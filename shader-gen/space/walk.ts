@@ -3,8 +3,10 @@
  * over the scene's elements, recording one stack entry per inversion, then the safe distance
  * bound folded back through the stack (docs/math-3d.md "§8 The tracer's distance bound"):
  *
- *   D_end = min(seed distances, covers of the orbit inside every region) at the final point,
- *   D ← min(local_k, r_k² · D / (far_k · min(reach_k, far_k + D)))   for k = top−1 … 0.
+ *   D_end = min(seed distances, covers of the orbit inside every region, each raised to its
+ *           mirrored cover where larger) at the final point,
+ *   D ← max(r_k²·D/(far_k·(far_k + D)), min(local_k, r_k²·D/(far_k·min(reach_k, far_k + D))))
+ *   for k = top−1 … 0.
  *
  * cover_j is max(distance to the content ball H_j, distance to the ball B_j) for a sphere inversion
  * (the orbit inside B_j lies in H_j ∩ B_j), else the distance to the element's region itself; an
@@ -51,16 +53,62 @@ function seedsDistance(plan: TracePlan, x: number, y: number, z: number, nearest
   return d;
 }
 
-/** min(seeds, cover_j for j ≠ skip): a lower bound of the distance to the orbit outside element `skip`. */
-function coverDistance(plan: TracePlan, x: number, y: number, z: number, skip: number): number {
+/**
+ * min(seeds, cover_j for j ≠ skip): a lower bound of the distance to the orbit outside element
+ * `skip`. `mirrored`: each cover that would lower the minimum also tries its mirrored cover.
+ */
+function coverDistance(
+  plan: TracePlan,
+  x: number,
+  y: number,
+  z: number,
+  skip: number,
+  mirrored = false,
+): number {
   let d = Math.max(0, seedsDistance(plan, x, y, z, { seed: -1 }));
   plan.scene.elements.forEach((e, j) => {
     if (j === skip) return;
     const h = plan.hulls[j];
     const region = plan.records[j]!.cpu.regionDistance(e, x, y, z);
-    d = Math.min(d, h ? Math.max(region, ballDistance(x, y, z, h.center, h.radius)) : region);
+    let cover = h ? Math.max(region, ballDistance(x, y, z, h.center, h.radius)) : region;
+    // Only a cover below the minimum so far can change it: the others need no mirror.
+    if (mirrored && cover < d) cover = Math.max(cover, mirroredCover(plan, x, y, z, j));
+    d = Math.min(d, cover);
   });
   return d;
+}
+
+/** Scratch state for the mirror image p* (the CPU tracer is single-threaded, like the stack). */
+const mirrorImage: Walk3dState = { x: 0, y: 0, z: 0, s: 1, depth: 0 };
+
+/**
+ * The mirrored cover of element j, a lower bound of dist(p, orbit ∩ region_j) when j is one
+ * involution ι (docs/math-3d.md "§8 The tracer's distance bound"): orbit ∩ region_j =
+ * ι(orbit \ region_j), so it is L_j at p* = ι(p) (the seeds and the other covers) folded back
+ * through ι like a record (unchanged for a reflection). 0 for the other kinds.
+ */
+function mirroredCover(plan: TracePlan, x: number, y: number, z: number, j: number): number {
+  const cpu = plan.records[j]!.cpu;
+  if (!cpu.mirror) return 0;
+  const r2 = cpu.mirror(plan.scene.elements[j]!, x, y, z, mirrorImage);
+  const local = coverDistance(plan, mirrorImage.x, mirrorImage.y, mirrorImage.z, j);
+  if (r2 === 0) return local;
+  const far = Math.sqrt(mirrorImage.s * r2); // |p* − c| = r²/|p − c|, the factor s being r²/|p − c|²
+  return r2 * (local / (far * Math.min(plan.reach[j]!, far + local)));
+}
+
+/**
+ * One step of the fold (docs/math-3d.md "§8 The tracer's distance bound"): the better of two safe
+ * bounds at the point before the inversion, given D ≤ dist(x', orbit):
+ *   split: min(L, r²D/(F·min(M, F + D)))  (orbit outside the ball ≥ L away, inside it via M);
+ *   whole: r²D/(F·(F + D))                (the orbit is its own image, no split).
+ * The split one is tighter unless L is small: where the balls overlap (dihedral angles π/n, the
+ * sphairahedra) a point in this ball may lie in another's cover, L = 0, and the split alone
+ * would stall the march there; the whole-orbit one stays positive.
+ */
+function foldRecord(local: number, r2: number, far: number, reach: number, d: number): number {
+  const whole = r2 * (d / (far * (far + d)));
+  return Math.max(whole, Math.min(local, r2 * (d / (far * Math.min(reach, far + d)))));
 }
 
 /**
@@ -102,11 +150,11 @@ export function walk3d(plan: TracePlan, x: number, y: number, z: number, record:
   const image = seedsDistance(plan, st.x, st.y, st.z, nearest) / st.s;
   let de = Number.POSITIVE_INFINITY;
   if (record) {
-    de = coverDistance(plan, st.x, st.y, st.z, -1);
+    de = coverDistance(plan, st.x, st.y, st.z, -1, true);
     for (let k = top - 1; k >= 0; k--) {
       const o = 4 * k;
       const far = stack[o + 2]!;
-      de = Math.min(stack[o]!, stack[o + 1]! * (de / (far * Math.min(stack[o + 3]!, far + de))));
+      de = foldRecord(stack[o]!, stack[o + 1]!, far, stack[o + 3]!, de);
     }
   }
   return {

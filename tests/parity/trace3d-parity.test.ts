@@ -46,10 +46,18 @@ async function gpuProbe(scene: Scene3d, bake = false) {
   });
 }
 
-const same = (a: Float32Array, b: Float32Array, i: number) =>
-  a[i] === b[i] && (a[i] === 0 || (a[i + 2] === b[i + 2] && a[i + 3] === b[i + 3]));
+/** (hit, seed) equal, and the depth unless `anyDepth`. */
+const same = (a: Float32Array, b: Float32Array, i: number, anyDepth = false) =>
+  a[i] === b[i] && (a[i] === 0 || ((anyDepth || a[i + 2] === b[i + 2]) && a[i + 3] === b[i + 3]));
 
-function compare(scene: Scene3d, gpuData: Float32Array) {
+/**
+ * Scenes whose surface is a limit set (the sphairahedra): the depth of the hit tile changes from one
+ * quarter pixel to the next almost everywhere, so no pixel would be robust in depth; they are
+ * compared on hit, seed and t only.
+ */
+const LIMIT_SET_SURFACES = /quasi-sphere|fractal-terrain/;
+
+function compare(scene: Scene3d, gpuData: Float32Array, anyDepth = false) {
   const centre = probeScene3d(scene, W, H);
   const shifted = (
     [
@@ -63,12 +71,13 @@ function compare(scene: Scene3d, gpuData: Float32Array) {
   let agree = 0;
   let hits = 0;
   for (let i = 0; i < W * H * 4; i += 4) {
-    if (!shifted.every((s) => same(s, centre, i))) continue;
+    if (!shifted.every((s) => same(s, centre, i, anyDepth))) continue;
     robust++;
     if (centre[i] === 1) hits++;
     const t = centre[i + 1]!;
     const ok =
-      same(centre, gpuData, i) && (centre[i] === 0 || Math.abs(gpuData[i + 1]! - t) <= T_TOLERANCE * t);
+      same(centre, gpuData, i, anyDepth) &&
+      (centre[i] === 0 || Math.abs(gpuData[i + 1]! - t) <= T_TOLERANCE * t);
     if (ok) agree++;
   }
   return { robust, agree, hits, agreement: agree / robust };
@@ -81,21 +90,17 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
     fig11: FIG11,
     'mobius-box': MOBIUS_BOX,
     planes: PLANES,
-    // The 3D examples whose orbit is bounded (the unbounded ones — the plane examples and the
-    // infinite sphairahedron's terrain — march far on the CPU: slow here). Not the quasi-sphere
-    // (Fig. 26) either: at this size the tracer draws only scattered fragments of it (a known
-    // defect of the distance bound with overlapping mirrors, see README "Known limitations"), so
-    // there is too little picture to compare.
+    // The 3D examples, but the plane ones (parallel planes, compound parabolic): their orbit is
+    // unbounded and the CPU marches far (slow here). The sphairahedra (Figs. 26, 28: overlapping
+    // mirrors, the mirrored covers of docs/math-3d.md §8) are in.
     ...Object.fromEntries(
-      Object.entries(examples).filter(
-        ([name]) => !/parallel-planes|compound-parabolic|fractal-terrain|quasi-sphere/.test(name),
-      ),
+      Object.entries(examples).filter(([name]) => !/parallel-planes|compound-parabolic/.test(name)),
     ),
   };
   for (const [name, scene] of Object.entries(scenes)) {
     it(`${name}: hit/miss, depth and seed agree on ≥ 99.5 % of robust pixels`, async () => {
       const image = await gpuProbe(scene);
-      const stats = compare(scene, image.data);
+      const stats = compare(scene, image.data, LIMIT_SET_SURFACES.test(name));
       rows[name] = {
         agreement: `${(100 * stats.agreement).toFixed(2)} %`,
         robust: stats.robust,
@@ -105,7 +110,7 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
       expect(stats.robust).toBeGreaterThan(0.8 * W * H);
       expect(stats.hits).toBeGreaterThan(0.01 * W * H); // the picture is not empty
       expect(stats.agreement).toBeGreaterThanOrEqual(MIN_AGREEMENT);
-    }, 120_000);
+    }, 300_000); // the sphairahedra take minutes of CPU probes on a busy machine
   }
 
   it('shades like the CPU: normals, colouring, light, occlusion and shadow (colour variant)', async () => {

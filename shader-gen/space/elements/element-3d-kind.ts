@@ -33,6 +33,12 @@ export interface CpuElement3d<E extends Element3d = Element3d> {
    * inside the regions (docs/math-3d.md §7).
    */
   regionDistance(e: E, x: number, y: number, z: number): number;
+  /**
+   * Elements that are one involution (a sphere inversion, a plane reflection): the image of a point
+   * in `out` (x, y, z) and the r² of the inversion (0: an isometry), for the mirrored cover of the
+   * bound (docs/math-3d.md "§8 The tracer's distance bound"). Absent for the other kinds.
+   */
+  mirror?(e: E, x: number, y: number, z: number, out: Walk3dState): number;
 }
 
 export interface GlslElement3d<E extends Element3d = Element3d> {
@@ -48,6 +54,11 @@ export interface GlslElement3d<E extends Element3d = Element3d> {
   step(push: (r2: string, far: string) => string): string;
   /** `float <kind>RegionDistance(vec3 p, vec4 d0, …)`: CPU `regionDistance`. */
   readonly regionDistance: GlslFunction;
+  /**
+   * The CPU `mirror`: `float <kind>Mirror(vec3 p, vec4 d0, …, out vec3 q, out float far)` sets q to
+   * the image and far to |q − c|, and returns r² (0: an isometry).
+   */
+  readonly mirror?: GlslFunction;
   /** Functions the step block calls. */
   readonly deps: readonly GlslFunction[];
 }

@@ -30,6 +30,14 @@ export const planeReflection: ElementRecord3d<PlaneReflection> = {
       return true;
     },
     regionDistance: (e, x, y, z) => Math.max(0, signed(e, x, y, z)),
+    mirror(e, x, y, z, out) {
+      const sd = signed(e, x, y, z);
+      const [nx, ny, nz] = e.plane.normal;
+      out.x = x - 2 * sd * nx;
+      out.y = y - 2 * sd * ny;
+      out.z = z - 2 * sd * nz;
+      return 0;
+    },
   },
   glsl: {
     vec4s: 1,
@@ -51,6 +59,15 @@ if (sd < 0.0) {
       `
 float planeReflectionRegionDistance(vec3 p, vec4 d0) {
   return max(0.0, dot(p, d0.xyz) + d0.w);
+}`,
+    ),
+    mirror: glslFunction(
+      'planeReflectionMirror',
+      `
+float planeReflectionMirror(vec3 p, vec4 d0, out vec3 q, out float far) {
+  q = p - (2.0 * (dot(p, d0.xyz) + d0.w)) * d0.xyz;
+  far = 0.0;
+  return 0.0;
 }`,
     ),
     deps: [],

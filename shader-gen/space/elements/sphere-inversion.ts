@@ -34,6 +34,16 @@ export const sphereInversion: ElementRecord3d<SphereInversion> = {
       return true;
     },
     regionDistance: (e, x, y, z) => ballDistance(x, y, z, e.sphere.center, e.sphere.radius),
+    mirror(e, x, y, z, out) {
+      const [cx, cy, cz] = e.sphere.center;
+      const r2 = e.sphere.radius * e.sphere.radius;
+      out.x = x;
+      out.y = y;
+      out.z = z;
+      out.s = 1;
+      invertWalk(out, cx, cy, cz, r2, null);
+      return r2;
+    },
   },
   glsl: {
     vec4s: 2,
@@ -53,6 +63,17 @@ float sphereInversionRegionDistance(vec3 p, vec4 d0, vec4 d1) {
   return ballDistance(p, d0);
 }`,
       [ballDistanceGlsl],
+    ),
+    mirror: glslFunction(
+      'sphereInversionMirror',
+      `
+float sphereInversionMirror(vec3 p, vec4 d0, vec4 d1, out vec3 q, out float far) {
+  vec2 kf = inversionFactor(p, d0.xyz, d1.x);
+  q = d0.xyz + (p - d0.xyz) * kf.x;
+  far = kf.y;
+  return d1.x;
+}`,
+      [inversionFactorGlsl],
     ),
     deps: [inversionFactorGlsl],
   },

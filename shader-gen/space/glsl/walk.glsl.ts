@@ -55,7 +55,11 @@ export function walkFunctions(placed: PlacedWalk): GlslFunction[] {
   return [
     seedDistanceGlsl,
     ballDistanceGlsl,
-    ...placed.elements.flatMap(({ record }) => [...record.glsl.deps, record.glsl.regionDistance]),
+    ...placed.elements.flatMap(({ record }) => [
+      ...record.glsl.deps,
+      record.glsl.regionDistance,
+      ...(record.glsl.mirror ? [record.glsl.mirror] : []),
+    ]),
   ];
 }
 
@@ -74,16 +78,54 @@ const seedsMin = (placed: PlacedWalk): string =>
         .map(([a, b]) => `seedDistance(p, ${local(a)}, ${local(b)})`)
         .reduce((acc, e) => `min(${acc}, ${e})`);
 
+/** Cover of element j at p: ../walk.ts coverDistance's cover_j. */
+function coverOf(placed: PlacedWalk, j: number): string {
+  const { record, rows, hull } = placed.elements[j]!;
+  const region = `${record.glsl.regionDistance.name}(p, ${rows.map(local).join(', ')})`;
+  return hull ? `max(${region}, ballDistance(p, ${local(hull[0])}))` : region;
+}
+
 /** min(max(0, seeds), cover_j for j ≠ skip): ../walk.ts coverDistance. */
 function coverExpr(placed: PlacedWalk, skip: number): string {
   let expr = `max(0.0, ${seedsMin(placed)})`;
-  placed.elements.forEach(({ record, rows, hull }, j) => {
-    if (j === skip) return;
-    const region = `${record.glsl.regionDistance.name}(p, ${rows.map(local).join(', ')})`;
-    const cover = hull ? `max(${region}, ballDistance(p, ${local(hull[0])}))` : region;
-    expr = `min(${expr}, ${cover})`;
+  placed.elements.forEach((_, j) => {
+    if (j !== skip) expr = `min(${expr}, ${coverOf(placed, j)})`;
   });
   return expr;
+}
+
+/**
+ * Statements setting `de` to coverDistance(p, −1, mirrored) of ../walk.ts: each cover below the
+ * minimum so far also tries its mirrored cover (the image q, L_j there, folded back).
+ */
+function mirroredCoverStatements(placed: PlacedWalk): string[] {
+  const lines = [`  float de = max(0.0, ${seedsMin(placed)});`];
+  placed.elements.forEach(({ record, rows, hull }, j) => {
+    const cover = coverOf(placed, j);
+    const mirror = record.glsl.mirror;
+    if (!mirror) {
+      lines.push(`  de = min(de, ${cover});`);
+      return;
+    }
+    const reach = hull ? `${local(hull[1])}.x` : GLSL_FAR;
+    lines.push(
+      '  {',
+      `    float cj = ${cover};`,
+      '    if (cj < de) {',
+      '      vec3 q;',
+      '      float far;',
+      `      float r2 = ${mirror.name}(p, ${rows.map(local).join(', ')}, q, far);`,
+      '      vec3 pm = p;',
+      '      p = q;',
+      `      float lq = ${coverExpr(placed, j)};`,
+      '      p = pm;',
+      `      cj = max(cj, r2 == 0.0 ? lq : r2 * (lq / (far * min(${reach}, far + lq))));`,
+      '    }',
+      '    de = min(de, cj);',
+      '  }',
+    );
+  });
+  return lines;
 }
 
 /**
@@ -140,10 +182,11 @@ export function emitWalk(out: SourceBuilder, placed: PlacedWalk, record: boolean
   out.push('  info = vec4(sd / s, float(depth), float(seed), s);', '  fin = p;');
   if (record) {
     out.push(
-      `  float de = ${coverExpr(placed, -1)};`,
+      ...mirroredCoverStatements(placed),
       '  for (int k = top - 1; k >= 0; --k) {',
       '    vec4 r = stack[k];',
-      '    de = min(r.x, r.y * (de / (r.z * min(r.w, r.z + de))));',
+      '    float whole = r.y * (de / (r.z * (r.z + de)));',
+      '    de = max(whole, min(r.x, r.y * (de / (r.z * min(r.w, r.z + de)))));',
       '  }',
       '  return de;',
     );

@@ -6,7 +6,8 @@
  * float32 rounding may move by a fraction of a pixel is not counted. Small images keep SwiftShader
  * time low. Also: the baked program draws what the uniform one draws, new values re-render without
  * a new program, and the hand-written bench tracer (tests/bench/hand-written/fig11-trace.frag)
- * draws the same picture as the generated one, and the colour variant shades like the CPU.
+ * draws the same picture as the generated one, and the colour variant shades like the CPU in every
+ * colouring (the Figs. 33–34 examples).
  */
 import { readFileSync } from 'node:fs';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -108,8 +109,21 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
     }, 120_000);
   }
 
-  it('shades like the CPU: normals, colouring, light, occlusion and shadow (colour variant)', async () => {
-    for (const scene of [FIG11, examples['fig24-orbit-of-a-cube']!]) {
+  it('shades like the CPU: normals, every colouring, light, occlusion and shadow (colour variant)', async () => {
+    // Fig. 11: the depth wheel; Fig. 33: the cosine palette; Fig. 34: by final point, and the
+    // same scene by surface point.
+    const fig34 = examples['fig34-colour-by-final-point']!;
+    const scenes: Scene3d[] = [
+      FIG11,
+      examples['fig24-orbit-of-a-cube']!,
+      examples['fig33-cosine-palette']!,
+      fig34,
+      { ...fig34, coloring: { mode: 'surface', scale: 0.45 } },
+    ];
+    expect(new Set(scenes.map((s) => s.coloring.mode))).toEqual(
+      new Set(['depth-wheel', 'cosine', 'final-point', 'surface']),
+    );
+    for (const scene of scenes) {
       const c = compile3d(scene);
       const index = await gpu.program(c.vertexSource, c.source);
       const image = await gpu.render(index, [...c.uniforms, ...cameraUniforms(scene.camera)], {
@@ -134,7 +148,7 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
       expect(diffs[Math.floor(diffs.length / 2)]!).toBeLessThan(0.002);
       expect(diffs[Math.floor(diffs.length * 0.95)]!).toBeLessThan(0.02);
     }
-  }, 120_000);
+  }, 300_000);
 
   it('the baked program draws what the uniform program draws (Fig. 11)', async () => {
     const a = await gpuProbe(FIG11);

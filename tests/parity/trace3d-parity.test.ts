@@ -113,17 +113,18 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
     // Fig. 11: the depth wheel; Fig. 33: the cosine palette; Fig. 34: by final point, and the
     // same scene by surface point.
     const fig34 = examples['fig34-colour-by-final-point']!;
-    const scenes: Scene3d[] = [
-      FIG11,
-      examples['fig24-orbit-of-a-cube']!,
-      examples['fig33-cosine-palette']!,
-      fig34,
-      { ...fig34, coloring: { mode: 'surface', scale: 0.45 } },
-    ];
-    expect(new Set(scenes.map((s) => s.coloring.mode))).toEqual(
+    const scenes: Record<string, Scene3d> = {
+      fig11: FIG11,
+      fig24: examples['fig24-orbit-of-a-cube']!,
+      fig33: examples['fig33-cosine-palette']!,
+      fig34: fig34,
+      'fig34 by surface': { ...fig34, coloring: { mode: 'surface', scale: 0.45 } },
+    };
+    expect(new Set(Object.values(scenes).map((s) => s.coloring.mode))).toEqual(
       new Set(['depth-wheel', 'cosine', 'final-point', 'surface']),
     );
-    for (const scene of scenes) {
+    const results: { name: string; pixels: number; median: number; p95: number; byPoint: boolean }[] = [];
+    for (const [name, scene] of Object.entries(scenes)) {
       const c = compile3d(scene);
       const index = await gpu.program(c.vertexSource, c.source);
       const image = await gpu.render(index, [...c.uniforms, ...cameraUniforms(scene.camera)], {
@@ -142,11 +143,25 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
         }
       }
       diffs.sort((a, b) => a - b);
+      const median = diffs[Math.floor(diffs.length / 2)]!;
+      const p95 = diffs[Math.floor(diffs.length * 0.95)]!;
+      rows[`${name} colour`] = { pixels: diffs.length, median: median.toFixed(5), p95: p95.toFixed(5) };
+      results.push({
+        name,
+        pixels: diffs.length,
+        median,
+        p95,
+        byPoint: scene.coloring.mode === 'final-point',
+      });
+    }
+    for (const r of results) {
       // Measured at 64×48: median ≤ 0.0001, 95th percentile ≤ 0.003 (linear RGB); a few pixels
-      // whose shadow ray grazes an orbit sphere differ more.
-      expect(diffs.length).toBeGreaterThan(100);
-      expect(diffs[Math.floor(diffs.length / 2)]!).toBeLessThan(0.002);
-      expect(diffs[Math.floor(diffs.length * 0.95)]!).toBeLessThan(0.02);
+      // whose shadow ray grazes an orbit sphere differ more. By final point the colour changes at
+      // each copy's own scale, so in copies a few pixels wide a float32 shift of the hit moves it
+      // more: measured at 96×72, median 0.0002, 95th percentile 0.034.
+      expect(r.pixels, r.name).toBeGreaterThan(100);
+      expect(r.median, r.name).toBeLessThan(0.002);
+      expect(r.p95, r.name).toBeLessThan(r.byPoint ? 0.05 : 0.02);
     }
   }, 300_000);
 

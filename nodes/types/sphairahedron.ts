@@ -1,7 +1,8 @@
 /**
  * The sphairahedron node (paper §5.3, Figs. 25–29): the inversions in the faces of a cube-type
  * sphairahedron and the seed whose orbit draws its limit set — the quasi-sphere (finite form) or
- * the fractal terrain (infinite form). Mathematics: docs/math-3d.md "Sphairahedra (paper §5.3)".
+ * the fractal terrain (infinite form). Every type Nakamura–Ahara list (cube A–E, H, I, pentahedral
+ * prism A–F, cake A–C). Mathematics: docs/math-3d.md "Sphairahedra (paper §5.3)".
  */
 import { defineNode } from '../core/define-node.ts';
 import type { NodeElement3d, Overlay3dShape, Seed3d } from '../core/scene-3d.ts';
@@ -16,20 +17,37 @@ import { SPHAIRAHEDRON_TYPE_IDS, sphairahedronTypeById } from '../geometry/space
 import { fail, fmt } from './shared.ts';
 import { point3Input, radiusTo, sphereHandles } from './space-shared.ts';
 
+/** Version-1 type ids whose angle table is a published type's, exactly (checked by a test). */
+export const RENAMED_IN_V2: Readonly<Record<string, string>> = {
+  'cube-333-a': 'cube-a',
+  'cube-244-a': 'cube-h',
+  'prism-333-a': 'prism-a',
+  'prism-333-b': 'prism-b',
+  'prism-244-a': 'prism-f',
+};
+
 export const sphairahedronNode = defineNode({
   type: 'sphairahedron',
-  version: 1,
+  version: 2,
   label: 'Sphairahedron',
   category: '3D',
   color: '#7e57c2',
-  doc: 'The inversions in the faces of a sphairahedron (a polyhedron with spherical faces, every dihedral angle π/n; cube type or pentahedral prism) and a seed whose orbit draws its limit set: the quasi-sphere (finite: the faces inverted in a sphere you can drag) or a fractal terrain (infinite: a prism closed by three spheres).',
+  doc: 'The inversions in the faces of a sphairahedron (a polyhedron with spherical faces, every dihedral angle π/n; the cube, pentahedral prism and cake types of Nakamura–Ahara) and a seed whose orbit draws its limit set: the quasi-sphere (finite: the faces inverted in a sphere you can drag) or a fractal terrain (infinite: a prism of planes closed by spheres).',
+  // Version 2 took the published type names (docs/math-3d.md "The published types"); the first
+  // table's entries with a published twin of the same angles are renamed to it.
+  migrations: {
+    1: (params) => {
+      const renamed = RENAMED_IN_V2[String(params.shape)];
+      return renamed ? { ...params, shape: renamed } : params;
+    },
+  },
   inputs: {
     zb: {
       type: 'number',
       label: 'zb',
       default: 0,
       step: 0.01,
-      doc: 'height of the second sphere (the first is at 0)',
+      doc: 'height of the second sphere (cube, cake) or of the central sphere (pentahedral prism); the first is at 0',
     },
     zc: {
       type: 'number',
@@ -61,10 +79,10 @@ export const sphairahedronNode = defineNode({
   params: {
     shape: {
       kind: 'enum',
-      default: 'cube-333-a',
+      default: 'cube-a',
       options: SPHAIRAHEDRON_TYPE_IDS,
       label: 'type',
-      doc: 'cube (six faces: three planes, three spheres) or pentahedral prism (five: three planes, two spheres); the prism (333, 244, 236: its angles π/n) and the dihedral angles of the spheres',
+      doc: 'cube A–I (six faces: three planes, three spheres), pentahedral prism A–F (five: three planes, two spheres) or cake A–C (six: four planes, two spheres); the prism (333, 244, 236: its angles π/n) and the dihedral angles of the spheres',
     },
     form: {
       kind: 'enum',

@@ -1,11 +1,15 @@
 /**
- * Cube-type sphairahedra (paper §5.3, Figs. 25–29): the infinite one (a triangular prism of three
- * planes closed below by three spheres, a vertex at infinity) from the two shape parameters, and
- * the finite one (its faces inverted in a sphere whose centre lies in the infinite one). The
- * formulas and where they come from: docs/math-3d.md "Sphairahedra (paper §5.3)".
+ * Sphairahedra (paper §5.3, Figs. 25–29): the infinite one (a prism of vertical planes closed
+ * below by spheres, a vertex at infinity) from the shape parameters — cube types and pentahedral
+ * prisms here, cakes in sphairahedron-cake.ts — and the finite one (its faces inverted in a sphere
+ * whose centre lies in the infinite one). The formulas and where they come from: docs/math-3d.md
+ * "Sphairahedra (paper §5.3)".
  */
 import type { Element3d } from './iis-3d.ts';
+import { infiniteCake } from './sphairahedron-cake.ts';
+import { ballTop, floorTop, type InfiniteSphairahedron, strayEdgeProblem } from './sphairahedron-shared.ts';
 import {
+  CAKE_TYPES,
   CUBE_TYPES,
   type CubeTypeAngles,
   type PentahedralPrismAngles,
@@ -23,26 +27,14 @@ import {
 } from './sphere.ts';
 import { add3, dist3, dot3, scale3, sub3, type Vec3 } from './vec3.ts';
 
-export type { CubeTypeAngles, PentahedralPrismAngles, SphairahedronType } from './sphairahedron-types.ts';
-
-/**
- * The prism's corners lie on the unit circle (z = 0). Cube type: the spheres S1, S2, S3 sit at
- * heights 0, zb, zc. Pentahedral prism: the corner sphere S_c at height 0, the central S_m at zb.
- */
-export interface InfiniteSphairahedron {
-  readonly type: SphairahedronType;
-  /** The triangle's corners V1, V2, V3 (anticlockwise, z = 0). */
-  readonly corners: readonly [Vec3, Vec3, Vec3];
-  /** F1, F2, F3: F_k is the side opposite V_k, its normal points into the prism (the kept side). */
-  readonly planes: readonly [Plane, Plane, Plane];
-  /** Cube type: S1, S2, S3, S_k in corner V_k. Pentahedral prism: S_c (corner V1), then S_m. */
-  readonly spheres: readonly Sphere[];
-  /**
-   * Height of the "initial hyperplane": inside the prism, every point below it that is outside the
-   * balls belongs to the lower piece of the complement (the far side of the quasi-sphere).
-   */
-  readonly floorTop: number;
-}
+export type { InfiniteSphairahedron } from './sphairahedron-shared.ts';
+export { FLOOR_MARGIN } from './sphairahedron-shared.ts';
+export type {
+  CakeAngles,
+  CubeTypeAngles,
+  PentahedralPrismAngles,
+  SphairahedronType,
+} from './sphairahedron-types.ts';
 
 export interface FiniteSphairahedron {
   /** The faces: images of F1, F2, F3, then of the spheres. Each region is the ball. */
@@ -108,44 +100,9 @@ function solve3(m: readonly Vec3[], b: Vec3): Vec3 | null {
   }) as unknown as Vec3;
 }
 
-/** Where the top of ball s is above the horizontal point (x, y), or −∞ when it is not above it. */
-function ballTop(s: Sphere, x: number, y: number): number {
-  const h2 = (x - s.center[0]) ** 2 + (y - s.center[1]) ** 2;
-  return h2 < s.radius * s.radius ? s.center[2] + Math.sqrt(s.radius * s.radius - h2) : -Infinity;
-}
-
-/** Samples per triangle side for the floor check; the floor's height is lowered by FLOOR_MARGIN. */
-const FLOOR_SAMPLES = 64;
-export const FLOOR_MARGIN = 0.02;
-
 /**
- * The floor: over every point of the triangle (sampled), the highest ball top; its minimum is the
- * lowest point of the upper piece, where the initial hyperplane goes (less a margin). A sampled
- * point that no ball covers means the spheres leave a hole in the prism's floor.
- */
-function floorTop(corners: readonly Vec3[], spheres: readonly Sphere[]): Result<number> {
-  const [a, b, c] = corners;
-  let lowest = Infinity;
-  const n = FLOOR_SAMPLES;
-  for (let i = 0; i <= n; i++)
-    for (let j = 0; i + j <= n; j++) {
-      // Barycentric samples pulled 1% towards the centroid: the corners and sides are ideal
-      // points where a ball only touches.
-      const u = (0.99 * i) / n + 0.01 / 3;
-      const v = (0.99 * j) / n + 0.01 / 3;
-      const w = 1 - u - v;
-      const x = u * a[0] + v * b[0] + w * c[0];
-      const y = u * a[1] + v * b[1] + w * c[1];
-      const top = Math.max(...spheres.map((s) => ballTop(s, x, y)));
-      if (top === -Infinity) return fail('the spheres leave a hole in the floor of the prism');
-      lowest = Math.min(lowest, top);
-    }
-  return ok(lowest - FLOOR_MARGIN);
-}
-
-/**
- * The infinite sphairahedron of a type: cube (shape parameters zb, zc) or pentahedral prism (zb;
- * zc unused). Cube type, with zb, zc (the heights of S2 and S3;
+ * The infinite sphairahedron of a type: cube (shape parameters zb, zc), pentahedral prism or cake
+ * (zb; zc unused). Cube type, with zb, zc (the heights of S2 and S3;
  * S1 is at height 0). Centres c_k = V_k + r_k·w_k + z_k·e_z; the sphere–sphere angles give, for each
  * pair (i, j) with ΔV = V_i − V_j, the linear equation
  *   2 r_i (ΔV·w_i) − 2 r_j (ΔV·w_j) = −|ΔV|² − (z_i − z_j)²
@@ -158,7 +115,11 @@ export function infiniteSphairahedron(
 ): Result<InfiniteSphairahedron> {
   if (!Number.isFinite(zb) || !Number.isFinite(zc))
     return fail('the shape parameters must be finite numbers');
-  return type.kind === 'cube' ? infiniteCube(type, zb, zc) : infinitePentahedralPrism(type, zb);
+  return type.kind === 'cube'
+    ? infiniteCube(type, zb, zc)
+    : type.kind === 'cake'
+      ? infiniteCake(type, zb)
+      : infinitePentahedralPrism(type, zb);
 }
 
 function infiniteCube(type: CubeTypeAngles, zb: number, zc: number): Result<InfiniteSphairahedron> {
@@ -192,11 +153,10 @@ function infiniteCube(type: CubeTypeAngles, zb: number, zc: number): Result<Infi
     center: add3(add3(corners[k], scale3(w[k], r[k])), [0, 0, z[k]]),
     radius: r[k],
   })) as [Sphere, Sphere, Sphere];
-  for (let k = 0; k < 3; k++)
-    if (planeSignedDistance(planes[k], spheres[k].center) <= spheres[k].radius)
-      return fail(
-        `sphere ${names[k]} reaches across the opposite side F${k + 1} of the prism: not a cube-type sphairahedron`,
-      );
+  for (let k = 0; k < 3; k++) {
+    const stray = strayEdgeProblem(planes, spheres, k, k);
+    if (stray) return fail(stray);
+  }
   const floor = floorTop(corners, spheres);
   if (!floor.ok) return floor;
   return ok({ type, corners, planes, spheres, floorTop: floor.value });
@@ -226,9 +186,9 @@ function infinitePentahedralPrism(type: PentahedralPrismAngles, zb: number): Res
   if (!(rc > 1e-6))
     return fail('the corner sphere would need a radius ≤ 0: zb is outside this type’s parameter space');
   const corner: Sphere = { center: add3(corners[0], scale3(w, rc)), radius: rc };
-  if (planeSignedDistance(planes[0], corner.center) <= rc)
-    return fail('the corner sphere reaches across the opposite side F1 of the prism');
   const spheres = [corner, { center: cm, radius: rm }];
+  const stray = strayEdgeProblem(planes, spheres, 0, 0);
+  if (stray) return fail(stray);
   const floor = floorTop(corners, spheres);
   if (!floor.ok) return floor;
   return ok({ type, corners, planes, spheres, floorTop: floor.value });
@@ -245,7 +205,7 @@ const CENTRE_MARGIN = 1e-6;
  */
 export function inversionCentreProblem(inf: InfiniteSphairahedron, o: Vec3): string | null {
   if (!o.every(Number.isFinite)) return 'the inversion centre is not finite';
-  for (let k = 0; k < 3; k++)
+  for (let k = 0; k < inf.planes.length; k++)
     if (planeSignedDistance(inf.planes[k], o) <= CENTRE_MARGIN)
       return `the inversion centre is outside the prism (beyond plane F${k + 1}): that face would turn inside out`;
   for (let k = 0; k < inf.spheres.length; k++)
@@ -264,7 +224,7 @@ export function invertPlaneToSphere(inv: Sphere, plane: Plane): Sphere {
   return { center: sub3(inv.center, scale3(plane.normal, Math.sign(h) * rad)), radius: rad };
 }
 
-/** The finite sphairahedron: the six faces inverted in `inv`, and the seed ball (see FiniteSphairahedron). */
+/** The finite sphairahedron: the faces inverted in `inv`, and the seed ball (see FiniteSphairahedron). */
 export function finiteSphairahedron(inf: InfiniteSphairahedron, inv: Sphere): Result<FiniteSphairahedron> {
   if (!(inv.radius > 0) || !Number.isFinite(inv.radius))
     return fail('the inversion sphere needs a positive radius');
@@ -280,13 +240,13 @@ export function finiteSphairahedron(inf: InfiniteSphairahedron, inv: Sphere): Re
   return ok({ spheres, seed });
 }
 
-/** The IIS elements of the infinite sphairahedron: the three prism mirrors, then the three spheres. */
+/** The IIS elements of the infinite sphairahedron: the prism mirrors, then the spheres. */
 export const infiniteElements = (inf: InfiniteSphairahedron): Element3d[] => [
   ...inf.planes.map((plane) => ({ kind: 'plane-reflection' as const, plane })),
   ...inf.spheres.map((sphere) => ({ kind: 'sphere-inversion' as const, sphere })),
 ];
 
-/** The IIS elements of the finite sphairahedron: an inversion in each of its six spheres. */
+/** The IIS elements of the finite sphairahedron: an inversion in each of its spheres. */
 export const finiteElements = (fin: FiniteSphairahedron): Element3d[] =>
   fin.spheres.map((sphere) => ({ kind: 'sphere-inversion' as const, sphere }));
 
@@ -296,14 +256,15 @@ export const finiteElements = (fin: FiniteSphairahedron): Element3d[] =>
  * reaches `depth` below the floor.
  */
 export function infiniteSeedBox(inf: InfiniteSphairahedron, depth = 50): { center: Vec3; halfSize: Vec3 } {
-  return { center: [0, 0, inf.floorTop - depth], halfSize: [1.05, 1.05, depth] };
+  const reach = (i: 0 | 1) => 1.05 * Math.max(...inf.corners.map((c) => Math.abs(c[i])));
+  return { center: [0, 0, inf.floorTop - depth], halfSize: [reach(0), reach(1), depth] };
 }
 
 /** A default inversion sphere for a shape: above the triangle's centroid, clear of the spheres. */
 export function defaultInversionSphere(inf: InfiniteSphairahedron): Sphere {
   const top = Math.max(...inf.spheres.map((s) => s.center[2] + s.radius));
-  const [a, b, c] = inf.corners;
-  return { center: [(a[0] + b[0] + c[0]) / 3, (a[1] + b[1] + c[1]) / 3, top + 1], radius: 1.5 };
+  const mean = (i: 0 | 1) => inf.corners.reduce((s, c) => s + c[i], 0) / inf.corners.length;
+  return { center: [mean(0), mean(1), top + 1], radius: 1.5 };
 }
 
-export { CUBE_TYPES, SPHAIRAHEDRON_TYPES };
+export { CAKE_TYPES, CUBE_TYPES, SPHAIRAHEDRON_TYPES };

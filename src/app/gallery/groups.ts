@@ -70,7 +70,10 @@ export const GALLERY_SECTIONS: readonly GallerySection[] = [
       'fig19-two-sphere-generator',
       'fig20-compound-loxodromic',
       'fig26-quasi-sphere',
+      'cake-quasi-sphere',
       'fig28-fractal-terrain',
+      'fig33-cosine-palette',
+      'fig34-colour-by-final-point',
     ],
   },
 ];

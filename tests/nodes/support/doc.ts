@@ -1,8 +1,11 @@
 /** Small builders for hand-written test documents (the JSON shape of docs/architecture.md). */
 import type { GraphDoc, GraphEdge, GraphNode } from '../../../nodes/graph/document.ts';
+import { registry } from '../../../nodes/types/index.ts';
 
+/** A node of the type's current version (written only past 1, as the editor writes it). */
 export function node(id: string, type: string, params: Record<string, unknown> = {}): GraphNode {
-  return { id, type, position: [0, 0], params };
+  const version = registry.get(type)?.version ?? 1;
+  return { id, type, position: [0, 0], params, ...(version > 1 ? { version } : {}) };
 }
 
 /** An edge written as `edge('e1', 'p1.point', 'c1.center')`. */

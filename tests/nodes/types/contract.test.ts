@@ -8,6 +8,7 @@ import { PORT_VALUE_SCHEMA } from '../../../nodes/core/port-values.ts';
 import { isPortType } from '../../../nodes/core/ports.ts';
 import type { Vec2 } from '../../../nodes/core/values.ts';
 import { allFinite, evaluateGraph } from '../../../nodes/graph/evaluate.ts';
+import { loadDocument } from '../../../nodes/graph/load.ts';
 import { resolveParams } from '../../../nodes/graph/params.ts';
 import { registry } from '../../../nodes/types/index.ts';
 import { doc, node } from '../support/doc.ts';
@@ -99,9 +100,12 @@ describe.each(registry.all.map((def) => [def.type, def] as const))('node type "%
   it('has a migration for every version below its own', () => {
     for (let v = 1; v < def.version; v++)
       expect(typeof def.migrations?.[v], `migration ${v} → ${v + 1}`).toBe('function');
-    // and a node written for any older version (no version = 1) still evaluates with its defaults
+    // and a node written for any older version (no version = 1) loads (migrated once, on load)
+    // and then evaluates with its defaults
     for (let v = 1; v <= def.version; v++) {
-      const ev = evaluateGraph(doc([{ ...node('n', def.type), version: v }]), registry);
+      const loaded = loadDocument(doc([{ ...node('n', def.type), version: v }]), registry);
+      if (!loaded.ok) throw new Error(`from version ${v}: ${JSON.stringify(loaded.diagnostics)}`);
+      const ev = evaluateGraph(loaded.doc, registry);
       expect(
         ev.diagnostics.filter((d) => d.severity === 'error'),
         `from version ${v}`,

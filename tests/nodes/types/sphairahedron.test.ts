@@ -4,6 +4,11 @@
  * handles, and a clear error on the node for a centre that would turn a face inside out.
  */
 import { describe, expect, it } from 'vitest';
+import {
+  defaultInversionSphere,
+  infiniteSphairahedron,
+  SPHAIRAHEDRON_TYPES,
+} from '../../../nodes/geometry/space/sphairahedron.ts';
 import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
 import { registry } from '../../../nodes/types/index.ts';
 import { doc, edge, node } from '../support/doc.ts';
@@ -37,10 +42,10 @@ describe('sphairahedron node', () => {
   });
 
   it('pentahedral prism: five faces (three planes, two spheres), finite and infinite', () => {
-    const finite = evaluateGraph(graph({ shape: 'prism-333-a', zb: -0.8, center: [0, 0, 2.5] }), registry);
+    const finite = evaluateGraph(graph({ shape: 'prism-a', zb: -0.8, center: [0, 0, 2.5] }), registry);
     expect(finite.diagnostics.filter((d) => d.severity === 'error')).toEqual([]);
     expect(finite.scene3d!.elements.map((e) => e.kind)).toEqual(Array(5).fill('sphere-inversion'));
-    const infinite = evaluateGraph(graph({ shape: 'prism-244-a', form: 'infinite', zb: 0.8 }), registry);
+    const infinite = evaluateGraph(graph({ shape: 'prism-f', form: 'infinite', zb: 0.8 }), registry);
     expect(infinite.scene3d!.elements.map((e) => e.kind)).toEqual([
       ...Array(3).fill('plane-reflection'),
       ...Array(2).fill('sphere-inversion'),
@@ -58,4 +63,23 @@ describe('sphairahedron node', () => {
     const ev = evaluateGraph(graph({ zb: 4, zc: -4 }), registry);
     expect(ev.diagnostics.some((d) => d.severity === 'error' && d.nodeId === 's')).toBe(true);
   });
+
+  it.each(SPHAIRAHEDRON_TYPES.map((t) => [t.id, t] as const))(
+    '%s: its example parameters evaluate without warnings, finite and infinite',
+    (_, t) => {
+      const inf = infiniteSphairahedron(t, ...t.example);
+      if (!inf.ok) throw new Error(inf.error);
+      const inv = defaultInversionSphere(inf.value);
+      const [zb, zc] = t.example;
+      for (const form of ['finite', 'infinite']) {
+        const ev = evaluateGraph(
+          graph({ shape: t.id, form, zb, zc, center: inv.center, radius: inv.radius }),
+          registry,
+        );
+        expect(ev.diagnostics).toEqual([]);
+        const faces = inf.value.planes.length + inf.value.spheres.length;
+        expect(ev.scene3d!.elements).toHaveLength(faces);
+      }
+    },
+  );
 });

@@ -1,13 +1,16 @@
 /**
- * Cube-type sphairahedra (docs/math-3d.md "Sphairahedra (paper §5.3)"): the angle table makes every
- * vertex ideal; the built faces meet at the claimed dihedral angles π/n, measured at actual points
- * of the edges; the inversion centre check refuses centres that would turn a face inside out; the
- * finite faces are the inverted infinite faces with the same angles; the seeds sit on the far side.
+ * Sphairahedra of every published type (docs/math-3d.md "Sphairahedra (paper §5.3)"): the angle
+ * table makes every vertex ideal; the radii are the published ones; the built faces meet at the
+ * claimed dihedral angles π/n, measured at actual points of the edges, and the face reflections
+ * satisfy the Coxeter relations (I_a I_b)^n = id; the inversion centre check refuses centres that
+ * would turn a face inside out; the finite faces are the inverted infinite faces with the same
+ * angles; the seeds sit on the far side.
  */
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import { iis3d } from '../../../../nodes/geometry/space/iis-3d.ts';
 import {
+  CAKE_TYPES,
   CUBE_TYPES,
   defaultInversionSphere,
   finiteElements,
@@ -24,6 +27,7 @@ import {
   invertInSphere,
   type Plane,
   planeSignedDistance,
+  reflectInPlane,
   type Sphere,
 } from '../../../../nodes/geometry/space/sphere.ts';
 import {
@@ -31,14 +35,20 @@ import {
   cross3,
   dist3,
   dot3,
+  len3,
   normalize3,
   scale3,
   sub3,
   type Vec3,
 } from '../../../../nodes/geometry/space/vec3.ts';
-import { real, SEED, unit3 } from './arbitraries.ts';
+import { point3, real, SEED, unit3 } from './arbitraries.ts';
+import { PUBLISHED_RADII } from './sphairahedron-published.ts';
 
 const idx = (k: number) => ((k % 3) + 3) % 3;
+
+/** The reflection in a face: plane mirror or sphere inversion (the centre itself is not drawn by point3's reals). */
+const reflect = (face: Plane | Sphere, x: Vec3): Vec3 =>
+  'normal' in face ? reflectInPlane(face, x).x : invertInSphere(face, x)!.x;
 const angle = (n: number) => Math.PI / n;
 
 /** A unit vector perpendicular to u. */
@@ -71,9 +81,20 @@ function sphereSphereAngle(s1: Sphere, s2: Sphere): number {
   return interior(scale3(sub3(s1.center, p), 1 / s1.radius), scale3(sub3(s2.center, p), 1 / s2.radius));
 }
 
-/** The 12 edges of the cube type with their claimed angle (face indices: F1..F3 = 0..2, S1..S3 = 3..5). */
+/**
+ * The edges with their claimed angle, by face index into [...planes, ...spheres]: cube F1..F3 =
+ * 0..2, S1..S3 = 3..5; pentahedral prism S_c = 3, S_m = 4; cake F1..F4 = 0..3, S1 = 4, S2 = 5.
+ */
 function claimedEdges(t: SphairahedronType): [number, number, number][] {
   const out: [number, number, number][] = [];
+  if (t.kind === 'cake') {
+    for (let k = 0; k < 4; k++) out.push([k, (k + 1) % 4, angle(2)]);
+    const [s1, s2] = [t.first, t.second];
+    out.push([4, 0, angle(s1[0])], [4, 1, angle(s1[1])], [4, 3, angle(s1[2])]);
+    out.push([5, 2, angle(s2[0])], [5, 1, angle(s2[1])], [5, 3, angle(s2[2])]);
+    out.push([4, 5, angle(t.sphereSphere)]);
+    return out;
+  }
   if (t.kind === 'pentahedral-prism') {
     // S_c = 3 (corner V1), S_m = 4 (central): the prism's 9 edges.
     for (let k = 0; k < 3; k++) {
@@ -92,19 +113,56 @@ function claimedEdges(t: SphairahedronType): [number, number, number][] {
   return out;
 }
 
-const shapeParams = fc.record({
-  type: fc.constantFrom(...SPHAIRAHEDRON_TYPES),
-  zb: real(-0.8, 0.8),
-  zc: real(-0.8, 0.8),
-});
+/**
+ * Boxes of (zb, zc) holding each type's valid parameters (found by a grid search over
+ * [−2.5, 2.5]², step 1/8); the shapes are drawn from a box and kept when they build. Cube I
+ * builds only on the diagonal zb = zc (docs/math-3d.md "The published types"): it is drawn there.
+ */
+const PARAMETER_BOX: Readonly<Record<string, readonly [number, number, number, number]>> = {
+  'cube-a': [-1.2, 1.2, -1.2, 1.2],
+  'cube-b': [-1.4, 1.4, -0.8, 0.8],
+  'cube-c': [-1.1, 1.1, -0.8, 0.8],
+  'cube-d': [-0.6, 0.6, -1.1, 1.1],
+  'cube-e': [-0.8, 0.8, -0.7, 0.7],
+  'cube-h': [-0.9, 0.9, -0.8, 0.8],
+  'cube-i': [-0.9, 0.9, -0.9, 0.9],
+  'cube-236-a': [-1, 1, -1, 1],
+  'cube-333-b': [-0.75, 0.75, -1.375, 1.375],
+  'cube-333-c': [-1, 1, -1.25, 1.25],
+  'cube-333-d': [-1, 1, -1, 1],
+  'cube-236-b': [-0.75, 0.75, -0.625, 0.625],
+  'prism-a': [-1.4, 1.4, 0, 0],
+  'prism-b': [-0.8, 0.8, 0, 0],
+  'prism-c': [-2.3, 2.3, 0, 0],
+  'prism-d': [-0.8, 0.8, 0, 0],
+  'prism-e': [-1.7, 1.7, 0, 0],
+  'prism-f': [-1.1, 1.1, 0, 0],
+  'cake-a': [-0.7, 0.7, 0, 0],
+  'cake-b': [-1.2, 1.2, 0, 0],
+  'cake-c': [-1.3, 1.3, 0, 0],
+};
 
-const built = shapeParams
-  .map(({ type, zb, zc }) => infiniteSphairahedron(type, zb, zc))
-  .filter((r) => r.ok)
-  .map((r) => (r as { ok: true; value: InfiniteSphairahedron }).value);
+const builtOf = (type: SphairahedronType) => {
+  const [b0, b1, c0, c1] = PARAMETER_BOX[type.id]!;
+  const pair =
+    type.id === 'cube-i'
+      ? real(b0, b1).map((z) => [z, z] as const)
+      : fc.tuple(real(b0, b1), c0 === c1 ? fc.constant(c0) : real(c0, c1));
+  return pair
+    .map(([zb, zc]) => infiniteSphairahedron(type, zb, zc))
+    .filter((r) => r.ok)
+    .map((r) => (r as { ok: true; value: InfiniteSphairahedron }).value);
+};
+
+const notDegenerate = (inf: InfiniteSphairahedron) => inf.spheres.every((x) => x.radius > 0.01);
+
+const built = fc.constantFrom(...SPHAIRAHEDRON_TYPES).chain(builtOf);
 
 const centroid = (inf: InfiniteSphairahedron): Vec3 =>
-  scale3(add3(add3(inf.corners[0], inf.corners[1]), inf.corners[2]), 1 / 3);
+  scale3(
+    inf.corners.reduce((s, c) => add3(s, c), [0, 0, 0] as Vec3),
+    1 / inf.corners.length,
+  );
 
 describe('the cube-type angle table', () => {
   it.each(CUBE_TYPES.map((t) => [t.id, t] as const))(
@@ -121,7 +179,7 @@ describe('the cube-type angle table', () => {
         expect(sum(withM(i), withM(j), t.sphereSphere[k])).toBeCloseTo(1, 12); // S_i, S_j, F_m
       }
       expect(sum(...t.sphereSphere)).toBeCloseTo(1, 12); // S1, S2, S3
-      expect(infiniteSphairahedron(t, 0, 0).ok).toBe(true);
+      expect(infiniteSphairahedron(t, ...t.example).ok).toBe(true);
     },
   );
 });
@@ -136,58 +194,93 @@ describe('the pentahedral prism angle table', () => {
     expect(sum(t.prism[2], t.central[0], t.central[1])).toBeCloseTo(1, 12); // F1, F2, S_m at V3
     expect(sum(t.corner[0], t.central[1], t.sphereSphere)).toBeCloseTo(1, 12); // F2, S_c, S_m
     expect(sum(t.corner[1], t.central[2], t.sphereSphere)).toBeCloseTo(1, 12); // F3, S_c, S_m
-    expect(infiniteSphairahedron(t, 0.6, 0).ok).toBe(true);
+    expect(infiniteSphairahedron(t, ...t.example).ok).toBe(true);
   });
+});
 
-  it('prism 333, all π/3: the corner sphere has radius zb²/3 and the central one radius 1', () => {
-    const t = SPHAIRAHEDRON_TYPES.find((x) => x.id === 'prism-333-a')!;
-    fc.assert(
-      fc.property(real(0.3, 1.4), (zb) => {
-        const r = infiniteSphairahedron(t, zb, 0);
-        if (!r.ok) throw new Error(r.error);
-        expect(r.value.spheres[0].radius).toBeCloseTo((zb * zb) / 3, 10);
-        expect(r.value.spheres[1].radius).toBeCloseTo(1, 10);
-      }),
-      SEED,
-    );
+describe('the cake angle table', () => {
+  it.each(CAKE_TYPES.map((t) => [t.id, t] as const))('%s: every vertex is ideal', (_, t) => {
+    const sum = (...ns: number[]) => ns.reduce((s, n) => s + 1 / n, 0);
+    expect(sum(2, 2, 2, 2)).toBeCloseTo(2, 12); // the vertex at infinity: a rectangle
+    for (const s of [t.first, t.second]) {
+      expect(sum(2, s[0], s[1])).toBeCloseTo(1, 12); // end, F2 and the sphere
+      expect(sum(2, s[0], s[2])).toBeCloseTo(1, 12); // end, F4 and the sphere
+    }
+    expect(sum(t.first[1], t.second[1], t.sphereSphere)).toBeCloseTo(1, 12); // F2, S1, S2
+    expect(sum(t.first[2], t.second[2], t.sphereSphere)).toBeCloseTo(1, 12); // F4, S1, S2
+    expect(infiniteSphairahedron(t, ...t.example).ok).toBe(true);
   });
 });
 
 describe('infiniteSphairahedron', () => {
-  it('prism 333, all π/3: the radii r = ½ + zb·zc/3, ½ + (zb² − zb·zc)/3, ½ + (zc² − zb·zc)/3', () => {
-    const t = CUBE_TYPES.find((x) => x.id === 'cube-333-a')!;
-    fc.assert(
-      fc.property(real(-0.6, 0.6), real(-0.6, 0.6), (zb, zc) => {
-        const r = infiniteSphairahedron(t, zb, zc);
-        if (!r.ok) throw new Error(r.error);
-        const radii = r.value.spheres.map((s) => s.radius);
-        expect(radii[0]).toBeCloseTo(0.5 + (zb * zc) / 3, 10);
-        expect(radii[1]).toBeCloseTo(0.5 + (zb * zb - zb * zc) / 3, 10);
-        expect(radii[2]).toBeCloseTo(0.5 + (zc * zc - zb * zc) / 3, 10);
-      }),
-      SEED,
-    );
-  });
+  it.each(SPHAIRAHEDRON_TYPES.filter((t) => PUBLISHED_RADII[t.id]).map((t) => [t.id, t] as const))(
+    '%s: the sphere radii are the published ones (Nakamura–Ahara)',
+    (_, t) => {
+      fc.assert(
+        fc.property(builtOf(t), (inf) => {
+          const zb = inf.spheres[1]!.center[2];
+          const zc = t.kind === 'cube' ? inf.spheres[2]!.center[2] : 0;
+          const radii = inf.spheres.map((x) => x.radius);
+          const published = PUBLISHED_RADII[t.id]!(zb, zc);
+          published.forEach((r, k) => expect(radii[k]).toBeCloseTo(r, 9));
+        }),
+        { ...SEED, numRuns: 30 },
+      );
+    },
+  );
 
-  it('adjacent faces meet at the claimed angles π/n (measured at points of the edges)', () => {
-    fc.assert(
-      fc.property(built, (inf) => {
-        const faces = [...inf.planes, ...inf.spheres];
-        for (const [a, b, claimed] of claimedEdges(inf.type)) {
-          const fa = faces[a];
-          const fb = faces[b];
-          const got =
-            a < 3 && b < 3
-              ? planePlaneAngle(fa as Plane, fb as Plane)
-              : b < 3
-                ? planeSphereAngle(fb as Plane, fa as Sphere)
-                : sphereSphereAngle(fa as Sphere, fb as Sphere);
-          expect(got).toBeCloseTo(claimed, 9);
-        }
-      }),
-      SEED,
-    );
-  });
+  it.each(SPHAIRAHEDRON_TYPES.map((t) => [t.id, t] as const))(
+    '%s: adjacent faces meet at the claimed angles π/n (measured at points of the edges)',
+    (_, t) => {
+      fc.assert(
+        fc.property(builtOf(t), (inf) => {
+          const faces = [...inf.planes, ...inf.spheres];
+          const p = inf.planes.length;
+          for (const [a, b, claimed] of claimedEdges(inf.type)) {
+            const fa = faces[a];
+            const fb = faces[b];
+            const got =
+              a < p && b < p
+                ? planePlaneAngle(fa as Plane, fb as Plane)
+                : b < p
+                  ? planeSphereAngle(fb as Plane, fa as Sphere)
+                  : sphereSphereAngle(fa as Sphere, fb as Sphere);
+            expect(got).toBeCloseTo(claimed, 9);
+          }
+        }),
+        { ...SEED, numRuns: 50 },
+      );
+    },
+  );
+
+  it.each(SPHAIRAHEDRON_TYPES.map((t) => [t.id, t] as const))(
+    '%s: the reflections in two faces at angle π/n satisfy (I_a I_b)^n = id, infinite and finite',
+    (_, t) => {
+      fc.assert(
+        // Shapes at the edge of the parameter space (a sphere of radius ~1e-4, where zb → 0 for
+        // the prisms) lose digits in the finite form; the relation is checked away from them.
+        fc.property(builtOf(t).filter(notDegenerate), point3, (inf, x) => {
+          const fin = finiteSphairahedron(inf, defaultInversionSphere(inf));
+          if (!fin.ok) throw new Error(fin.error);
+          const forms = [[...inf.planes, ...inf.spheres], fin.value.spheres];
+          for (const faces of forms)
+            for (const [a, b, claimed] of claimedEdges(inf.type)) {
+              const n = Math.round(Math.PI / claimed);
+              let y: Vec3 = x;
+              for (let i = 0; i < n; i++) y = reflect(faces[a]!, reflect(faces[b]!, y));
+              expect(dist3(y, x)).toBeLessThan(1e-6 * (1 + len3(x)));
+              // Not a smaller power: the order is exactly n (for n > 1), so the angle is π/n.
+              if (n > 1) {
+                let z: Vec3 = x;
+                for (let i = 0; i < n - 1; i++) z = reflect(faces[a]!, reflect(faces[b]!, z));
+                expect(dist3(z, x)).toBeGreaterThan(1e-9 * (1 + len3(x)));
+              }
+            }
+        }),
+        { ...SEED, numRuns: 30 },
+      );
+    },
+  );
 
   it('each sphere touches the prism edges of its ideal vertices there', () => {
     fc.assert(
@@ -198,7 +291,12 @@ describe('infiniteSphairahedron', () => {
             10,
           );
         if (inf.type.kind === 'cube') inf.spheres.forEach(touches);
-        else {
+        else if (inf.type.kind === 'cake') {
+          touches(inf.spheres[0], 0);
+          touches(inf.spheres[0], 3);
+          touches(inf.spheres[1], 1);
+          touches(inf.spheres[1], 2);
+        } else {
           touches(inf.spheres[0], 0);
           touches(inf.spheres[1], 1);
           touches(inf.spheres[1], 2);
@@ -217,9 +315,11 @@ describe('infiniteSphairahedron', () => {
 
 /** A valid centre: above the highest sphere top, strictly inside the triangle. */
 const validCentre = fc
-  .tuple(built, real(0.05, 0.9), real(0.05, 0.9), real(0.05, 3))
-  .map(([inf, u, v, up]): [InfiniteSphairahedron, Vec3] => {
-    const [a, b, c] = inf.corners;
+  .tuple(built, real(0.05, 0.9), real(0.05, 0.9), real(0.05, 3), fc.nat())
+  .map(([inf, u, v, up, k]): [InfiniteSphairahedron, Vec3] => {
+    // A point of the fan triangle (centroid, V_k, V_k+1) of the convex cross-section.
+    const m = inf.corners.length;
+    const [a, b, c] = [inf.corners[k % m]!, inf.corners[(k + 1) % m]!, centroid(inf)];
     const uu = u * (1 - v * 0.999);
     const vv = v * (1 - u) * 0.999;
     const p = add3(add3(scale3(a, uu), scale3(b, vv)), scale3(c, 1 - uu - vv));
@@ -271,9 +371,10 @@ describe('finiteSphairahedron', () => {
           const y = invertInSphere(inv, q)!.x;
           expect(dist3(y, spheres[k].center) / spheres[k].radius).toBeCloseTo(1, 8);
         });
+        const p = inf.planes.length;
         inf.spheres.forEach((s, k) => {
           const y = invertInSphere(inv, add3(s.center, scale3(dir, s.radius)))!.x;
-          expect(dist3(y, spheres[3 + k].center) / spheres[3 + k].radius).toBeCloseTo(1, 8);
+          expect(dist3(y, spheres[p + k].center) / spheres[p + k].radius).toBeCloseTo(1, 8);
         });
         for (const [a, b, claimed] of claimedEdges(inf.type))
           expect(sphereSphereAngle(spheres[a], spheres[b])).toBeCloseTo(claimed, 7);
@@ -326,7 +427,7 @@ describe('the seeds lie on the far side of the limit set', () => {
 
   it('the default inversion sphere is valid for every type', () => {
     for (const t of SPHAIRAHEDRON_TYPES) {
-      const inf = infiniteSphairahedron(t, t.kind === 'cube' ? 0 : 0.6, 0);
+      const inf = infiniteSphairahedron(t, ...t.example);
       if (!inf.ok) throw new Error(inf.error);
       expect(finiteSphairahedron(inf.value, defaultInversionSphere(inf.value)).ok).toBe(true);
     }

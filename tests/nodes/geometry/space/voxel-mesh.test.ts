@@ -7,6 +7,7 @@ import { describe, expect, it } from 'vitest';
 import type { NodeElement3d, Scene3d, Seed3d } from '../../../../nodes/core/scene-3d.ts';
 import { meshVolume } from '../../../../nodes/geometry/space/marching-tetrahedra.ts';
 import {
+  CAKE_TYPES,
   CUBE_TYPES,
   finiteElements,
   finiteSphairahedron,
@@ -91,22 +92,28 @@ describe('meshScene3d', () => {
     checkAgreement(fig11, r.value, 150);
   });
 
-  it('the finite sphairahedron (quasi-sphere): closed, oriented, positive volume, agrees with the inside test', async () => {
-    const inf = infiniteSphairahedron(CUBE_TYPES[0], 0.25, -0.15);
-    if (!inf.ok) throw new Error(inf.error);
-    const fin = finiteSphairahedron(inf.value, { center: [0, 0, 1.6], radius: 1.5 });
-    if (!fin.ok) throw new Error(fin.error);
-    const scene: MeshScene = {
-      elements: finiteElements(fin.value).map((e) => ({ ...e, nodeId: 'sph' })),
-      seeds: [{ kind: 'sphere', nodeId: 'sph', sphere: fin.value.seed, color: [1, 1, 1], clipped: true }],
-      maxIterations: 30,
-    };
-    const r = await meshScene3d(scene, { resolution: 24, refine: 4 });
-    if (!r?.ok) throw new Error(r ? r.error : 'cancelled');
-    expect(edgeProblems(r.value.mesh)).toEqual([]);
-    expect(meshVolume(r.value.mesh)).toBeGreaterThan(0);
-    checkAgreement(scene, r.value, 100);
-  });
+  it.each([
+    ['cube A', CUBE_TYPES[0]!, 0.25, -0.15],
+    ['cake B', CAKE_TYPES[1]!, 0.3, 0],
+  ] as const)(
+    'the finite sphairahedron (%s quasi-sphere): closed, oriented, positive volume, agrees with the inside test',
+    async (_, type, zb, zc) => {
+      const inf = infiniteSphairahedron(type, zb, zc);
+      if (!inf.ok) throw new Error(inf.error);
+      const fin = finiteSphairahedron(inf.value, { center: [0, 0, 1.6], radius: 1.5 });
+      if (!fin.ok) throw new Error(fin.error);
+      const scene: MeshScene = {
+        elements: finiteElements(fin.value).map((e) => ({ ...e, nodeId: 'sph' })),
+        seeds: [{ kind: 'sphere', nodeId: 'sph', sphere: fin.value.seed, color: [1, 1, 1], clipped: true }],
+        maxIterations: 30,
+      };
+      const r = await meshScene3d(scene, { resolution: 24, refine: 4 });
+      if (!r?.ok) throw new Error(r ? r.error : 'cancelled');
+      expect(edgeProblems(r.value.mesh)).toEqual([]);
+      expect(meshVolume(r.value.mesh)).toBeGreaterThan(0);
+      checkAgreement(scene, r.value, 100);
+    },
+  );
 
   it('cancels when the progress callback returns false', async () => {
     let calls = 0;

@@ -92,6 +92,7 @@ export function App({ initialMessages, autosaveHold }: Props) {
   const io = useDocumentIo({
     store,
     scene: evaluation.scene,
+    scene3d: evaluation.scene3d,
     load,
     viewport: getViewport,
     locked: presenting,

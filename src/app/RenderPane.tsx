@@ -33,6 +33,8 @@ export interface RenderInfo {
   readonly samples: number;
   readonly target: number;
   readonly ms: number;
+  /** < 1: a 3D preview drawn at reduced resolution while the picture changes. */
+  readonly scale?: number;
 }
 
 interface Props {

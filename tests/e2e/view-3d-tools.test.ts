@@ -8,7 +8,7 @@
  */
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import type { BrowserContext, Download, Page } from 'playwright-core';
+import type { BrowserContext, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
@@ -75,7 +75,7 @@ async function exportItem(name: RegExp) {
 
 async function exportText(name: RegExp): Promise<{ name: string; text: string }> {
   const item = await exportItem(name);
-  const [download]: [Download, undefined] = await Promise.all([page.waitForEvent('download'), item.click()]);
+  const [download] = await Promise.all([page.waitForEvent('download'), item.click()]);
   return { name: download.suggestedFilename(), text: readFileSync((await download.path())!, 'utf8') };
 }
 
@@ -111,4 +111,76 @@ describe('Export on a 3D graph', () => {
     expect(await svg.textContent()).toContain('only for 2D graphs');
     await page.keyboard.press('Escape');
   }, 180_000);
+});
+
+/** A point of the render pane at least 20 px from every handle (where a drag orbits). */
+async function freePanePoint(): Promise<{ x: number; y: number }> {
+  const b = (await page.getByTestId('render-pane').boundingBox())!;
+  const handles = await page.locator('[data-handle]').evaluateAll((els) =>
+    els.map((e) => {
+      const r = e.getBoundingClientRect();
+      return [r.x + r.width / 2, r.y + r.height / 2];
+    }),
+  );
+  for (const fy of [0.15, 0.3, 0.7, 0.85])
+    for (const fx of [0.2, 0.5, 0.8]) {
+      const p = { x: b.x + fx * b.width, y: b.y + fy * b.height };
+      if (handles.every(([x, y]) => Math.hypot(x - p.x, y - p.y) > 20)) return p;
+    }
+  throw new Error('no free point in the render pane');
+}
+
+const drawnSize = () =>
+  page.evaluate(() => {
+    const v = window.__kleinflow!.viewport!;
+    const canvas = document.querySelector<HTMLCanvasElement>('[data-testid="render-pane"] canvas')!;
+    return { ...v.stats.renderSize, scale: v.stats.renderScale, canvas: [canvas.width, canvas.height] };
+  });
+
+describe('Dynamic resolution of the 3D pane', () => {
+  it('an orbit drag draws smaller than the canvas; once still the picture is full size again', async () => {
+    await waitRendered(page, 120_000);
+    const still = await drawnSize();
+    expect([still.width, still.height]).toEqual(still.canvas);
+    // Record the size of every frame drawn during the drag (sampled each animation frame).
+    await page.evaluate(() => {
+      const w = window as unknown as { sizes: number[][]; sampling: boolean };
+      w.sizes = [];
+      w.sampling = true;
+      const sample = () => {
+        const { renderSize, renderScale } = window.__kleinflow!.viewport!.stats;
+        w.sizes.push([renderSize.width, renderSize.height, renderScale]);
+        if (w.sampling) requestAnimationFrame(sample);
+      };
+      sample();
+    });
+    const from = await freePanePoint();
+    await page.mouse.move(from.x, from.y);
+    await page.mouse.down();
+    for (let i = 1; i <= 12; i++) {
+      await page.mouse.move(from.x + 4 * i, from.y + 2 * i);
+      await page.waitForTimeout(60);
+    }
+    await page.mouse.up();
+    const sizes = await page.evaluate(() => {
+      const w = window as unknown as { sizes: number[][]; sampling: boolean };
+      w.sampling = false;
+      return w.sizes;
+    });
+    const reduced = sizes.filter(([, , scale]) => scale < 1);
+    expect(reduced.length).toBeGreaterThan(0);
+    for (const [width, height] of reduced) {
+      expect(width).toBeLessThan(still.canvas[0]);
+      expect(height).toBeLessThan(still.canvas[1]);
+    }
+    // Still again: drawn at the canvas's size, and the status line says it is rendered.
+    await expect
+      .poll(async () => {
+        const d = await drawnSize();
+        return d.scale === 1 && d.width === d.canvas[0] && d.height === d.canvas[1];
+      }, SLOW)
+      .toBe(true);
+    await waitRendered(page, 120_000);
+    expect((await drawnSize()).scale).toBe(1);
+  }, 240_000);
 });

@@ -13,6 +13,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { registry } from '../../nodes/types/index.ts';
+import { explainPixel3d } from '../../shader-gen/space/explain-3d.ts';
 import { standaloneShader } from '../../shader-gen/standalone.ts';
 import { shadertoyWrapper, validateShaders } from '../shader-gen/support/glslang.ts';
 import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
@@ -182,5 +183,57 @@ describe('Dynamic resolution of the 3D pane', () => {
       .toBe(true);
     await waitRendered(page, 120_000);
     expect((await drawnSize()).scale).toBe(1);
+  }, 240_000);
+});
+
+describe('Explain this pixel in 3D', () => {
+  it('an Alt-click on the orbit shows the hit point and the word that maps it onto the seed', async () => {
+    await waitRendered(page, 120_000);
+    const current = await doc();
+    const scene = evaluateGraph(current, registry).scene3d!;
+    const camera = current.camera3d ?? scene.camera;
+    const b = (await page.getByTestId('render-pane').boundingBox())!;
+    // A pixel (CSS point of the pane) whose ray and its neighbours hit images of the seed, away from handles.
+    const handles = await page.locator('[data-handle]').evaluateAll((els) =>
+      els.map((e) => {
+        const r = e.getBoundingClientRect();
+        return [r.x + r.width / 2, r.y + r.height / 2];
+      }),
+    );
+    // The pane's size as the app measures it (clientWidth/Height), for the same rays.
+    const [w, h] = await page
+      .getByTestId('render-pane')
+      .evaluate((el) => [el.clientWidth, el.clientHeight] as const);
+    const depthAt = (x: number, y: number) => {
+      const e = explainPixel3d({ ...scene, camera }, w, h, x, h - y);
+      return e.stop === 'seed' ? e.depth : -1;
+    };
+    // The depths a pixel around (a click lands within a pixel of the asked point).
+    const around = (x: number, y: number) =>
+      new Set([-1, 0, 1].flatMap((dx) => [-1, 0, 1].map((dy) => depthAt(x + dx, y + dy))));
+    let found: { x: number; y: number; depths: Set<number> } | null = null;
+    for (let y = 12; y < h - 12 && !found; y += 7)
+      for (let x = 12; x < w - 12 && !found; x += 7) {
+        if (handles.some(([hx, hy]) => Math.hypot(hx - b.x - x, hy - b.y - y) < 24)) continue;
+        if (depthAt(x, y) < 1) continue;
+        const depths = around(x, y);
+        if ([...depths].every((d) => d >= 1)) found = { x, y, depths };
+      }
+    expect(found).not.toBeNull();
+    await page.keyboard.down('Alt');
+    await page.mouse.click(b.x + found!.x, b.y + found!.y);
+    await page.keyboard.up('Alt');
+    const panel = page.getByTestId('inspect-panel');
+    await panel.waitFor();
+    const depth = Number(await panel.getByTestId('inspect-depth').textContent());
+    expect(found!.depths.has(depth)).toBe(true);
+    expect(await panel.textContent()).toContain('Hit point');
+    expect(await panel.textContent()).toMatch(/mapped onto the orbit seed .* in \d+ steps?/);
+    const letters = panel.getByRole('list', { name: 'Word' }).getByRole('listitem');
+    expect(await letters.count()).toBe(depth);
+    expect(await letters.first().textContent()).toMatch(/inversion|Sphere/i);
+    expect(await panel.getByTestId('inspect-gpu').textContent()).toContain('CPU tracer');
+    await page.keyboard.press('Escape');
+    await panel.waitFor({ state: 'detached' });
   }, 240_000);
 });

@@ -188,6 +188,13 @@ describe('Dynamic resolution of the 3D pane', () => {
 
 describe('Explain this pixel in 3D', () => {
   it('an Alt-click on the orbit shows the hit point and the word that maps it onto the seed', async () => {
+    // A known camera looking at the orbit (the drag above moved the view's).
+    await page.evaluate(() =>
+      window.__kleinflow!.store.dispatchSilently({
+        type: 'set-camera-3d',
+        camera: { position: [5.25, -4.5, 3.75], target: [0, 0, 0.5], fovDeg: 41 },
+      }),
+    );
     await waitRendered(page, 120_000);
     const current = await doc();
     const scene = evaluateGraph(current, registry).scene3d!;
@@ -219,7 +226,7 @@ describe('Explain this pixel in 3D', () => {
         const depths = around(x, y);
         if ([...depths].every((d) => d >= 0)) found = { x, y, depths };
       }
-    expect(found).not.toBeNull();
+    expect(found, `no orbit pixel in a ${w} × ${h} view through ${JSON.stringify(camera)}`).not.toBeNull();
     await page.keyboard.down('Alt');
     await page.mouse.click(b.x + found!.x, b.y + found!.y);
     await page.keyboard.up('Alt');

@@ -5,7 +5,6 @@
  * unlabelled circle inversions) the node's id is added, so every element of a word is told apart:
  * "Triangle kaleidoscope 2 · Triangle kaleidoscope 1 · …", "Circle inversion “iABC”".
  */
-import type { SceneElement } from '../core/scene-elements.ts';
 import type { Analysis } from './analyze.ts';
 
 const count = <T>(items: readonly T[]): Map<T, number> => {
@@ -14,7 +13,10 @@ const count = <T>(items: readonly T[]): Map<T, number> => {
   return n;
 };
 
-export function elementNames(elements: readonly SceneElement[], analysis: Pick<Analysis, 'nodes'>): string[] {
+export function elementNames(
+  elements: readonly { readonly nodeId: string }[],
+  analysis: Pick<Analysis, 'nodes'>,
+): string[] {
   const ids = [...new Set(elements.map((e) => e.nodeId))];
   const base = new Map(
     ids.map((id) => {

@@ -107,6 +107,7 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
   const io = useDocumentIo({
     store,
     scene: evaluation.scene,
+    scene3d: evaluation.scene3d,
     load,
     viewport: getViewport,
     locked: presenting,

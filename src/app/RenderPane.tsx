@@ -36,6 +36,8 @@ export interface RenderInfo {
   readonly samples: number;
   readonly target: number;
   readonly ms: number;
+  /** < 1: a 3D preview drawn at reduced resolution while the picture changes. */
+  readonly scale?: number;
 }
 
 interface Props {
@@ -208,11 +210,16 @@ export function RenderPane({
   }, [camera3d.camera]);
 
   // After the effects that hand the viewport its scene and view: the probe reads what is on screen.
+  const space = useMemo(
+    () => (scene3d ? { scene: scene3d, camera: camera3d.camera } : null),
+    [scene3d, camera3d.camera],
+  );
   const inspected = usePixelInspect({
     pane,
     viewport,
     evaluation,
     view,
+    space,
     width: size.width,
     height: size.height,
     mode: inspecting,
@@ -259,7 +266,7 @@ export function RenderPane({
           inspecting={inspecting}
         />
       )}
-      {inspected.anchor && inspected.inspection && size.width > 0 && (
+      {inspected.anchor && inspected.inspection && !('kind' in inspected.inspection) && size.width > 0 && (
         <OrbitOverlay
           start={inspected.inspection.trace.start}
           steps={inspected.inspection.word}

@@ -37,7 +37,9 @@ export function StatusBar({ diagnostics, render, nodes, edges, saveState, onSele
       <span data-testid="render-progress" className="kf-status__item">
         {render ? (
           <>
-            {done ? 'Rendered' : 'Rendering'} {render.samples}/{render.target} samples
+            {render.scale !== undefined && render.scale < 1
+              ? `Preview at ${Math.round(render.scale * 100)}% resolution`
+              : `${done ? 'Rendered' : 'Rendering'} ${render.samples}/${render.target} samples`}
             {render.ms > 0 && <span className="kf-status__muted"> · {render.ms.toFixed(0)} ms/frame</span>}
           </>
         ) : (

@@ -4,9 +4,9 @@
  */
 import type { Scene, View } from '../../nodes/core/scene.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
-import { compile, shadertoySource } from '../../shader-gen/compile.ts';
+import { standaloneShader } from '../../shader-gen/standalone.ts';
 import { embedGraph } from '../io/png-graph.ts';
-import { is3d } from '../viewport/drawable.ts';
+import { type Drawable, is3d } from '../viewport/drawable.ts';
 import type { Viewport } from '../viewport/viewport.ts';
 import { download, fileStem } from './files.ts';
 
@@ -69,9 +69,18 @@ export async function exportPng(
   return true;
 }
 
-/** `<title>.frag`: the standalone WebGL2 shader, values baked; `<title>.shadertoy.glsl` for Shadertoy. */
-export function exportGlsl(doc: GraphDoc, scene: Scene, flavour: 'webgl2' | 'shadertoy'): void {
-  if (flavour === 'shadertoy')
-    download(`${fileStem(doc)}.shadertoy.glsl`, shadertoySource(scene), 'text/plain');
-  else download(`${fileStem(doc)}.frag`, compile(scene, { baked: true }).source, 'text/plain');
+/**
+ * `<title>.frag`: the standalone WebGL2 shader, values baked; `<title>.shadertoy.glsl` for Shadertoy
+ * (shader-gen/standalone.ts, as `kleinflow glsl`). A 3D graph's Shadertoy version bakes the camera
+ * the view shows (the document's view camera, else the render node's). Returns the toast's sentence.
+ */
+export function exportGlsl(doc: GraphDoc, picture: Drawable, flavour: 'webgl2' | 'shadertoy'): string {
+  const shown = is3d(picture) && doc.camera3d ? { ...picture, camera: doc.camera3d } : picture;
+  const { source } = standaloneShader(shown, flavour);
+  const name = `${fileStem(doc)}${flavour === 'shadertoy' ? '.shadertoy.glsl' : '.frag'}`;
+  download(name, source, 'text/plain');
+  const what = is3d(picture) ? 'sphere-tracing shader' : 'shader';
+  return flavour === 'shadertoy'
+    ? `Exported the Shadertoy ${what} ${name}: paste it into a new shader on shadertoy.com.`
+    : `Exported the GLSL ${what} ${name} (every value baked in; the frame uniforms are listed at its top).`;
 }

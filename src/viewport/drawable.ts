@@ -10,10 +10,11 @@ import type { Scene } from '../../nodes/core/scene.ts';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
 import { type CompiledProgram, type CompileOptions, compile } from '../../shader-gen/compile.ts';
 import { compile3d } from '../../shader-gen/space/compile-3d.ts';
+import { isScene3d } from '../../shader-gen/standalone.ts';
 
 export type Drawable = Scene | Scene3d;
 
-export const is3d = (d: Drawable): d is Scene3d => 'kind' in d && d.kind === '3d';
+export const is3d: (d: Drawable) => d is Scene3d = isScene3d;
 
 /** The 3D program in the 2D one's shape: no pictures, no per-element line map. */
 function compile3dProgram(scene: Scene3d, baked: boolean): CompiledProgram {

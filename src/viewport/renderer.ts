@@ -8,7 +8,7 @@ import { bindProgram } from './gl-program.ts';
 import { PictureTextures } from './picture-textures.ts';
 import { ProgramCache } from './program-cache.ts';
 import { createTarget, type RenderTarget, readTopRowFirst } from './render-target.ts';
-import { ResolvePass } from './resolve-pass.ts';
+import { type Extent, ResolvePass } from './resolve-pass.ts';
 import { canvasEncodesSrgb } from './srgb-canvas.ts';
 import { type FrameParams, type GpuProgram, setFrameUniforms, uploadUniforms } from './uniforms.ts';
 
@@ -120,11 +120,12 @@ export class Renderer {
 
   /**
    * Resolves `samples` accumulated samples to sRGB on the canvas (its drawing buffer is
-   * width×height; sRGB encoded by the buffer itself where srgb-canvas.ts got an sRGB one).
+   * width×height; sRGB encoded by the buffer itself where srgb-canvas.ts got an sRGB one). `drawn`:
+   * the part of `target` drawn, when smaller than the canvas (stretched over it).
    */
-  present(target: RenderTarget, samples: number, width: number, height: number): void {
+  present(target: RenderTarget, samples: number, width: number, height: number, drawn?: Extent): void {
     const count = this.resolveCount(target, samples);
-    this.resolvePass.draw(target.texture, count, null, width, height, canvasEncodesSrgb(this.gl));
+    this.resolvePass.draw(target.texture, count, null, width, height, canvasEncodesSrgb(this.gl), drawn);
   }
 
   /** Resolves width×height of `target` into `scratch` (SRGB8_ALPHA8) and reads it back, top row first. */
@@ -134,6 +135,7 @@ export class Renderer {
     scratch: RenderTarget,
     width: number,
     height: number,
+    drawn?: Extent,
   ): Uint8ClampedArray {
     const gl = this.gl;
     this.resolvePass.draw(
@@ -143,6 +145,7 @@ export class Renderer {
       width,
       height,
       true,
+      drawn,
     );
     gl.bindFramebuffer(gl.FRAMEBUFFER, scratch.framebuffer);
     const pixels = readTopRowFirst(gl, width, height);

@@ -9,9 +9,10 @@ export interface ViewportOptions {
   onDiagnostics?(d: Diagnostic[]): void;
   /**
    * After each drawn frame: samples on screen, the scene's target, and ms since the previous frame
-   * (for the first sample: since the edit), which includes waiting for the GPU.
+   * (for the first sample: since the edit), which includes waiting for the GPU; `scale` < 1 marks a
+   * 3D preview drawn at reduced resolution while the picture changes (its samples count as 0).
    */
-  onFrame?(info: { samples: number; target: number; ms: number }): void;
+  onFrame?(info: { samples: number; target: number; ms: number; scale: number }): void;
   /** Stillness before the baked program is built (default 600; Infinity: never bake). */
   idleBakeMs?: number;
 }
@@ -23,12 +24,18 @@ export interface ViewportStats {
   readonly bakedCompiles: number;
   /** Frames drawn (each one sample). */
   readonly frames: number;
-  /** Samples accumulated in the picture now. */
+  /** Samples accumulated in the picture now (0 while it is a reduced preview). */
   readonly samples: number;
   /** Whether the baked program draws now. */
   readonly baked: boolean;
   /** Animation frames that brought a new camera or video frame (live-textures.ts). */
   readonly liveUploads: number;
+  /** The scale (each side) the picture on screen was drawn at: < 1 for a 3D preview while it changes. */
+  readonly renderScale: number;
+  /** The pixel size the picture on screen was drawn at (the canvas's, times renderScale). */
+  readonly renderSize: { readonly width: number; readonly height: number };
+  /** The 3D pane's scale for interactive frames, from the measured frame times (render-scale.ts). */
+  readonly interactiveScale: number;
 }
 
 export interface RenderToPixelsOptions {

@@ -5,14 +5,19 @@
  * (uniform upload only); after `idleBakeMs` without edits a baked program (values as literals,
  * several times faster) takes over until the next edit. Compile errors keep the last good frame on
  * screen and are reported with node ids. A lost WebGL context is rebuilt when the browser restores it.
+ * A 3D scene is drawn at a reduced resolution while it changes (dynamic-resolution.ts) and again at
+ * full size once still; a 2D scene always at full size.
  */
+import { sameCamera3d } from '../../nodes/core/camera-3d.ts';
 import type { Camera3d } from '../../nodes/core/scene-3d.ts';
 import { DEFAULT_VIEW, type View } from '../../nodes/core/view.ts';
 import { sampleOffset } from '../../shader-gen/view.ts';
 import { type Drawable, is3d } from './drawable.ts';
+import { DynamicResolution } from './dynamic-resolution.ts';
 import { liveMedia } from './live-media.ts';
 import { refreshLive } from './live-textures.ts';
 import { inspectCssPoint, type PixelInspection } from './pixel-probe.ts';
+import { scaledSize } from './render-scale.ts';
 import { createTarget, disposeTarget, type RenderTarget } from './render-target.ts';
 import { Renderer } from './renderer.ts';
 import { type SceneProgram, SceneProgramBuilder } from './scene-program.ts';
@@ -46,6 +51,10 @@ export class Viewport {
   private active: SceneProgram | null = null;
   private accum: RenderTarget | null = null;
   private samplesDone = 0;
+  /** The 3D pane's frame timing and interactive scale; the scale the picture on screen was drawn at. */
+  private readonly dynamic = new DynamicResolution();
+  private drawnScale = 1;
+  private drawnSize = { width: 0, height: 0 };
   /** The next frame starts the accumulation afresh (until then the old picture stays). */
   private restartPending = true;
   /** When the previous frame was drawn, or when the change that restarts the picture came. */
@@ -85,6 +94,7 @@ export class Viewport {
       this.accum = null;
       this.active = null;
       this.restartPending = true;
+      this.dynamic.forget();
     };
     const onRestored = () => {
       try {
@@ -115,9 +125,12 @@ export class Viewport {
       compiles: this.programs.compiles(this.renderer),
       bakedCompiles: this.programs.bakedCompiles(this.renderer),
       frames: this.framesDrawn,
-      samples: this.samplesDone,
+      samples: this.drawnScale < 1 ? 0 : this.samplesDone,
       baked: this.active?.baked ?? false,
       liveUploads: this.liveUploads,
+      renderScale: this.drawnScale,
+      renderSize: { ...this.drawnSize },
+      interactiveScale: this.dynamic.scale,
     };
   }
 
@@ -138,16 +151,20 @@ export class Viewport {
     return this.scene;
   }
 
-  /** The 3D view's camera (a frame uniform, like the 2D view): restarts accumulation; never compiles. */
+  /**
+   * The 3D view's camera (a frame uniform, like the 2D view): restarts accumulation; never compiles.
+   * The same camera again changes nothing (a 3D frame is too dear to redraw for nothing).
+   */
   setCamera(camera: Camera3d): void {
+    const same = this.explicitCamera !== null && sameCamera3d(this.explicitCamera, camera);
     this.explicitCamera = camera;
-    this.restart();
+    if (!same) this.restart();
   }
 
-  /** Restarts accumulation; never compiles. */
+  /** Restarts accumulation (not of a 3D scene, which has no 2D view); never compiles. */
   setView(view: View): void {
     this.explicitView = view;
-    this.restart();
+    if (!this.scene || !is3d(this.scene)) this.restart();
   }
 
   setSize(width: number, height: number, dpr = globalThis.devicePixelRatio || 1): void {
@@ -201,7 +218,7 @@ export class Viewport {
     const { width, height } = this.accum;
     const scratch = createTarget(r.gl, width, height, 'srgb8');
     try {
-      return r.readResolved(this.accum, this.samplesDone, scratch, width, height);
+      return r.readResolved(this.accum, this.samplesDone, scratch, width, height, this.drawnSize);
     } finally {
       disposeTarget(r.gl, scratch);
     }
@@ -253,6 +270,7 @@ export class Viewport {
   }
 
   private restart(): void {
+    this.dynamic.changed(performance.now());
     if (!this.restartPending) this.frameClock = performance.now();
     this.restartPending = true;
     this.requestFrame();
@@ -283,6 +301,7 @@ export class Viewport {
       if (change !== 'same' || !this.active) {
         // A scene that does not compile leaves active null: nothing is drawn, the last frame stays.
         this.active = this.programs.current();
+        this.dynamic.changed(now);
         if (!this.restartPending) this.frameClock = this.sceneSetAt;
         this.restartPending = true;
       }
@@ -291,13 +310,29 @@ export class Viewport {
     if (baked) this.active = baked;
     if (this.active && this.refreshLiveFrames(renderer, this.active.pictures)) this.restartPending = true;
     const target = Math.max(1, scene.samples);
-    if (this.active && (this.restartPending || this.samplesDone < target)) {
-      this.drawFrame(renderer, this.active, scene, target);
+    const scale = this.frameScale(scene, now);
+    // A reduced picture is a preview: once still, it is drawn again at full size.
+    if (this.drawnScale < 1 && scale === 1) this.restartPending = true;
+    if (this.active && (this.restartPending || (this.samplesDone < target && this.drawnScale === 1))) {
+      this.drawFrame(renderer, this.active, scene, target, scale);
     }
     this.schedule(now, target);
   }
 
-  private drawFrame(renderer: Renderer, program: SceneProgram, scene: Drawable, target: number): void {
+  /** Full size for 2D; for 3D the dynamic scale (timing the frames that finished meanwhile). */
+  private frameScale(scene: Drawable, now: number): number {
+    if (!is3d(scene)) return 1;
+    this.dynamic.poll(this.gl);
+    return this.dynamic.frameScale(now);
+  }
+
+  private drawFrame(
+    renderer: Renderer,
+    program: SceneProgram,
+    scene: Drawable,
+    target: number,
+    scale: number,
+  ): void {
     // The drawing buffer can be smaller than canvas.width × height (browsers cap its size).
     const width = this.gl.drawingBufferWidth;
     const height = this.gl.drawingBufferHeight;
@@ -308,9 +343,11 @@ export class Viewport {
     }
     const k = this.restartPending ? 0 : this.samplesDone;
     this.restartPending = false;
+    // A reduced frame fills the accumulation buffer's corner and is stretched over the canvas.
+    const drawn = scaledSize(width, height, scale);
     const frame = {
-      width,
-      height,
+      width: drawn.width,
+      height: drawn.height,
       offsetX: 0,
       offsetY: 0,
       view: this.view(scene),
@@ -318,23 +355,39 @@ export class Viewport {
       jitter: sampleOffset(k),
       bgAlpha: 1,
     };
-    renderer.drawSample(program.gp, program.uniforms, this.accum, width, height, frame, k, program.pictures);
+    const start = this.dynamic.begin();
+    const { gp, uniforms, pictures } = program;
+    renderer.drawSample(gp, uniforms, this.accum, drawn.width, drawn.height, frame, k, pictures);
     this.samplesDone = k + 1;
-    renderer.present(this.accum, this.samplesDone, width, height);
+    this.drawnScale = scale;
+    this.drawnSize = drawn;
+    renderer.present(this.accum, this.samplesDone, width, height, drawn);
+    if (is3d(scene)) this.dynamic.end(this.gl, start, scale);
     this.framesDrawn++;
     const now = performance.now();
-    this.options.onFrame?.({ samples: this.samplesDone, target, ms: now - this.frameClock });
+    const samples = scale < 1 ? 0 : this.samplesDone;
+    this.options.onFrame?.({ samples, target, ms: now - this.frameClock, scale });
     this.frameClock = now;
   }
 
   /** Keeps the loop running while there is work; sleeps (no frames at all) until the bake is due. */
   private schedule(now: number, target: number): void {
-    const drawing = this.active !== null && (this.restartPending || this.samplesDone < target);
-    if (this.sceneDirty || drawing || this.liveRunning || this.programs.bakeInFlight()) {
+    const more = this.restartPending || (this.samplesDone < target && this.drawnScale === 1);
+    const drawing = this.active !== null && more;
+    // A timed 3D frame is polled each animation frame until its fence is signalled.
+    if (
+      this.sceneDirty ||
+      drawing ||
+      this.liveRunning ||
+      this.programs.bakeInFlight() ||
+      this.dynamic.measuring
+    ) {
       this.requestFrame();
       return;
     }
-    const due = this.programs.bakeDueIn(now, this.idleBakeMs);
+    const bake = this.programs.bakeDueIn(now, this.idleBakeMs);
+    const refine = this.drawnScale < 1 ? this.dynamic.settlesIn(now) : null;
+    const due = bake === null ? refine : refine === null ? bake : Math.min(bake, refine);
     if (due !== null) this.wakeTimer = setTimeout(() => this.requestFrame(), due);
   }
 }

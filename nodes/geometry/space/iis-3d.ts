@@ -51,23 +51,37 @@ export interface Iis3dResult {
 }
 
 /**
+ * Called after each application: the index of the element applied (list order), the point, the
+ * accumulated factor and the depth after it (the 3D twin of the 2D loop's observer; "Explain
+ * this pixel" records the word with it).
+ */
+export type Iis3dObserver = (element: number, x: Vec3, factor: number, depth: number) => void;
+
+/**
  * for i < maxIterations: find the first element e (in list order) with x in its region;
  * none → escaped; else x ← e(x), factor ← factor·e's factor, depth += 1.
  */
-export function iis3d(elements: readonly Element3d[], start: Vec3, maxIterations: number): Iis3dResult {
+export function iis3d(
+  elements: readonly Element3d[],
+  start: Vec3,
+  maxIterations: number,
+  observe?: Iis3dObserver,
+): Iis3dResult {
   let x = start;
   let factor = 1;
   let depth = 0;
   for (let i = 0; i < maxIterations; i++) {
     let moved: Mapped | null = null;
-    for (const e of elements) {
-      moved = stepElement3d(e, x);
-      if (moved) break;
+    let applied = -1;
+    for (let j = 0; j < elements.length && !moved; j++) {
+      moved = stepElement3d(elements[j]!, x);
+      applied = j;
     }
     if (!moved) return { depth, point: x, factor, escaped: true };
     x = moved.x;
     factor *= moved.factor;
     depth += 1;
+    observe?.(applied, x, factor, depth);
   }
   const stillMoving = elements.some((e) => stepElement3d(e, x) !== null);
   return { depth, point: x, factor, escaped: !stillMoving };

@@ -3,13 +3,16 @@
  * point: where the point is, why its run stopped and at which depth, the GPU's depth at the same
  * pixel (agreeing, disagreeing with a note, or unavailable and why), the final point and scale, and
  * the word of elements applied — numbered like the markers on the picture. Escape closes it.
+ * A 3D graph's explanation (inspection-3d.ts) shows in the same panel: the ray's hit point, the
+ * word that maps it onto a seed, and points with three coordinates.
  */
 import { type JSX, useCallback } from 'react';
 import { MAX_DRAWN_STEPS } from '../../viewport/overlay/orbit-path.ts';
 import type { GpuCheck, Inspection } from './inspection.ts';
+import type { Inspection3d } from './inspection-3d.ts';
 
 interface Props {
-  readonly inspection: Inspection;
+  readonly inspection: Inspection | Inspection3d;
   /** Which side of the pane it docks on (away from the point). */
   readonly side: 'left' | 'right';
   onClose(): void;
@@ -23,13 +26,14 @@ export const fmt = (v: number, digits = 4): string => {
     a !== 0 && (a >= 1e6 || a < 1e-4) ? v.toExponential(digits - 1) : String(+v.toPrecision(digits));
   return text.replace(/-/g, '−');
 };
-const point = (p: readonly [number, number], digits = 4) => `(${fmt(p[0], digits)}, ${fmt(p[1], digits)})`;
+const point = (p: readonly number[], digits = 4) => `(${p.map((v) => fmt(v, digits)).join(', ')})`;
 
 const STOP_TITLE = {
   'fundamental-domain': 'reached the tile',
   limit: 'hit the limit',
   seed: 'in an orbit seed',
   clipped: 'outside the clip disk',
+  missed: 'the ray misses the orbit',
 } as const;
 
 function GpuLine({ gpu, depth }: { gpu: GpuCheck; depth: number }) {
@@ -90,8 +94,8 @@ export function InspectPanel({ inspection, side, onClose }: Props): JSX.Element 
         </button>
       </header>
       <dl className="kf-inspect__facts">
-        <dt>Point</dt>
-        <dd>{point(t.start)}</dd>
+        <dt>{'kind' in inspection ? 'Hit point' : 'Point'}</dt>
+        <dd data-testid="inspect-point">{t.stop === 'missed' ? '—' : point(t.start)}</dd>
         <dt>Depth</dt>
         <dd>
           <strong data-testid="inspect-depth">{t.depth}</strong> — {STOP_TITLE[t.stop]}

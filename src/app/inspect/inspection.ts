@@ -49,12 +49,14 @@ const FALLBACK_COLOR = '#ffffff';
 const SIBLING_COLORS = ['#f2c14e', '#5b8def', '#e85d75', '#6cc7a0', '#b58cf0', '#f08c5b'];
 
 /** Each element's colour on the orbit: its node's, or a sibling colour when the node gives several. */
-function elementColors(evaluation: Evaluation): string[] {
-  const { scene, analysis } = evaluation;
+export function elementColors(
+  elements: readonly { readonly nodeId: string }[],
+  analysis: Evaluation['analysis'],
+): string[] {
   const perNode = new Map<string, number>();
-  for (const e of scene.elements) perNode.set(e.nodeId, (perNode.get(e.nodeId) ?? 0) + 1);
+  for (const e of elements) perNode.set(e.nodeId, (perNode.get(e.nodeId) ?? 0) + 1);
   const seen = new Map<string, number>();
-  return scene.elements.map(({ nodeId }) => {
+  return elements.map(({ nodeId }) => {
     const k = seen.get(nodeId) ?? 0;
     seen.set(nodeId, k + 1);
     if ((perNode.get(nodeId) ?? 1) > 1) return SIBLING_COLORS[k % SIBLING_COLORS.length];
@@ -82,7 +84,7 @@ export function inspect(evaluation: Evaluation, probe: PixelInspection): Inspect
   const { scene, analysis } = evaluation;
   const t = tracePicture(scene, probe.world);
   const names = elementNames(scene.elements, analysis);
-  const colors = elementColors(evaluation);
+  const colors = elementColors(scene.elements, analysis);
   let depth = 0;
   const word = t.steps.map((s, i): WordLetter => {
     const power = s.depth - depth;

@@ -2,10 +2,13 @@
  * Inspect mode of the render pane: a click (in inspect mode) or an Alt-click (any time) on the
  * picture picks a point; it is traced on the CPU and probed on the GPU again once the graph or the
  * view has changed and settled, so the panel always explains the picture on screen. A press that moves is a
- * pan, not a click. Escape closes the panel, then leaves inspect mode.
+ * pan, not a click. Escape closes the panel, then leaves inspect mode. In a 3D view the clicked
+ * pixel itself is kept (the camera moves, not the picture's plane) and explained again, by the
+ * CPU tracer, as the graph or the camera changes (inspection-3d.ts).
  */
 import { type RefObject, useEffect, useRef, useState } from 'react';
 import type { View } from '../../../nodes/core/scene.ts';
+import type { Camera3d, Scene3d } from '../../../nodes/core/scene-3d.ts';
 import type { Vec2 } from '../../../nodes/core/values.ts';
 import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
 import { isTyping } from '../../editor/typing.ts';
@@ -13,6 +16,7 @@ import { type Screen, toCss, toWorld } from '../../viewport/overlay/screen.ts';
 import type { PixelInspection } from '../../viewport/pixel-probe.ts';
 import type { Viewport } from '../../viewport/viewport.ts';
 import { type Inspection, inspect } from './inspection.ts';
+import { type Inspection3d, inspect3d } from './inspection-3d.ts';
 
 /** A press that moves less than this (CSS px) before release is a click. */
 const CLICK_SLOP = 4;
@@ -22,7 +26,7 @@ const SETTLE_MS = 150;
 export interface PixelInspectState {
   /** The inspected world point (the clicked one), or null when the panel is closed. */
   readonly anchor: Vec2 | null;
-  readonly inspection: Inspection | null;
+  readonly inspection: Inspection | Inspection3d | null;
   /** The panel docks on the side away from the point. */
   readonly side: 'left' | 'right';
   close(): void;
@@ -33,6 +37,8 @@ interface Inputs {
   readonly viewport: RefObject<Viewport | null>;
   readonly evaluation: Evaluation;
   readonly view: View;
+  /** A 3D graph's picture and the camera the view shows it through (null: a 2D graph). */
+  readonly space: { readonly scene: Scene3d; readonly camera: Camera3d } | null;
   readonly width: number;
   readonly height: number;
   /** Inspect mode (the toolbar toggle): a plain click inspects and handles do not drag. */
@@ -51,11 +57,15 @@ function probeAt(viewport: Viewport | null, screen: Screen, anchor: Vec2): Pixel
 
 export function usePixelInspect(p: Inputs): PixelInspectState {
   const [anchor, setAnchor] = useState<Vec2 | null>(null);
-  const [inspection, setInspection] = useState<Inspection | null>(null);
+  const [inspection, setInspection] = useState<Inspection | Inspection3d | null>(null);
+  /** The clicked CSS point of a 3D view (its explanation follows the camera), or null. */
+  const [pixel3d, setPixel3d] = useState<Vec2 | null>(null);
   const latest = useRef(p);
   latest.current = p;
   const anchorRef = useRef(anchor);
   anchorRef.current = anchor;
+  const pixel3dRef = useRef(pixel3d);
+  pixel3dRef.current = pixel3d;
 
   useEffect(() => {
     const el = p.pane.current;
@@ -79,8 +89,9 @@ export function usePixelInspect(p: Inputs): PixelInspectState {
       if (!start || e.pointerId !== start.id || !(latest.current.mode || start.alt)) return;
       const css = local(e);
       if (Math.hypot(css[0] - start.x, css[1] - start.y) > CLICK_SLOP) return;
-      const { view, width, height } = latest.current;
-      setAnchor(toWorld({ view, width, height }, css));
+      const { view, width, height, space } = latest.current;
+      if (space) setPixel3d(css);
+      else setAnchor(toWorld({ view, width, height }, css));
     };
     el.addEventListener('pointerdown', onDown);
     el.addEventListener('pointerup', onUp);
@@ -94,8 +105,10 @@ export function usePixelInspect(p: Inputs): PixelInspectState {
   useEffect(() => {
     const onKey = (e: KeyboardEvent) => {
       if (e.key !== 'Escape' || e.defaultPrevented || isTyping(e.target)) return;
-      if (anchorRef.current) setAnchor(null);
-      else if (latest.current.mode) latest.current.onModeOff();
+      if (anchorRef.current || pixel3dRef.current) {
+        setAnchor(null);
+        setPixel3d(null);
+      } else if (latest.current.mode) latest.current.onModeOff();
     };
     window.addEventListener('keydown', onKey);
     return () => window.removeEventListener('keydown', onKey);
@@ -104,13 +117,37 @@ export function usePixelInspect(p: Inputs): PixelInspectState {
   // Turning inspect mode off closes the panel too.
   const wasMode = useRef(p.mode);
   useEffect(() => {
-    if (wasMode.current && !p.mode) setAnchor(null);
+    if (wasMode.current && !p.mode) {
+      setAnchor(null);
+      setPixel3d(null);
+    }
     wasMode.current = p.mode;
   }, [p.mode]);
 
-  const { evaluation, view, width, height, viewport } = p;
+  const { evaluation, view, width, height, viewport, space } = p;
+  // Switching between a 2D and a 3D graph closes the panel (its point means nothing there).
+  const is3d = space !== null;
+  useEffect(() => {
+    if (is3d) setAnchor(null);
+    else setPixel3d(null);
+  }, [is3d]);
   const probedAnchor = useRef<Vec2 | null>(null);
   useEffect(() => {
+    if (!space || !pixel3d || width === 0 || height === 0) return undefined;
+    const run = () => setInspection(inspect3d(evaluation, space.scene, space.camera, pixel3d, width, height));
+    if (probedAnchor.current !== pixel3d) {
+      probedAnchor.current = pixel3d;
+      run();
+      return undefined;
+    }
+    const timer = setTimeout(run, SETTLE_MS);
+    return () => clearTimeout(timer);
+  }, [pixel3d, evaluation, space, width, height]);
+  useEffect(() => {
+    if (space) {
+      if (!pixel3d) setInspection(null);
+      return undefined;
+    }
     if (!anchor || width === 0 || height === 0) {
       probedAnchor.current = null;
       setInspection(null);
@@ -130,13 +167,16 @@ export function usePixelInspect(p: Inputs): PixelInspectState {
     }
     const timer = setTimeout(run, SETTLE_MS);
     return () => clearTimeout(timer);
-  }, [anchor, evaluation, view, width, height, viewport]);
+  }, [anchor, evaluation, view, width, height, viewport, space, pixel3d]);
 
-  const css = anchor ? toCss({ view, width, height }, anchor) : null;
+  const css = space ? pixel3d : anchor ? toCss({ view, width, height }, anchor) : null;
   return {
-    anchor,
+    anchor: space ? null : anchor,
     inspection,
     side: css && css[0] > width / 2 ? 'left' : 'right',
-    close: () => setAnchor(null),
+    close: () => {
+      setAnchor(null);
+      setPixel3d(null);
+    },
   };
 }

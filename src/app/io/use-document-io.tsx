@@ -6,6 +6,7 @@
  */
 import { type ReactNode, useCallback, useEffect, useRef, useState } from 'react';
 import type { Scene } from '../../../nodes/core/scene.ts';
+import type { Scene3d } from '../../../nodes/core/scene-3d.ts';
 import type { GraphDoc } from '../../../nodes/graph/document.ts';
 import { registry } from '../../../nodes/types/index.ts';
 import { tidyIfOverlapping } from '../../editor/layout.ts';
@@ -30,6 +31,8 @@ import { useStlExport } from './use-stl-export.tsx';
 interface Options {
   readonly store: EditorStore;
   readonly scene: Scene;
+  /** The picture of space when the render node is render-3d (then `scene` is empty). */
+  readonly scene3d: Scene3d | null;
   /** Replaces the document as one undo step (the app also resets selection and framing). */
   load(doc: GraphDoc, label: string): void;
   viewport(): Viewport | null;
@@ -53,6 +56,10 @@ export const loadedMessage = (what: string) => `Loaded ${what} — Ctrl+Z brings
 /** What an edit attempted while presenting is told (the presentation never changes the graph). */
 export const PRESENTING_READ_ONLY = 'Presenting: the graph is read-only. Esc goes back to the editor.';
 
+/** Why Export → SVG refuses a 3D graph (its item is disabled then; this is the message if reached). */
+export const SVG_NOT_3D =
+  'No SVG: SVG export draws the circles and lines of a 2D graph; a 3D graph exports as PNG, STL or GLSL.';
+
 /** The live render's size in css pixels (the export dialog's "view size"). */
 function renderSize(): Size {
   const pane = document.querySelector<HTMLElement>('[data-testid="render-pane"]');
@@ -74,7 +81,14 @@ export async function copyText(text: string): Promise<boolean> {
   }
 }
 
-export function useDocumentIo({ store, scene, load, viewport, locked = false }: Options): DocumentIo {
+export function useDocumentIo({
+  store,
+  scene,
+  scene3d,
+  load,
+  viewport,
+  locked = false,
+}: Options): DocumentIo {
   const [report, setReport] = useState<OpenReport | null>(null);
   const [toast, setToast] = useState<ToastMessage | null>(null);
   const [dragging, setDragging] = useState(false);
@@ -193,8 +207,10 @@ export function useDocumentIo({ store, scene, load, viewport, locked = false }: 
 
   const currentScene = useRef(scene);
   currentScene.current = scene;
+  const currentScene3d = useRef(scene3d);
+  currentScene3d.current = scene3d;
   const glsl = (flavour: 'webgl2' | 'shadertoy') =>
-    exportGlsl(store.getState().doc, currentScene.current, flavour);
+    say('ok', exportGlsl(store.getState().doc, currentScene3d.current ?? currentScene.current, flavour));
   const animation = useAnimationExport({
     store,
     samples: scene.samples,
@@ -204,6 +220,7 @@ export function useDocumentIo({ store, scene, load, viewport, locked = false }: 
   });
   const stl = useStlExport({ store, say });
   const svg = () => {
+    if (currentScene3d.current) return say('error', SVG_NOT_3D);
     const { doc } = store.getState();
     const r = exportSvgFile(doc, currentScene.current, doc.view, renderSize());
     say(r.ok ? 'ok' : 'error', r.message);
@@ -211,7 +228,9 @@ export function useDocumentIo({ store, scene, load, viewport, locked = false }: 
   const exportItems: MenuItem[] = [
     { label: 'PNG image…', hint: 'any size, graph inside', onSelect: () => setExporting(true) },
     animation.item,
-    { label: 'SVG (circles and lines)', hint: 'vector, mirrors only', onSelect: () => svg() },
+    scene3d
+      ? { label: 'SVG (circles and lines)', hint: 'only for 2D graphs', disabled: true, onSelect: svg }
+      : { label: 'SVG (circles and lines)', hint: 'vector, mirrors only', onSelect: svg },
     stl.item,
     { label: 'Copy share link', hint: 'graph in the URL', onSelect: () => void copyLink() },
     { label: 'GLSL shader (.frag)', hint: 'WebGL2, values baked', onSelect: () => glsl('webgl2') },

@@ -2,10 +2,12 @@
  * `kleinflow glsl GRAPH [--shadertoy] [--probe] [-o FILE]`: the graph's fragment shader with every
  * value baked in (standalone GLSL ES 3.00 for WebGL2), or the Shadertoy `mainImage` version that
  * pastes into shadertoy.com unchanged. Compile notes (element or uniform limits) go to stderr.
- * A 3D graph gives the sphere-tracing shader (shader-gen/space/compile-3d.ts).
+ * A 3D graph gives the sphere-tracing shader; both come from shader-gen/standalone.ts (the editor's
+ * Export menu uses it too).
  */
-import { compile, FRAME_UNIFORMS, shadertoySource } from '../../../shader-gen/compile.ts';
-import { compile3d, FRAME_UNIFORMS_3D, shadertoySource3d } from '../../../shader-gen/space/compile-3d.ts';
+import { FRAME_UNIFORMS } from '../../../shader-gen/compile.ts';
+import { FRAME_UNIFORMS_3D } from '../../../shader-gen/space/compile-3d.ts';
+import { standaloneShader } from '../../../shader-gen/standalone.ts';
 import { expectPositionals, formatOptions, type OptionSpec, parseArgs, stringOption } from '../args.ts';
 import { type CliCommand, CliError, EXIT } from '../command.ts';
 import { fileErrorMessage, formatDiagnostic, loadAnyScene } from '../load-graph.ts';
@@ -42,19 +44,12 @@ export const glslCommand: CliCommand = {
       throw new CliError('--shadertoy and --probe cannot be combined', EXIT.usage, true);
     }
     const { picture, doc } = await loadAnyScene(io, graphPath);
-    let source: string;
-    if (picture.kind === '3d') {
-      source = parsed.options.shadertoy
-        ? shadertoySource3d(picture.scene3d)
-        : compile3d(picture.scene3d, { bake: true, variant: parsed.options.probe ? 'probe' : 'color' })
-            .source;
-    } else if (parsed.options.shadertoy) source = shadertoySource(picture.scene);
-    else {
-      const scene = picture.scene;
-      const program = compile(scene, { baked: true, variant: parsed.options.probe ? 'probe' : 'color' });
-      for (const d of program.diagnostics) io.stderr.write(`${graphPath}: ${formatDiagnostic(d, doc)}\n`);
-      source = program.source;
-    }
+    const flavour = parsed.options.shadertoy ? 'shadertoy' : parsed.options.probe ? 'probe' : 'webgl2';
+    const { source, diagnostics } = standaloneShader(
+      picture.kind === '3d' ? picture.scene3d : picture.scene,
+      flavour,
+    );
+    for (const d of diagnostics) io.stderr.write(`${graphPath}: ${formatDiagnostic(d, doc)}\n`);
     const output = stringOption(parsed, 'output');
     if (output === undefined) io.stdout.write(source);
     else {

@@ -1,0 +1,79 @@
+/**
+ * The GL side of the 3D pane's dynamic resolution (policy: render-scale.ts). Times frames with a
+ * fence: the time from submitting a frame to its fence being signalled, seen by polling once per
+ * animation frame (so it is rounded up to the display's frame interval, which only matters for
+ * frames that are fast anyway). One frame is timed at a time, so a measurement never includes a
+ * queue of earlier frames. Keeps the interactive scale and when the picture last changed.
+ */
+import { DEFAULT_SCALE_POLICY, interacting, nextRenderScale, type ScalePolicy } from './render-scale.ts';
+
+interface Timing {
+  readonly sync: WebGLSync;
+  readonly start: number;
+  readonly scale: number;
+}
+
+export class DynamicResolution {
+  /** The scale of frames drawn while the user interacts (1 until a frame proves too slow). */
+  private interactiveScale = 1;
+  private timing: Timing | null = null;
+  private lastChangeAt = Number.NEGATIVE_INFINITY;
+  /** The latest measured frame, for the test hooks and the status line. */
+  lastFrameMs = 0;
+
+  constructor(private readonly policy: ScalePolicy = DEFAULT_SCALE_POLICY) {}
+
+  /** The picture changed (camera, value, size): interaction until `settleMs` of stillness. */
+  changed(now: number): void {
+    this.lastChangeAt = now;
+  }
+
+  /** The scale to draw a frame at now: reduced while interacting, 1 once still. */
+  frameScale(now: number): number {
+    return interacting(now - this.lastChangeAt, this.policy) ? this.interactiveScale : 1;
+  }
+
+  /** Milliseconds until the picture counts as still (0: it does). */
+  settlesIn(now: number): number {
+    return Math.max(0, this.lastChangeAt + this.policy.settleMs - now);
+  }
+
+  /** Whether a timed frame has not finished yet (the caller keeps polling). */
+  get measuring(): boolean {
+    return this.timing !== null;
+  }
+
+  /** Call right before a frame's draw calls; returns the start time for `end`. */
+  begin(): number {
+    return performance.now();
+  }
+
+  /** Call after a frame's draw calls: times it unless another timed frame is still running. */
+  end(gl: WebGL2RenderingContext, start: number, scale: number): void {
+    if (this.timing) return;
+    const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+    if (!sync) return;
+    gl.flush(); // the fence must reach the GPU, or it is never signalled
+    this.timing = { sync, start, scale };
+  }
+
+  /** Takes a finished timing into the interactive scale; never waits for the GPU. */
+  poll(gl: WebGL2RenderingContext): void {
+    const t = this.timing;
+    if (!t || gl.getSyncParameter(t.sync, gl.SYNC_STATUS) !== gl.SIGNALED) return;
+    const ms = performance.now() - t.start;
+    gl.deleteSync(t.sync);
+    this.timing = null;
+    this.lastFrameMs = ms;
+    this.interactiveScale = nextRenderScale(this.interactiveScale, { ms, scale: t.scale }, this.policy);
+  }
+
+  /** The context was lost: its sync object went with it. */
+  forget(): void {
+    this.timing = null;
+  }
+
+  get scale(): number {
+    return this.interactiveScale;
+  }
+}

@@ -10,6 +10,7 @@ import { liveSourceId } from '../../nodes/core/live-source.ts';
 import type { GraphNode } from '../../nodes/graph/document.ts';
 import { useStore } from '../state/use-store.ts';
 import { liveMedia } from '../viewport/live-media.ts';
+import { FileChoice } from './FileChoice.tsx';
 import { readDataUrl } from './picture-file.ts';
 import { useLiveMediaVersion } from './use-live-sources.ts';
 
@@ -57,15 +58,7 @@ export function LiveSourceSection({ node }: { node: GraphNode }) {
           </button>
         )
       ) : (
-        <label className="kf-field">
-          <span className="kf-field__label">Choose video…</span>
-          <input
-            type="file"
-            accept="video/*"
-            aria-label="Choose video"
-            onChange={(e) => void choose(e.target.files?.[0])}
-          />
-        </label>
+        <FileChoice label="Choose video" accept="video/*" onFile={(f) => void choose(f)} />
       )}
       <p className="kf-inspector__hint">
         Drawn live in the browser only; the picture below is the fallback. The camera is never recorded or

@@ -6,6 +6,7 @@
 import { useState } from 'react';
 import type { GraphNode } from '../../nodes/graph/document.ts';
 import { useStore } from '../state/use-store.ts';
+import { FileChoice } from './FileChoice.tsx';
 import { pictureFromFile } from './picture-file.ts';
 
 export function PictureFileSection({ node }: { node: GraphNode }) {
@@ -39,15 +40,7 @@ export function PictureFileSection({ node }: { node: GraphNode }) {
   return (
     <>
       <h3>Picture</h3>
-      <label className="kf-field">
-        <span className="kf-field__label">Choose picture…</span>
-        <input
-          type="file"
-          accept="image/*"
-          aria-label="Choose picture"
-          onChange={(e) => void choose(e.target.files?.[0])}
-        />
-      </label>
+      <FileChoice label="Choose picture" accept="image/*" onFile={(f) => void choose(f)} />
       {src !== '' && (
         <button type="button" className="kf-button" onClick={clear}>
           Use the built-in picture

@@ -55,10 +55,10 @@ export function useCamera3d(store: EditorStore, doc: GraphDoc, scene3d: Scene3d 
       setCamera(home);
       return;
     }
-    setCamera((old) => {
-      const next = doc.camera3d ?? home;
-      return sameCamera3d(old, next) ? old : next;
-    });
+    const next = doc.camera3d ?? home;
+    // A camera from outside wins: a store still pending from the last orbit must not overwrite it.
+    if (!sameCamera3d(cameraRef.current, next)) clearTimeout(timer.current);
+    setCamera((old) => (sameCamera3d(old, next) ? old : next));
   }, [store, doc.camera3d, home, nodeId]);
 
   const show = useCallback(

@@ -82,11 +82,19 @@ describe('webcam', () => {
       (n) => window.__kleinflow!.viewport!.stats.liveUploads > n + 3,
       before.liveUploads,
     );
-    // The fake camera's pattern moves: two exports 0.7 s apart differ (one frame gives equal ones).
+    // The fake camera's pattern moves: a later export differs from this one (one frame gives equal
+    // ones). Under load the fake camera's frames come slower, so look again until it has moved.
     const a = await exportPixels(page);
-    await page.waitForTimeout(700);
-    const b = await exportPixels(page);
-    expect(differing(a, b)).toBeGreaterThan(20);
+    let b = a;
+    await expect
+      .poll(
+        async () => {
+          b = await exportPixels(page);
+          return differing(a, b);
+        },
+        { timeout: 20_000, interval: 700 },
+      )
+      .toBeGreaterThan(20);
     const after = await stats(page);
     expect(after.compiles).toBe(before.compiles);
     expect(after.frames).toBeGreaterThan(before.frames + 3);

@@ -5,6 +5,7 @@
  */
 import { readFileSync } from 'node:fs';
 import type { Browser, Page } from 'playwright-core';
+import { parseLiveKey } from '../../nodes/core/live-source.ts';
 import type { View } from '../../nodes/core/scene.ts';
 import type { UniformEntry } from '../../shader-gen/compile.ts';
 import { resolvePicture } from '../../shader-gen/picture.ts';
@@ -76,7 +77,8 @@ export class GpuProbe {
     tile: FrameOptions = {},
   ): Promise<ProbeImage> {
     for (const src of tile.pictures ?? []) {
-      const pic = resolvePicture(src, undefined);
+      // A live picture (camera, video) has no frames here: its fallback is drawn, as in the CLI.
+      const pic = resolvePicture(parseLiveKey(src)?.fallback ?? src, undefined);
       const base64 = Buffer.from(pic.data.buffer, pic.data.byteOffset, pic.data.byteLength).toString(
         'base64',
       );

@@ -222,7 +222,7 @@ describe('infiniteSphairahedron', () => {
           const zc = t.kind === 'cube' ? inf.spheres[2]!.center[2] : 0;
           const radii = inf.spheres.map((x) => x.radius);
           const published = PUBLISHED_RADII[t.id]!(zb, zc);
-          published.forEach((r, k) => expect(radii[k]).toBeCloseTo(r, 9));
+          for (const [k, r] of published.entries()) expect(radii[k]).toBeCloseTo(r, 9);
         }),
         { ...SEED, numRuns: 30 },
       );

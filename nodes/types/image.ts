@@ -98,7 +98,9 @@ export const imageNode = defineNode({
       default: '',
       maxLength: 2 * LIMITS.maxVideoDataUrlChars,
       label: 'kept video',
-      more: { param: 'source', is: ['video'] },
+      // Only a video source has one; even then it is a long data URL, so it sits under More.
+      when: { param: 'source', is: ['video'] },
+      more: true,
       doc: `a small video kept inline (data:video URL, at most ${MB(LIMITS.maxVideoDataUrlChars)}); empty = choose the file after opening`,
     },
     src: {

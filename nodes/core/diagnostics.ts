@@ -159,6 +159,12 @@ export const DIAGNOSTICS = table({
     text: (mu: string) =>
       `μ = ${mu} lies below the Maskit slice's boundary: that group is not discrete and free, and a Maskit group node given it draws no true limit set`,
   },
+  groupPortMissing: {
+    code: 'KF326',
+    severity: 'error',
+    text: (port: string, inner: string) =>
+      `the group's port "${port}" names inner node "${inner}", which is not in the group: the port is not wired`,
+  },
   drawnInstead: { code: 'KF315', severity: 'info', text: (detail: string) => detail },
   cameraInside: {
     code: 'KF316',

@@ -160,7 +160,10 @@ export function evaluateGraph(
       // A check, not the picture: a geometry corner case here must never withhold the render.
     }
   }
-  const located = flat ? diagnostics.map((d) => inDocument(d, source, flat)) : diagnostics;
+  // Flattening's own problems already carry their place in the document.
+  const located = flat
+    ? [...flat.diagnostics, ...diagnostics.map((d) => inDocument(d, source, flat))]
+    : diagnostics;
   return { scene, scene3d, nodes: results, diagnostics: located, analysis, origin };
 }
 

@@ -5,6 +5,7 @@
  * id when no other node has it (so grouping changes neither the topological order nor the Scene),
  * else it becomes "<group id>/<inner id>". A muted group mutes every node inside it.
  */
+import { type Diagnostic, diag } from '../core/diagnostics.ts';
 import type { GraphDoc, GraphEdge, GraphNode, PortRef } from './document.ts';
 
 export interface Flattened {
@@ -17,6 +18,12 @@ export interface Flattened {
    * a wire says where the wire is in the document.
    */
   readonly edgeOrigin: ReadonlyMap<string, readonly string[]>;
+  /**
+   * What flattening could not reconnect, with its place in the document: a group port naming an
+   * inner node that is not there, a wire to or from a port a group does not have. (A wire inside a
+   * group to a missing inner node stays in the flat graph, where analysis reports it like any other.)
+   */
+  readonly diagnostics: readonly Diagnostic[];
 }
 
 export const hasGroups = (doc: Pick<GraphDoc, 'nodes'>): boolean => doc.nodes.some((n) => n.group);
@@ -24,17 +31,33 @@ export const hasGroups = (doc: Pick<GraphDoc, 'nodes'>): boolean => doc.nodes.so
 export function flattenGroups(doc: GraphDoc): Flattened {
   const origin = new Map<string, readonly string[]>();
   const edgeOrigin = new Map<string, readonly string[]>();
+  const problems: Problem[] = [];
   let nodes: readonly GraphNode[] = doc.nodes;
   let edges: readonly GraphEdge[] = doc.edges;
   // One level per pass; the document's depth limit (LIMITS.maxJsonDepth) bounds the passes.
   while (nodes.some((n) => n.group))
-    ({ nodes, edges } = expandOneLevel(nodes, edges, { nodes: origin, edges: edgeOrigin }));
-  return { doc: { ...doc, nodes: [...nodes], edges: [...edges] }, origin, edgeOrigin };
+    ({ nodes, edges } = expandOneLevel(nodes, edges, { nodes: origin, edges: edgeOrigin, problems }));
+  const diagnostics = problems.map(({ kind, path, rest, make }) => {
+    const at = documentPath(doc, path, kind);
+    return make(at === null ? undefined : `${at}${rest}`);
+  });
+  return { doc: { ...doc, nodes: [...nodes], edges: [...edges] }, origin, edgeOrigin, diagnostics };
+}
+
+/** A problem found while expanding, placed in the document once flattening is done. */
+interface Problem {
+  /** The group node's path (kind 'nodes') or the wire's (kind 'edges'), ids from the top. */
+  readonly kind: 'nodes' | 'edges';
+  readonly path: readonly string[];
+  /** The rest of the JSON path after the node's or wire's own, e.g. `.group.inputs[0].targets[1].node`. */
+  readonly rest: string;
+  readonly make: (path: string | undefined) => Diagnostic;
 }
 
 interface Origins {
   readonly nodes: Map<string, readonly string[]>;
   readonly edges: Map<string, readonly string[]>;
+  readonly problems: Problem[];
 }
 
 function expandOneLevel(
@@ -73,19 +96,41 @@ function expandOneLevel(
       const id = ids.get(r.node);
       return id === undefined ? null : { node: id, port: r.port };
     };
+    /** A group port naming a missing inner node: reported on the group node, the port left unwired. */
+    const missing = (rest: string, port: string, inner: string) =>
+      origins.problems.push({
+        kind: 'nodes',
+        path,
+        rest,
+        make: (at) => diag('groupPortMissing', { path: at, nodeId: node.id }, port, inner),
+      });
+    const ghosts = new Map<string, string>();
     for (const e of body.edges) {
-      const from = ref(e.from);
-      const to = ref(e.to);
-      if (!from || !to) continue;
+      // A wire to a missing inner node keeps that name (made unique), so analysis reports it.
+      const end = (r: PortRef): PortRef => {
+        const known = ref(r);
+        if (known) return known;
+        if (!ghosts.has(r.node)) ghosts.set(r.node, fresh(r.node, node.id));
+        return { node: ghosts.get(r.node)!, port: r.port };
+      };
       const id = fresh(e.id, node.id);
       origins.edges.set(id, [...path, e.id]);
-      innerEdges.push({ ...e, id, from, to });
+      innerEdges.push({ ...e, id, from: end(e.from), to: end(e.to) });
     }
-    inputs.set(node.id, new Map(body.inputs.map((p) => [p.name, p.targets.flatMap((t) => ref(t) ?? [])])));
+    const exposedInputs = body.inputs.map((p, i): [string, PortRef[]] => [
+      p.name,
+      p.targets.flatMap((t, k) => {
+        const to = ref(t);
+        if (!to) missing(`.group.inputs[${i}].targets[${k}].node`, p.name, t.node);
+        return to ?? [];
+      }),
+    ]);
+    inputs.set(node.id, new Map(exposedInputs));
     const outs = new Map<string, PortRef>();
-    for (const p of body.outputs) {
+    for (const [i, p] of body.outputs.entries()) {
       const from = ref(p.from);
       if (from) outs.set(p.name, from);
+      else missing(`.group.outputs[${i}].from.node`, p.name, p.from.node);
     }
     outputs.set(node.id, outs);
   }
@@ -93,7 +138,23 @@ function expandOneLevel(
   for (const e of edges) {
     const from = outputs.has(e.from.node) ? outputs.get(e.from.node)!.get(e.from.port) : e.from;
     const targets = inputs.has(e.to.node) ? (inputs.get(e.to.node)!.get(e.to.port) ?? []) : [e.to];
-    // A wire to or from a port the group no longer exposes has nothing to stand for: it is dropped.
+    // A wire to or from a port the group does not expose has nothing to stand for: it is dropped,
+    // and said (a port that is exposed but names a missing inner node was reported above).
+    const unexposed = (end: 'source' | 'target', ref: PortRef, ports: readonly { name: string }[]) => {
+      if (ports.some((p) => p.name === ref.port)) return;
+      const field = end === 'source' ? 'from' : 'to';
+      origins.problems.push({
+        kind: 'edges',
+        path: origins.edges.get(e.id) ?? [e.id],
+        rest: `.${field}.port`,
+        make: (at) => diag('unknownPort', { path: at, nodeId: ref.node }, end, ref.port, ref.node),
+      });
+    };
+    const groupOf = (id: string) => nodes.find((n) => n.id === id)?.group;
+    const fromGroup = outputs.has(e.from.node) ? groupOf(e.from.node) : undefined;
+    const toGroup = inputs.has(e.to.node) ? groupOf(e.to.node) : undefined;
+    if (fromGroup) unexposed('source', e.from, fromGroup.outputs);
+    if (toGroup) unexposed('target', e.to, toGroup.inputs);
     if (!from) continue;
     targets.forEach((to, k) => {
       const id = k === 0 && targets.length === 1 ? e.id : fresh(`${e.id}>${k}`, e.id);

@@ -126,17 +126,32 @@ export async function loadGraph(io: CliIo, path: string, types: NodeRegistry = r
  * One line per diagnostic: `error KF203 nodes[2].type (node "k"): unknown node type "foo"`.
  * Where the diagnostic has no path, the node's place in the document stands in for it.
  */
-export function formatDiagnostic(d: Diagnostic, doc?: GraphDoc): string {
+export function formatDiagnostic(
+  d: Diagnostic,
+  doc?: GraphDoc,
+  origin?: ReadonlyMap<string, readonly string[]>,
+): string {
   const index = d.nodeId === undefined || !doc ? -1 : doc.nodes.findIndex((n) => n.id === d.nodeId);
   const where = d.path ?? (index >= 0 ? `nodes[${index}]` : '');
   const who: string[] = [];
-  if (d.nodeId !== undefined) who.push(`node "${d.nodeId}"`);
+  if (d.nodeId !== undefined) who.push(nodeInGroups(d.nodeId, origin));
   if (d.port !== undefined && !d.path) who.push(`port "${d.port}"`);
   const location = [where, who.length ? `(${who.join(', ')})` : ''].filter(Boolean).join(' ') || '(document)';
   // Schema messages already start with their path; do not say it twice.
   const message =
     d.path && d.message.startsWith(`${d.path}: `) ? d.message.slice(d.path.length + 2) : d.message;
   return `${d.severity} ${d.code} ${location}: ${message}`;
+}
+
+/**
+ * `node "c"`, or for a node that came out of a group `node "c" in group "g"` (nested groups from the
+ * outside in: `in group "g" › "h"`), named by its ids in the document, not the flattened graph's.
+ */
+function nodeInGroups(flatId: string, origin?: ReadonlyMap<string, readonly string[]>): string {
+  const path = origin?.get(flatId);
+  if (!path || path.length < 2) return `node "${flatId}"`;
+  const groups = path.slice(0, -1).map((id) => `"${id}"`);
+  return `node "${path.at(-1)}" in group ${groups.join(' › ')}`;
 }
 
 export const countBySeverity = (ds: readonly Diagnostic[]): Record<Severity, number> => ({
@@ -154,7 +169,7 @@ async function loadChecked(io: CliIo, path: string): Promise<GraphLoad & { evalu
   // Live sources are notes worth printing, though info: the picture is not what the browser shows.
   const live = load.evaluation && !load.evaluation.scene3d ? liveFallbackNotes(load.evaluation.scene) : [];
   for (const d of [...load.diagnostics.filter((d) => d.severity !== 'info'), ...live]) {
-    io.stderr.write(`${path}: ${formatDiagnostic(d, load.doc)}\n`);
+    io.stderr.write(`${path}: ${formatDiagnostic(d, load.doc, load.evaluation?.origin)}\n`);
   }
   if (!load.evaluation || hasErrors(load.diagnostics)) {
     const n = countBySeverity(load.diagnostics).error;

@@ -7,6 +7,8 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { LIMITS } from '../../nodes/core/scene.ts';
+import { groupNodes } from '../../nodes/graph/grouping.ts';
+import { doc, edge, node } from '../nodes/support/doc.ts';
 import { runCli } from './run-cli.ts';
 
 let dir = '';
@@ -85,5 +87,21 @@ describe('kleinflow check: shader diagnostics', () => {
     expect(r.stdout).toMatch(/^error KF203 nodes\[2\]\.type \(node "x"\)/m);
     expect(r.stdout).toMatch(/^warning KF405 nodes\[0\] \(node "inv0"\)/m);
     expect(r.stderr).toMatch(/both\.json: 1 error, 1 warning/);
+  });
+});
+
+describe('kleinflow check: nodes inside groups', () => {
+  it('names a grouped node by its id in the document and the group it is in, with its JSON path', () => {
+    const flat = doc(
+      [node('c', 'circle', { radius: -1 }), node('i', 'inversion'), node('out', 'render')],
+      [edge('e1', 'c.circle', 'i.circle'), edge('e2', 'i.element', 'out.elements')],
+    );
+    const path = join(dir, 'grouped.json');
+    writeFileSync(path, JSON.stringify(groupNodes(flat, ['c', 'i'], 'g')));
+    const r = runCli(['check', path]);
+    expect(r.status).not.toBe(0);
+    expect(r.stdout).toMatch(
+      /error KF\d+ nodes\[\d+\]\.group\.nodes\[\d+\]\.params\.radius \(node "c" in group "g"\)/,
+    );
   });
 });

@@ -53,7 +53,9 @@ export const checkCommand: CliCommand = {
         const load = await loadGraph(io, path);
         const diagnostics = withCompileDiagnostics(load);
         for (const d of diagnostics) {
-          io.stdout.write(`${prefix ? `${path}: ` : ''}${formatDiagnostic(d, load.doc)}\n`);
+          io.stdout.write(
+            `${prefix ? `${path}: ` : ''}${formatDiagnostic(d, load.doc, load.evaluation?.origin)}\n`,
+          );
         }
         const n = countBySeverity(diagnostics);
         const summary =

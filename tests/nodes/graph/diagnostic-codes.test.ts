@@ -10,6 +10,7 @@ import { DIAGNOSTICS, type Diagnostic, type DiagnosticKey } from '../../../nodes
 import { LIMITS } from '../../../nodes/core/scene.ts';
 import { analyzeGraph } from '../../../nodes/graph/analyze.ts';
 import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
+import { groupNodes } from '../../../nodes/graph/grouping.ts';
 import { loadDocument, parseDocumentText } from '../../../nodes/graph/load.ts';
 import { registry } from '../../../nodes/types/index.ts';
 import { doc, edge, node } from '../support/doc.ts';
@@ -115,6 +116,18 @@ const SCENARIOS: Partial<Record<DiagnosticKey, () => readonly Diagnostic[]>> = {
       ),
       registry,
     ).diagnostics,
+  groupPortMissing: () => {
+    const g = groupNodes(doc(base().nodes, [edge('e', 'p.point', 'c.center')]), ['p'], 'g');
+    const body = g.nodes.find((n) => n.id === 'g')!.group!;
+    const broken = {
+      ...body,
+      outputs: body.outputs.map((o) => ({ ...o, from: { ...o.from, node: 'gone' } })),
+    };
+    return evaluateGraph(
+      { ...g, nodes: g.nodes.map((n) => (n.group ? { ...n, group: broken } : n)) },
+      registry,
+    ).diagnostics;
+  },
   nodeVersion: () => evaluateGraph(doc([{ ...node('p', 'point'), version: 99 }]), registry).diagnostics,
   nodeThrew: () => evaluateGraph(doc([node('t', 'test-throws')]), testRegistry).diagnostics,
   nonFinite: () => evaluateGraph(doc([node('t', 'test-nan')]), testRegistry).diagnostics,

@@ -65,6 +65,69 @@ describe('flattenGroups', () => {
     expect(Object.entries(def.outputs).map(([k, v]) => [k, v.type])).toEqual([['element', 'element']]);
     const broken = { ...grouped(), edges: [{ ...grouped().edges[0], from: { node: 'g', port: 'gone' } }] };
     expect(flattenGroups(broken).doc.edges.map((e) => e.to.node)).toEqual(['i']);
+    // Dropped, but said, on the wire's own place in the document.
+    const said = evaluateGraph(broken, registry).diagnostics.filter((d) => d.code === 'KF205');
+    expect(said).toMatchObject([{ path: 'edges[0].from.port', nodeId: 'g' }]);
+    expect(said[0].message).toContain('"gone"');
+  });
+
+  /** grouped() with its body changed by `edit`. */
+  const withBody = (edit: (body: NonNullable<GraphNode['group']>) => NonNullable<GraphNode['group']>) => {
+    const d = grouped();
+    return { ...d, nodes: d.nodes.map((n) => (n.group ? { ...n, group: edit(n.group) } : n)) };
+  };
+
+  it('a wire inside a group to an inner node that is not there is an error at that wire, never dropped silently', () => {
+    const broken = withBody((b) => ({
+      ...b,
+      edges: b.edges.map((e) => ({ ...e, from: { ...e.from, node: 'ghost' } })),
+    }));
+    const said = evaluateGraph(broken, registry).diagnostics.find((d) => d.code === 'KF204');
+    expect(said).toMatchObject({ path: 'nodes[0].group.edges[0].from.node' });
+    expect(said?.message).toContain('"ghost"');
+  });
+
+  it('a group port naming an inner node that is not there is an error on the group node, at the port', () => {
+    const outputGone = withBody((b) => ({
+      ...b,
+      outputs: b.outputs.map((o) => ({ ...o, from: { ...o.from, node: 'ghost' } })),
+    }));
+    const out = evaluateGraph(outputGone, registry).diagnostics.find((d) => d.code === 'KF326');
+    expect(out).toMatchObject({ nodeId: 'g', path: 'nodes[0].group.outputs[0].from.node' });
+    expect(out?.message).toContain('"ghost"');
+    // The same for an exposed input (c's centre is exposed once c → i is grouped with p outside).
+    const d = groupNodes(
+      doc(
+        [node('p', 'point'), node('c', 'circle'), node('i', 'inversion'), node('out', 'render')],
+        [
+          edge('e0', 'p.point', 'c.center'),
+          edge('e1', 'c.circle', 'i.circle'),
+          edge('e2', 'i.element', 'out.elements'),
+        ],
+      ),
+      ['c', 'i'],
+      'g',
+    );
+    const inputGone = {
+      ...d,
+      nodes: d.nodes.map((n) =>
+        n.group
+          ? {
+              ...n,
+              group: {
+                ...n.group,
+                inputs: n.group.inputs.map((p) => ({
+                  ...p,
+                  targets: p.targets.map((t) => ({ ...t, node: 'ghost' })),
+                })),
+              },
+            }
+          : n,
+      ),
+    };
+    const at = inputGone.nodes.findIndex((n) => n.id === 'g');
+    const inp = evaluateGraph(inputGone, registry).diagnostics.find((x) => x.code === 'KF326');
+    expect(inp).toMatchObject({ nodeId: 'g', path: `nodes[${at}].group.inputs[0].targets[0].node` });
   });
 });
 

@@ -249,6 +249,7 @@ export function RenderPane({
           onPreview={(patches) => store.preview(patchChange(patches))}
           onCommit={(patches) => store.commit(patchChange(patches), 'drag in the render')}
           readOnly={readOnly}
+          inspecting={inspecting}
         />
       )}
       {size.width > 0 && !scene3d && (

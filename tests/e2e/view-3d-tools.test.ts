@@ -3,7 +3,7 @@
  * tracer (the same generator as `kleinflow glsl`) with the scene's values and the view's camera,
  * and glslangValidator accepts both; Export → SVG is disabled with its reason; while the camera
  * orbits the 3D pane renders at a reduced resolution and returns to full size once still; and
- * inspect mode explains a 3D pixel. The pane is small and the render node cheap, as in
+ * inspect mode explains a 3D pixel (and a press on a handle then never drags it). The pane is small and the render node cheap, as in
  * view-3d.test.ts (SwiftShader sphere-traces slowly).
  */
 import { readFileSync } from 'node:fs';
@@ -244,5 +244,29 @@ describe('Explain this pixel in 3D', () => {
     expect(await panel.getByTestId('inspect-gpu').textContent()).toContain('CPU tracer');
     await page.keyboard.press('Escape');
     await panel.waitFor({ state: 'detached' });
+
+    // Inspect mode, as in 2D: a press on a handle never drags it; a click there explains the pixel.
+    await page.getByRole('button', { name: 'Inspect', exact: true }).click();
+    const nodesBefore = JSON.stringify((await doc()).nodes);
+    const knobCentre = async () => {
+      const k = (await page.locator('[data-handle]').first().boundingBox())!;
+      return [k.x + k.width / 2, k.y + k.height / 2] as const;
+    };
+    const [kx, ky] = await knobCentre();
+    await page.mouse.move(kx, ky);
+    await page.mouse.down();
+    await page.mouse.move(kx + 30, ky + 20, { steps: 5 });
+    await page.mouse.up();
+    expect(JSON.stringify((await doc()).nodes)).toBe(nodesBefore);
+    const [cx, cy] = await knobCentre();
+    await page.mouse.click(cx, cy);
+    await panel.waitFor();
+    expect(JSON.stringify((await doc()).nodes)).toBe(nodesBefore);
+    await page.keyboard.press('Escape');
+    await panel.waitFor({ state: 'detached' });
+    await page.keyboard.press('Escape');
+    expect(
+      await page.getByRole('button', { name: 'Inspect', exact: true }).getAttribute('aria-pressed'),
+    ).toBe('false');
   }, 240_000);
 });

@@ -38,6 +38,8 @@ export interface RenderOverlay3dProps {
   onCommit(patches: NodePatch[]): void;
   /** Presenting or embedded: the construction is drawn, but there is nothing to grab (as in 2D). */
   readOnly?: boolean;
+  /** Inspect mode: a click explains the pixel under it, so no handle is grabbed (as in 2D). */
+  inspecting?: boolean;
 }
 
 const FALLBACK_COLOR = '#ffffff';
@@ -115,6 +117,7 @@ export function RenderOverlay3d(props: RenderOverlay3dProps): JSX.Element {
     onHoverNode: props.onHoverNode,
     onPreview: props.onPreview,
     onCommit: props.onCommit,
+    inspecting: props.inspecting ?? false,
   });
   const hot = drag ? new Set([drag.target.nodeId]) : hoveredNodeIds;
   // Keys: the node id and how many of that node's items came before (a node may draw several).
@@ -154,7 +157,7 @@ export function RenderOverlay3d(props: RenderOverlay3dProps): JSX.Element {
         touchAction: 'none',
         userSelect: 'none',
         overflow: 'hidden',
-        cursor: drag ? 'grabbing' : hoverHandle ? 'grab' : undefined,
+        cursor: props.inspecting ? 'crosshair' : drag ? 'grabbing' : hoverHandle ? 'grab' : undefined,
       }}
     >
       <g>{wireframes}</g>

@@ -5,28 +5,22 @@
  */
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import type { BrowserContext, Page } from 'playwright-core';
+import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { readStl } from '../../src/io/stl.ts';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { repoRoot, type ServedApp } from './app-server.ts';
 import { waitRendered } from './editor-page.ts';
 import { currentDoc, menu, openViaPicker } from './io-page.ts';
+import { openSmall3dPane } from './view-3d-page.ts';
 
 let app: ServedApp;
-let context: BrowserContext;
 let page: Page;
 
 const example = (id: string) => readFileSync(join(repoRoot, 'examples', '3d', `${id}.kleinflow.json`));
 
 beforeAll(async () => {
-  app = await serveApp();
-  // SwiftShader sphere-traces a full-size 3D pane for seconds a frame, blocking the page: keep the
-  // render pane small (as tests/e2e/view-3d.test.ts does); the export does not depend on it.
-  context = await app.newContext({ width: 760, height: 420 });
-  await context.addInitScript(() => localStorage.setItem('kleinflow.split', '0.8'));
-  page = await context.newPage();
-  page.setDefaultTimeout(90_000);
-  await page.goto(`${app.url}?test`);
+  // A small render pane (view-3d-page.ts); the export does not depend on it.
+  ({ app, page } = await openSmall3dPane());
   await waitRendered(page);
 }, 180_000);
 

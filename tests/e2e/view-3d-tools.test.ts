@@ -8,7 +8,7 @@
  */
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import type { BrowserContext, Page } from 'playwright-core';
+import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
@@ -16,9 +16,10 @@ import { registry } from '../../nodes/types/index.ts';
 import { explainPixel3d } from '../../shader-gen/space/explain-3d.ts';
 import { standaloneShader } from '../../shader-gen/standalone.ts';
 import { shadertoyWrapper, validateShaders } from '../shader-gen/support/glslang.ts';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { repoRoot, type ServedApp } from './app-server.ts';
 import { waitRendered } from './editor-page.ts';
 import { openViaPicker } from './io-page.ts';
+import { freePanePoint, handleCentres, openSmall3dPane } from './view-3d-page.ts';
 
 const ID = 'fig11-sphere-inversion-fractal';
 const file = readFileSync(join(repoRoot, 'examples', '3d', `${ID}.kleinflow.json`));
@@ -26,18 +27,12 @@ const TITLE = JSON.parse(file.toString('utf8')).meta.title as string;
 const SLOW = { timeout: 90_000 };
 
 let app: ServedApp;
-let context: BrowserContext;
 let page: Page;
 
 const doc = () => page.evaluate(() => window.__kleinflow!.store.getState().doc) as Promise<GraphDoc>;
 
 beforeAll(async () => {
-  app = await serveApp();
-  context = await app.newContext({ width: 760, height: 420 });
-  await context.addInitScript(() => localStorage.setItem('kleinflow.split', '0.8'));
-  page = await context.newPage();
-  page.setDefaultTimeout(90_000);
-  await page.goto(`${app.url}?test`);
+  ({ app, page } = await openSmall3dPane());
   await waitRendered(page);
   await openViaPicker(page, `${ID}.kleinflow.json`, file);
   await page.waitForFunction(
@@ -114,23 +109,6 @@ describe('Export on a 3D graph', () => {
   }, 180_000);
 });
 
-/** A point of the render pane at least 20 px from every handle (where a drag orbits). */
-async function freePanePoint(): Promise<{ x: number; y: number }> {
-  const b = (await page.getByTestId('render-pane').boundingBox())!;
-  const handles = await page.locator('[data-handle]').evaluateAll((els) =>
-    els.map((e) => {
-      const r = e.getBoundingClientRect();
-      return [r.x + r.width / 2, r.y + r.height / 2];
-    }),
-  );
-  for (const fy of [0.15, 0.3, 0.7, 0.85])
-    for (const fx of [0.2, 0.5, 0.8]) {
-      const p = { x: b.x + fx * b.width, y: b.y + fy * b.height };
-      if (handles.every(([x, y]) => Math.hypot(x - p.x, y - p.y) > 20)) return p;
-    }
-  throw new Error('no free point in the render pane');
-}
-
 const drawnSize = () =>
   page.evaluate(() => {
     const v = window.__kleinflow!.viewport!;
@@ -155,7 +133,7 @@ describe('Dynamic resolution of the 3D pane', () => {
       };
       sample();
     });
-    const from = await freePanePoint();
+    const from = await freePanePoint(page);
     await page.mouse.move(from.x, from.y);
     await page.mouse.down();
     for (let i = 1; i <= 12; i++) {
@@ -201,12 +179,7 @@ describe('Explain this pixel in 3D', () => {
     const camera = current.camera3d ?? scene.camera;
     const b = (await page.getByTestId('render-pane').boundingBox())!;
     // A pixel (CSS point of the pane) whose ray and its neighbours hit images of the seed, away from handles.
-    const handles = await page.locator('[data-handle]').evaluateAll((els) =>
-      els.map((e) => {
-        const r = e.getBoundingClientRect();
-        return [r.x + r.width / 2, r.y + r.height / 2];
-      }),
-    );
+    const handles = await handleCentres(page);
     // The pane's size as the app measures it (clientWidth/Height), for the same rays.
     const [w, h] = await page
       .getByTestId('render-pane')

@@ -14,9 +14,10 @@ import { join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { decodePng } from '../../src/io/png.ts';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { repoRoot, type ServedApp } from './app-server.ts';
 import { renderPixels, thumbDiff, waitRendered } from './editor-page.ts';
 import { menu } from './io-page.ts';
+import { freePanePoint, openSmall3dPane } from './view-3d-page.ts';
 
 const FIG11 = 'Fig. 11 — the orbit of a seed sphere under six sphere inversions';
 const FIG237 = '(2,3,7) hyperbolic tessellation';
@@ -75,22 +76,6 @@ async function paneAt(fx: number, fy: number) {
   return { x: b.x + fx * b.width, y: b.y + fy * b.height };
 }
 
-/** A pane point at least 20 px from every drawn handle (where a drag orbits rather than grabs). */
-async function freePanePoint(): Promise<{ x: number; y: number }> {
-  const handles = await page.locator('[data-handle]').evaluateAll((els) =>
-    els.map((e) => {
-      const r = e.getBoundingClientRect();
-      return [r.x + r.width / 2, r.y + r.height / 2];
-    }),
-  );
-  for (const fy of [0.15, 0.3, 0.7, 0.85])
-    for (const fx of [0.2, 0.5, 0.8]) {
-      const p = await paneAt(fx, fy);
-      if (handles.every(([x, y]) => Math.hypot(x - p.x, y - p.y) > 20)) return p;
-    }
-  throw new Error('no free point in the render pane');
-}
-
 async function dragMouse(from: { x: number; y: number }, dx: number, dy: number) {
   await page.mouse.move(from.x, from.y);
   await page.mouse.down();
@@ -99,14 +84,8 @@ async function dragMouse(from: { x: number; y: number }, dx: number, dy: number)
 }
 
 beforeAll(async () => {
-  app = await serveApp();
   mkdirSync(shots, { recursive: true });
-  const context = await app.newContext({ width: 760, height: 420 });
-  // The render pane 20 % of the width: about 150 × 350 px.
-  await context.addInitScript(() => localStorage.setItem('kleinflow.split', '0.8'));
-  page = await context.newPage();
-  page.setDefaultTimeout(90_000);
-  await page.goto(`${app.url}?test`);
+  ({ app, page } = await openSmall3dPane());
   await page.getByRole('button', { name: 'Help' }).waitFor();
 }, 180_000);
 
@@ -131,7 +110,7 @@ describe('3D view', () => {
 
   it('dragging orbits the camera: the picture changes, the camera is stored, nothing compiles', async () => {
     const before = await compiles();
-    await dragMouse(await freePanePoint(), 60, 25);
+    await dragMouse(await freePanePoint(page), 60, 25);
     await expect.poll(() => docCamera(), SLOW).toBeDefined();
     await waitRendered(page, 120_000);
     expect(thumbDiff(await renderPixels(page), initial)).toBeGreaterThan(3);
@@ -201,7 +180,7 @@ describe('3D view', () => {
   }, 180_000);
 
   it('the orbited camera is saved with the document and comes back on reload', async () => {
-    await dragMouse(await freePanePoint(), -50, 20);
+    await dragMouse(await freePanePoint(page), -50, 20);
     await expect.poll(() => docCamera(), SLOW).toBeDefined();
     await page.waitForTimeout(1500); // the last move settles into the document, and autosave runs
     const saved = (await docCamera())!;

@@ -21,6 +21,13 @@ const grouped = (): GraphDoc =>
     'g',
   );
 
+type Body = NonNullable<GraphNode['group']>;
+/** `d` (by default grouped()) with every group's body changed by `edit`. */
+const withBody = (edit: (body: Body) => Body, d: GraphDoc = grouped()): GraphDoc => ({
+  ...d,
+  nodes: d.nodes.map((n) => (n.group ? { ...n, group: edit(n.group) } : n)),
+});
+
 describe('flattenGroups', () => {
   it('inlines a group: inner ids kept, outer wires reconnected, the origin of each inner node recorded', () => {
     const { doc: flat, origin } = flattenGroups(grouped());
@@ -71,12 +78,6 @@ describe('flattenGroups', () => {
     expect(said[0].message).toContain('"gone"');
   });
 
-  /** grouped() with its body changed by `edit`. */
-  const withBody = (edit: (body: NonNullable<GraphNode['group']>) => NonNullable<GraphNode['group']>) => {
-    const d = grouped();
-    return { ...d, nodes: d.nodes.map((n) => (n.group ? { ...n, group: edit(n.group) } : n)) };
-  };
-
   it('a wire inside a group to an inner node that is not there is an error at that wire, never dropped silently', () => {
     const broken = withBody((b) => ({
       ...b,
@@ -108,23 +109,13 @@ describe('flattenGroups', () => {
       ['c', 'i'],
       'g',
     );
-    const inputGone = {
-      ...d,
-      nodes: d.nodes.map((n) =>
-        n.group
-          ? {
-              ...n,
-              group: {
-                ...n.group,
-                inputs: n.group.inputs.map((p) => ({
-                  ...p,
-                  targets: p.targets.map((t) => ({ ...t, node: 'ghost' })),
-                })),
-              },
-            }
-          : n,
-      ),
-    };
+    const inputGone = withBody(
+      (b) => ({
+        ...b,
+        inputs: b.inputs.map((p) => ({ ...p, targets: p.targets.map((t) => ({ ...t, node: 'ghost' })) })),
+      }),
+      d,
+    );
     const at = inputGone.nodes.findIndex((n) => n.id === 'g');
     const inp = evaluateGraph(inputGone, registry).diagnostics.find((x) => x.code === 'KF326');
     expect(inp).toMatchObject({ nodeId: 'g', path: `nodes[${at}].group.inputs[0].targets[0].node` });
@@ -133,21 +124,7 @@ describe('flattenGroups', () => {
 
 describe('diagnostics of grouped nodes', () => {
   it('name the node’s path in the document', () => {
-    const d = grouped();
-    const bad = {
-      ...d,
-      nodes: d.nodes.map((n) =>
-        n.group
-          ? {
-              ...n,
-              group: {
-                ...n.group,
-                nodes: [{ ...n.group.nodes[0], params: { radius: -1 } }, n.group.nodes[1]],
-              },
-            }
-          : n,
-      ),
-    };
+    const bad = withBody((b) => ({ ...b, nodes: [{ ...b.nodes[0], params: { radius: -1 } }, b.nodes[1]] }));
     const problem = evaluateGraph(bad, registry).diagnostics.find((x) => x.nodeId === 'c');
     expect(problem?.path).toBe('nodes[0].group.nodes[0].params.radius');
   });

@@ -12,7 +12,7 @@ import { registry } from '../../nodes/types/index.ts';
 import { fixPatches } from '../editor/diagnostic-fix.ts';
 import { GraphEditor } from '../editor/GraphEditor.tsx';
 import { InspectorExtrasContext } from '../editor/inspector-extras.ts';
-import { scopeEvaluation } from '../editor/tools/scope-evaluation.ts';
+import { scopeDiagnostics } from '../editor/tools/scope-evaluation.ts';
 import { isTyping } from '../editor/typing.ts';
 import type { AutosaveHold } from '../state/autosave.ts';
 import { createEvaluator } from '../state/evaluation.ts';
@@ -176,7 +176,7 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
   }, []);
   // The status list is the top level's: a problem inside a group names the group and the node in it.
   const allDiagnostics = useMemo(
-    () => [...scopeEvaluation(evaluation, [], doc).diagnostics, ...renderDiagnostics],
+    () => scopeDiagnostics([...evaluation.diagnostics, ...renderDiagnostics], evaluation, [], doc),
     [evaluation, doc, renderDiagnostics],
   );
 

@@ -66,10 +66,16 @@ interface Props {
  * evaluation it sees are the open group's (tools/GroupScope.tsx), the top level when none is open.
  */
 export function GraphEditor(props: Props) {
-  const scope = useGroupScope(props.evaluation, props.frameKey);
+  const scope = useGroupScope(props.evaluation, props.frameKey, props.extraDiagnostics);
   return (
     <StoreContext.Provider value={scope.store}>
-      <GraphCanvas {...props} evaluation={scope.evaluation} frameKey={scope.frameKey} scope={scope} />
+      <GraphCanvas
+        {...props}
+        evaluation={scope.evaluation}
+        extraDiagnostics={scope.extraDiagnostics}
+        frameKey={scope.frameKey}
+        scope={scope}
+      />
     </StoreContext.Provider>
   );
 }

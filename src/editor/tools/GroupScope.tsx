@@ -4,12 +4,15 @@
  * The path is UI state, never saved; a group that disappears (undo, a loaded file) closes itself.
  */
 import { type RefObject, useCallback, useEffect, useMemo, useRef, useState } from 'react';
+import type { Diagnostic } from '../../../nodes/core/diagnostics.ts';
 import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
 import { scopeDocument } from '../../state/group-changes.ts';
 import { scopedStore } from '../../state/scoped-store.ts';
 import type { EditorStore } from '../../state/store.ts';
 import { useEditorState, useStore } from '../../state/use-store.ts';
-import { scopeEvaluation } from './scope-evaluation.ts';
+import { scopeDiagnostics, scopeEvaluation } from './scope-evaluation.ts';
+
+const NONE: readonly Diagnostic[] = [];
 
 export interface GroupScope {
   readonly path: readonly string[];
@@ -20,6 +23,8 @@ export interface GroupScope {
   readonly base: EditorStore;
   readonly store: EditorStore;
   readonly evaluation: Evaluation;
+  /** The renderer's diagnostics as shown at this level (scope-evaluation.ts scopeDiagnostics). */
+  readonly extraDiagnostics: readonly Diagnostic[];
   /** The whole document's evaluation (flattened ids), current at any moment. */
   readonly full: RefObject<Evaluation>;
   /** Changes when the level changes or a document is loaded: the graph is framed again. */
@@ -29,7 +34,11 @@ export interface GroupScope {
   goTo(depth: number): void;
 }
 
-export function useGroupScope(evaluation: Evaluation, loadKey: number): GroupScope {
+export function useGroupScope(
+  evaluation: Evaluation,
+  loadKey: number,
+  rendererDiagnostics: readonly Diagnostic[] = NONE,
+): GroupScope {
   const base = useStore();
   const doc = useEditorState((s) => s.doc);
   const [path, setPath] = useState<readonly string[]>([]);
@@ -41,6 +50,11 @@ export function useGroupScope(evaluation: Evaluation, loadKey: number): GroupSco
   }, [doc, path]);
   const store = useMemo(() => scopedStore(base, path), [base, path]);
   const scoped = useMemo(() => scopeEvaluation(evaluation, path, doc), [evaluation, path, doc]);
+  // The renderer's diagnostics name flattened ids too: inside a group they go on the group's node.
+  const extraDiagnostics = useMemo(
+    () => scopeDiagnostics(rendererDiagnostics, evaluation, path, doc),
+    [rendererDiagnostics, evaluation, path, doc],
+  );
   const full = useRef(evaluation);
   full.current = evaluation;
   const open = useCallback(
@@ -63,7 +77,19 @@ export function useGroupScope(evaluation: Evaluation, loadKey: number): GroupSco
   const list = (label: string, ps: readonly { name: string; label?: string }[]) =>
     ps.length > 0 ? [`${label}: ${ps.map((p) => p.label ?? p.name).join(', ')}`] : [];
   const ports = body ? [...list('inputs', body.inputs), ...list('outputs', body.outputs)].join(' · ') : '';
-  return { path, names, ports, base, store, evaluation: scoped, full, frameKey, open, goTo };
+  return {
+    path,
+    names,
+    ports,
+    base,
+    store,
+    evaluation: scoped,
+    extraDiagnostics,
+    full,
+    frameKey,
+    open,
+    goTo,
+  };
 }
 
 /** "Graph › Group › Inner group": each crumb but the last goes back out to its level. */

@@ -24,10 +24,27 @@ export function scopeEvaluation(
     if (local !== null && (evaluation.origin.get(id)?.length ?? 1) === path.length + 1)
       nodes.set(local, result);
   }
-  const diagnostics: Diagnostic[] = [];
-  for (const d of evaluation.diagnostics) {
-    const shown = diagnosticAtLevel(d, doc, evaluation.origin, path, registry);
-    if (shown) diagnostics.push(shown);
+  return {
+    ...evaluation,
+    nodes,
+    diagnostics: scopeDiagnostics(evaluation.diagnostics, evaluation, path, doc),
+  };
+}
+
+/**
+ * Diagnostics that name flattened ids — the evaluation's, or the renderer's (a shader problem of an
+ * element from inside a group) — as shown at the level `path`: those about nodes elsewhere are left out.
+ */
+export function scopeDiagnostics(
+  diagnostics: readonly Diagnostic[],
+  evaluation: Pick<Evaluation, 'origin'>,
+  path: readonly string[],
+  doc: Pick<GraphDoc, 'nodes'>,
+): Diagnostic[] {
+  const shown: Diagnostic[] = [];
+  for (const d of diagnostics) {
+    const at = diagnosticAtLevel(d, doc, evaluation.origin, path, registry);
+    if (at) shown.push(at);
   }
-  return { ...evaluation, nodes, diagnostics };
+  return shown;
 }

@@ -4,6 +4,7 @@ import type { GraphDoc } from '../../../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../../../nodes/graph/evaluate.ts';
 import { groupNodes } from '../../../../nodes/graph/grouping.ts';
 import { registry } from '../../../../nodes/types/index.ts';
+import { compile } from '../../../../shader-gen/compile.ts';
 import { groupSelection, ungroupSelection } from '../../../../src/editor/tools/group-actions.ts';
 import {
   insertMyGroup,
@@ -11,7 +12,7 @@ import {
   readMyGroups,
   saveMyGroup,
 } from '../../../../src/editor/tools/my-groups.ts';
-import { scopeEvaluation } from '../../../../src/editor/tools/scope-evaluation.ts';
+import { scopeDiagnostics, scopeEvaluation } from '../../../../src/editor/tools/scope-evaluation.ts';
 import { applyChange } from '../../../../src/state/changes.ts';
 import { doc, edge, node } from '../../../nodes/support/doc.ts';
 
@@ -64,6 +65,28 @@ describe('My groups', () => {
     expect(ungroupSelection(after, new Set(['a']))).toBeNull();
     expect(applyChange(after, ungroupSelection(after, new Set(['group1']))!, registry)).toEqual(d);
     expect(groupSelection(d, new Set())).toBeNull();
+  });
+});
+
+describe('scopeDiagnostics', () => {
+  it('a renderer diagnostic about a node inside a group shows on the group at the top, on the node inside', () => {
+    // A circle beyond the GPU's float range inside g: the compiler's KF405 names the flattened node.
+    const d = groupNodes(
+      doc(
+        [node('c', 'circle', { radius: 1e30 }), node('i', 'inversion'), node('out', 'render')],
+        [edge('e1', 'c.circle', 'i.circle'), edge('e2', 'i.element', 'out.elements')],
+      ),
+      ['c', 'i'],
+      'g',
+    );
+    const ev = evaluateGraph(d, registry);
+    const fromRenderer = compile(ev.scene).diagnostics.filter((x) => x.code === 'KF405');
+    expect(fromRenderer).toHaveLength(1);
+    const flatId = fromRenderer[0].nodeId!;
+    const top = scopeDiagnostics(fromRenderer, ev, [], d);
+    expect(top).toMatchObject([{ code: 'KF405', nodeId: 'g' }]);
+    expect(top[0].message).toMatch(new RegExp(`^in group ‘Group’ \\(g\\) → node ‘[^’]+’ \\(${flatId}\\): `));
+    expect(scopeDiagnostics(fromRenderer, ev, ['g'], d)).toMatchObject([{ code: 'KF405', nodeId: flatId }]);
   });
 });
 

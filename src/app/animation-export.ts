@@ -1,7 +1,8 @@
 /**
  * "Export animation…": frame i is the graph evaluated at t = i/fps (nodes/graph/frame-times.ts)
  * and rendered like the PNG export — tiled on the GPU at the full sample count, never a screen
- * capture — then handed in order to the file's encoder (animation-encoders.ts).
+ * capture — then handed in order to the file's encoder (animation-encoders.ts). A video source is
+ * sought to t (modulo its length) before each frame, so the video plays in the file.
  */
 import { hasErrors } from '../../nodes/core/diagnostics.ts';
 import type { View } from '../../nodes/core/scene.ts';
@@ -9,6 +10,7 @@ import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { frameTime } from '../../nodes/graph/frame-times.ts';
 import { registry } from '../../nodes/types/index.ts';
+import { liveMedia } from '../viewport/live-media.ts';
 import type { Viewport } from '../viewport/viewport.ts';
 import { ANIMATION_FORMATS, type AnimationFormat } from './animation-formats.ts';
 import { scaleEdges } from './export.ts';
@@ -42,6 +44,8 @@ export async function recordAnimation(
       const evaluation = evaluateGraph(doc, registry, { time });
       if (hasErrors(evaluation.diagnostics))
         throw new Error(`at t = ${time.toFixed(3)} s the graph has errors`);
+      // A video shows its frame at this time (a camera shows what it sees now).
+      await liveMedia.seekVideos(time);
       const pixels = await viewport.renderToPixels({
         width: o.width,
         height: o.height,
@@ -59,6 +63,7 @@ export async function recordAnimation(
     finished = true;
     return bytes;
   } finally {
+    liveMedia.followClock();
     if (!finished) await sink.cancel().catch(() => undefined);
   }
 }

@@ -121,6 +121,35 @@ export class LiveMedia {
     for (const [id, s] of this.sources) if (id !== 'webcam') this.follow(s);
   }
 
+  /**
+   * For an export: every video is paused at timeline time t (t modulo its length) and this resolves
+   * once each shows that frame, so frame i of an animation draws the video at i / fps. A video that
+   * does not finish seeking within SEEK_WAIT_MS is drawn as it stands. `followClock` hands the
+   * videos back to the timeline afterwards.
+   */
+  async seekVideos(time: number): Promise<void> {
+    const seeks: Promise<void>[] = [];
+    for (const [id, s] of this.sources) {
+      const v = s.video;
+      if (id === 'webcam' || !v || s.state.status !== 'live') continue;
+      if (!v.paused) v.pause();
+      const t = timelinePosition(time, v.duration);
+      if (t === null) continue;
+      // A new serial: the seeked frame is uploaded even if no video frame callback reports it.
+      seeks.push(
+        seekTo(v, t).then(() => {
+          s.frames++;
+        }),
+      );
+    }
+    await Promise.all(seeks);
+  }
+
+  /** The videos follow the timeline's clock again (or play in real time), as before an export. */
+  followClock(): void {
+    this.setClock(this.clock);
+  }
+
   private follow(s: Source): void {
     const v = s.video;
     if (!v || s.state.status !== 'live') return;
@@ -187,6 +216,25 @@ export class LiveMedia {
 export function timelinePosition(time: number, duration: number): number | null {
   if (!(Number.isFinite(duration) && duration > 0 && Number.isFinite(time))) return null;
   return ((time % duration) + duration) % duration;
+}
+
+/** How long an export waits for one video to seek before drawing it as it stands. */
+const SEEK_WAIT_MS = 3000;
+
+/** Sets the video to `t` seconds and resolves when it shows that frame (or after SEEK_WAIT_MS). */
+function seekTo(video: HTMLVideoElement, t: number): Promise<void> {
+  const there = Math.abs(video.currentTime - t) < 1e-6 && !video.seeking;
+  if (there && video.readyState >= HTMLMediaElement.HAVE_CURRENT_DATA) return Promise.resolve();
+  return new Promise<void>((resolve) => {
+    const done = () => {
+      clearTimeout(timer);
+      video.removeEventListener('seeked', done);
+      resolve();
+    };
+    const timer = setTimeout(done, SEEK_WAIT_MS);
+    video.addEventListener('seeked', done);
+    video.currentTime = t;
+  });
 }
 
 /**

@@ -4,14 +4,16 @@
  * webcam document asks for nothing on load; "Start camera" makes the kaleidoscope follow the
  * camera frame by frame with no recompile; a denied camera leaves a node message and the fallback
  * picture; a video recorded in the page from the fake camera plays from the inspector's file input
- * and follows the animation time.
+ * and follows the animation time, and Export animation draws it frame by frame.
  */
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { BrowserContext, Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { countGifFrames, gifFrameBlocks } from '../../src/io/gif.ts';
 import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
 import { nodeEl, renderPixels } from './editor-page.ts';
+import { menu } from './io-page.ts';
 
 let app: ServedApp;
 const EXAMPLE = JSON.parse(
@@ -212,6 +214,28 @@ describe('video file', () => {
     await page.evaluate((t) => window.__kleinflow!.store.setTime(t), 0.3 + 2 * duration);
     await expect.poll(async () => (await videoAt())?.time ?? -1).toBeCloseTo(0.3, 1);
     expect((await stats(page)).compiles).toBe(before.compiles);
+
+    // Export animation plays the video in the file: frame i shows it at t = i / fps (the graph
+    // itself does not move: only the video makes the frames differ). Afterwards it follows the
+    // timeline again.
+    await menu(page, 'Export', 'Animation');
+    const dialog = page.getByRole('dialog', { name: 'Export animation' });
+    await dialog.locator('#kf-anim-format[data-checked="true"]').waitFor();
+    await dialog.getByLabel('Format').selectOption('gif');
+    await dialog.getByLabel('Width in pixels').fill('48');
+    await dialog.getByLabel('Height in pixels').fill('48');
+    await dialog.getByLabel('Frames/s').fill('4');
+    await dialog.getByLabel('Samples').fill('1');
+    await dialog.getByLabel('Duration in seconds').fill('1');
+    const [download] = await Promise.all([
+      page.waitForEvent('download', { timeout: 90_000 }),
+      dialog.getByRole('button', { name: 'Export 4 frames' }).click(),
+    ]);
+    const gif = new Uint8Array(readFileSync((await download.path())!));
+    expect(countGifFrames(gif)).toBe(4);
+    const distinct = new Set(gifFrameBlocks(gif).map((b) => Buffer.from(b).toString('base64')));
+    expect(distinct.size).toBe(4);
+    await expect.poll(async () => (await videoAt())?.time ?? -1).toBeCloseTo(0.3, 1);
     await context.close();
-  }, 120_000);
+  }, 180_000);
 });

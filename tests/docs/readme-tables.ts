@@ -1,11 +1,11 @@
 /**
  * The README's generated tables — the node reference (from the registry), the keyboard
- * shortcuts (from src/app/shortcuts.ts) and the Help's quick start (src/app/help/quick-start.ts) — so the documentation cannot drift from the code.
+ * shortcuts (from src/app/shortcuts.ts) and the Help's quick starts (src/app/help/quick-start.ts) — so the documentation cannot drift from the code.
  * `UPDATE_README=1 npx vitest run tests/docs` rewrites them in place.
  */
 import type { NodeDef } from '../../nodes/core/define-node.ts';
 import { registry } from '../../nodes/types/index.ts';
-import { QUICK_START } from '../../src/app/help/quick-start.ts';
+import { QUICK_START, QUICK_START_3D, type QuickStep } from '../../src/app/help/quick-start.ts';
 import { SHORTCUTS } from '../../src/app/shortcuts.ts';
 
 const cell = (s: string) => s.replace(/\|/g, '\\|');
@@ -38,10 +38,12 @@ export function shortcutTable(): string {
   return rows.join('\n');
 }
 
-/** The Help dialog's five-step quick start, as a numbered list. */
-export function quickStartList(): string {
-  return QUICK_START.map((s, i) => `${i + 1}. **${s.title}.** ${s.detail}`).join('\n');
+/** One of the Help dialog's quick starts (the 2D one by default), as a numbered list. */
+export function quickStartList(steps: readonly QuickStep[] = QUICK_START): string {
+  return steps.map((s, i) => `${i + 1}. **${s.title}.** ${s.detail}`).join('\n');
 }
+
+export const quickStart3dList = (): string => quickStartList(QUICK_START_3D);
 
 /** Replaces the text between `<!-- NAME:begin -->` and `<!-- NAME:end -->`. */
 export function replaceSection(text: string, name: string, body: string): string {

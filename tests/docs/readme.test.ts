@@ -1,17 +1,25 @@
 import { readFileSync, writeFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { registry } from '../../nodes/types/index.ts';
-import { nodeReference, quickStartList, replaceSection, shortcutTable } from './readme-tables.ts';
+import {
+  nodeReference,
+  quickStart3dList,
+  quickStartList,
+  replaceSection,
+  shortcutTable,
+} from './readme-tables.ts';
 
 const README = new URL('../../README.md', import.meta.url);
 
 describe('README stays true to the code', () => {
   const text = readFileSync(README, 'utf8');
-  const expected = replaceSection(
-    replaceSection(replaceSection(text, 'nodes', nodeReference()), 'shortcuts', shortcutTable()),
-    'quickstart',
-    quickStartList(),
-  );
+  const sections: [string, string][] = [
+    ['nodes', nodeReference()],
+    ['shortcuts', shortcutTable()],
+    ['quickstart', quickStartList()],
+    ['quickstart3d', quickStart3dList()],
+  ];
+  const expected = sections.reduce((t, [name, body]) => replaceSection(t, name, body), text);
   const updating = process.env.UPDATE_README === '1';
   if (updating && expected !== text) writeFileSync(README, expected);
   const final = updating ? expected : text;

@@ -45,12 +45,15 @@ describe.each(SERVERS)('Help and dialogs — %s', (_name, serve) => {
     expect(await help().isVisible()).toBe(true);
     for (const heading of [
       'Your first kaleidoscope in five steps',
+      'Your first 3D picture in four steps',
       'Examples to open',
       'Socket colours',
       'Keyboard shortcuts',
     ])
       expect(await help().getByRole('heading', { name: heading }).isVisible()).toBe(true);
-    expect(await help().locator('.kf-help__steps li').count()).toBe(5);
+    const steps = help().locator('.kf-help__steps');
+    expect(await steps.nth(0).locator('li').count()).toBe(5);
+    expect(await steps.nth(1).locator('li').count()).toBe(4);
     await page.keyboard.press('Escape');
     await help().waitFor({ state: 'detached' });
   });

@@ -1,12 +1,12 @@
 /**
- * Help: the one-minute quick start, the guided walkthrough, a few examples to open, what the socket
- * colours mean, and the keyboard shortcuts.
+ * Help: the one-minute quick starts (2D and 3D), the guided walkthrough, a few examples to open,
+ * what the socket colours mean, and the keyboard shortcuts.
  */
 import { PORT_TYPE_INFO, PORT_TYPES } from '../../../nodes/core/ports.ts';
 import type { Example } from '../examples.ts';
 import { SHORTCUTS } from '../shortcuts.ts';
 import { useModalDialog } from '../use-modal-dialog.ts';
-import { QUICK_START } from './quick-start.ts';
+import { QUICK_START, QUICK_START_3D, type QuickStep } from './quick-start.ts';
 
 /** Examples worth opening first, by id (a missing one is skipped). */
 const STARTER_EXAMPLES = [
@@ -15,6 +15,7 @@ const STARTER_EXAMPLES = [
   'apollonian-gasket',
   'schottky-pair',
   'loxodromic-spiral',
+  'fig26-quasi-sphere',
 ];
 
 interface Props {
@@ -22,6 +23,18 @@ interface Props {
   onExample(example: Example): void;
   onWalkthrough(): void;
   onClose(): void;
+}
+
+function Steps({ steps }: { readonly steps: readonly QuickStep[] }) {
+  return (
+    <ol className="kf-help__steps">
+      {steps.map((s) => (
+        <li key={s.title}>
+          <strong>{s.title}.</strong> {s.detail}
+        </li>
+      ))}
+    </ol>
+  );
 }
 
 export function HelpDialog({ examples, onExample, onWalkthrough, onClose }: Props) {
@@ -43,16 +56,15 @@ export function HelpDialog({ examples, onExample, onWalkthrough, onClose }: Prop
 
       <section aria-labelledby="kf-help-quick">
         <h3 id="kf-help-quick">Your first kaleidoscope in five steps</h3>
-        <ol className="kf-help__steps">
-          {QUICK_START.map((s) => (
-            <li key={s.title}>
-              <strong>{s.title}.</strong> {s.detail}
-            </li>
-          ))}
-        </ol>
+        <Steps steps={QUICK_START} />
         <button type="button" className="kf-button" onClick={onWalkthrough}>
           Build a kaleidoscope from points, step by step
         </button>
+      </section>
+
+      <section aria-labelledby="kf-help-quick-3d">
+        <h3 id="kf-help-quick-3d">Your first 3D picture in four steps</h3>
+        <Steps steps={QUICK_START_3D} />
       </section>
 
       {starters.length > 0 && (

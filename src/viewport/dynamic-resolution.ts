@@ -11,6 +11,8 @@ interface Timing {
   readonly sync: WebGLSync;
   readonly start: number;
   readonly scale: number;
+  /** The program generation it timed (newProgram): an older one's time is not this program's. */
+  readonly generation: number;
 }
 
 export class DynamicResolution {
@@ -18,8 +20,10 @@ export class DynamicResolution {
   private interactiveScale = 1;
   private timing: Timing | null = null;
   private lastChangeAt = Number.NEGATIVE_INFINITY;
-  /** The latest measured frame, for the test hooks and the status line. */
+  /** The latest measured frame, for the test hooks and the status line, and the scale it had. */
   lastFrameMs = 0;
+  private lastScale = 1;
+  private generation = 0;
 
   constructor(private readonly policy: ScalePolicy = DEFAULT_SCALE_POLICY) {}
 
@@ -28,9 +32,21 @@ export class DynamicResolution {
     this.lastChangeAt = now;
   }
 
-  /** The scale to draw a frame at now: reduced while interacting, 1 once still. */
+  /**
+   * The scale to draw a frame at now: reduced while interacting, 1 once still — but before a frame
+   * of this program was timed, the smallest scale: a cheap first frame whose time predicts the
+   * full-size one (which frame-bands.ts then splits when it is slow), never a blind full-size draw.
+   */
   frameScale(now: number): number {
+    if (this.lastFrameMs === 0) return this.policy.minScale;
     return interacting(now - this.lastChangeAt, this.policy) ? this.interactiveScale : 1;
+  }
+
+  /** A new program (new generated code): its frame times are unknown until one is timed. */
+  newProgram(): void {
+    this.lastFrameMs = 0;
+    this.lastScale = 1;
+    this.generation++;
   }
 
   /** Milliseconds until the picture counts as still (0: it does). */
@@ -54,7 +70,7 @@ export class DynamicResolution {
     const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
     if (!sync) return;
     gl.flush(); // the fence must reach the GPU, or it is never signalled
-    this.timing = { sync, start, scale };
+    this.timing = { sync, start, scale, generation: this.generation };
   }
 
   /** Takes a finished timing into the interactive scale; never waits for the GPU. */
@@ -64,8 +80,15 @@ export class DynamicResolution {
     const ms = performance.now() - t.start;
     gl.deleteSync(t.sync);
     this.timing = null;
+    if (t.generation !== this.generation) return;
     this.lastFrameMs = ms;
+    this.lastScale = t.scale;
     this.interactiveScale = nextRenderScale(this.interactiveScale, { ms, scale: t.scale }, this.policy);
+  }
+
+  /** The predicted time of a frame at `scale` from the latest measured one (render-scale.ts model); 0 before any. */
+  predictedMs(scale: number): number {
+    return this.lastFrameMs > 0 ? this.lastFrameMs * (scale / this.lastScale) ** 2 : 0;
   }
 
   /** The context was lost: its sync object went with it. */

@@ -15,6 +15,11 @@ export interface ViewportOptions {
   onFrame?(info: { samples: number; target: number; ms: number; scale: number }): void;
   /** Stillness before the baked program is built (default 600; Infinity: never bake). */
   idleBakeMs?: number;
+  /**
+   * A full-size 3D sample predicted slower than this is drawn in bands of about this long, one per
+   * animation frame (frame-bands.ts; default BAND_MS; Infinity: never).
+   */
+  bandMs?: number;
 }
 
 export interface ViewportStats {
@@ -36,6 +41,8 @@ export interface ViewportStats {
   readonly renderSize: { readonly width: number; readonly height: number };
   /** The 3D pane's scale for interactive frames, from the measured frame times (render-scale.ts). */
   readonly interactiveScale: number;
+  /** The bands the last full sample was drawn in (1: in one draw; frame-bands.ts). */
+  readonly bands: number;
 }
 
 export interface RenderToPixelsOptions {

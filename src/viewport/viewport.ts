@@ -6,7 +6,8 @@
  * several times faster) takes over until the next edit. Compile errors keep the last good frame on
  * screen and are reported with node ids. A lost WebGL context is rebuilt when the browser restores it.
  * A 3D scene is drawn at a reduced resolution while it changes (dynamic-resolution.ts) and again at
- * full size once still; a 2D scene always at full size.
+ * full size once still, in bands over several animation frames when one sample would be slow
+ * (frame-bands.ts); a 2D scene always at full size, whole.
  */
 import { sameCamera3d } from '../../nodes/core/camera-3d.ts';
 import type { Camera3d } from '../../nodes/core/scene-3d.ts';
@@ -14,6 +15,7 @@ import { DEFAULT_VIEW, type View } from '../../nodes/core/view.ts';
 import { sampleOffset } from '../../shader-gen/view.ts';
 import { type Drawable, is3d } from './drawable.ts';
 import { DynamicResolution } from './dynamic-resolution.ts';
+import { BAND_MS, BandFence, bandCount, bandRows } from './frame-bands.ts';
 import { liveMedia } from './live-media.ts';
 import { refreshLive } from './live-textures.ts';
 import { inspectCssPoint, type PixelInspection } from './pixel-probe.ts';
@@ -55,6 +57,10 @@ export class Viewport {
   private readonly dynamic = new DynamicResolution();
   private drawnScale = 1;
   private drawnSize = { width: 0, height: 0 };
+  /** A full-size 3D sample being drawn band by band (frame-bands.ts): its index, the next band, how many. */
+  private band: { readonly k: number; next: number; readonly count: number } | null = null;
+  private lastBands = 1;
+  private readonly bandFence = new BandFence();
   /** The next frame starts the accumulation afresh (until then the old picture stays). */
   private restartPending = true;
   /** When the previous frame was drawn, or when the change that restarts the picture came. */
@@ -94,6 +100,8 @@ export class Viewport {
       this.accum = null;
       this.active = null;
       this.restartPending = true;
+      this.band = null;
+      this.bandFence.clear(null);
       this.dynamic.forget();
     };
     const onRestored = () => {
@@ -131,6 +139,7 @@ export class Viewport {
       renderScale: this.drawnScale,
       renderSize: { ...this.drawnSize },
       interactiveScale: this.dynamic.scale,
+      bands: this.lastBands,
     };
   }
 
@@ -236,6 +245,7 @@ export class Viewport {
     this.stopLoop();
     this.detach();
     if (this.renderer) {
+      this.bandFence.clear(this.gl);
       disposeTarget(this.gl, this.accum);
       this.renderer.dispose();
     }
@@ -302,6 +312,7 @@ export class Viewport {
         // A scene that does not compile leaves active null: nothing is drawn, the last frame stays.
         this.active = this.programs.current();
         this.dynamic.changed(now);
+        if (change === 'code') this.dynamic.newProgram();
         if (!this.restartPending) this.frameClock = this.sceneSetAt;
         this.restartPending = true;
       }
@@ -311,9 +322,12 @@ export class Viewport {
     if (this.active && this.refreshLiveFrames(renderer, this.active.pictures)) this.restartPending = true;
     const target = Math.max(1, scene.samples);
     const scale = this.frameScale(scene, now);
-    // A reduced picture is a preview: once still, it is drawn again at full size.
-    if (this.drawnScale < 1 && scale === 1) this.restartPending = true;
-    if (this.active && (this.restartPending || (this.samplesDone < target && this.drawnScale === 1))) {
+    // A reduced picture is a preview: once still, it is drawn again at full size (maybe in bands).
+    if (this.drawnScale < 1 && scale === 1 && !this.band) this.restartPending = true;
+    // While the GPU draws a band nothing else is submitted (frame-bands.ts BandFence).
+    const waiting = this.bandFence.busy(this.gl);
+    const due = this.restartPending || this.band || (this.samplesDone < target && this.drawnScale === 1);
+    if (!waiting && this.active && due) {
       this.drawFrame(renderer, this.active, scene, target, scale);
     }
     this.schedule(now, target);
@@ -341,10 +355,17 @@ export class Viewport {
       this.accum = createTarget(this.gl, width, height, 'accumulation');
       this.restartPending = true;
     }
-    const k = this.restartPending ? 0 : this.samplesDone;
+    // A change abandons a sample drawn in bands: the next one starts afresh.
+    if (this.restartPending) this.band = null;
+    const k = this.band?.k ?? (this.restartPending ? 0 : this.samplesDone);
     this.restartPending = false;
     // A reduced frame fills the accumulation buffer's corner and is stretched over the canvas.
     const drawn = scaledSize(width, height, scale);
+    if (!this.band) {
+      const slow = is3d(scene) && scale === 1 ? this.dynamic.predictedMs(1) : 0;
+      this.band = { k, next: 0, count: bandCount(slow, drawn.height, this.options.bandMs ?? BAND_MS) };
+    }
+    const band = this.band;
     const frame = {
       width: drawn.width,
       height: drawn.height,
@@ -357,12 +378,25 @@ export class Viewport {
     };
     const start = this.dynamic.begin();
     const { gp, uniforms, pictures } = program;
+    if (band.count > 1) {
+      // This band's rows only (a scissored clear and draw); the canvas keeps the last whole sample.
+      const [y0, y1] = bandRows(band.next, band.count, drawn.height);
+      this.gl.enable(this.gl.SCISSOR_TEST);
+      this.gl.scissor(0, y0, drawn.width, y1 - y0);
+    }
     renderer.drawSample(gp, uniforms, this.accum, drawn.width, drawn.height, frame, k, pictures);
+    this.gl.disable(this.gl.SCISSOR_TEST);
+    band.next++;
+    if (band.count > 1) this.bandFence.set(this.gl);
+    if (band.next < band.count) return;
+    this.band = null;
+    this.lastBands = band.count;
     this.samplesDone = k + 1;
     this.drawnScale = scale;
     this.drawnSize = drawn;
     renderer.present(this.accum, this.samplesDone, width, height, drawn);
-    if (is3d(scene)) this.dynamic.end(this.gl, start, scale);
+    // Only a sample drawn whole is timed (the model needs whole frames).
+    if (is3d(scene) && band.count === 1) this.dynamic.end(this.gl, start, scale);
     this.framesDrawn++;
     const now = performance.now();
     const samples = scale < 1 ? 0 : this.samplesDone;
@@ -372,13 +406,15 @@ export class Viewport {
 
   /** Keeps the loop running while there is work; sleeps (no frames at all) until the bake is due. */
   private schedule(now: number, target: number): void {
-    const more = this.restartPending || (this.samplesDone < target && this.drawnScale === 1);
+    const more =
+      this.restartPending || this.band !== null || (this.samplesDone < target && this.drawnScale === 1);
     const drawing = this.active !== null && more;
     // A timed 3D frame is polled each animation frame until its fence is signalled.
     if (
       this.sceneDirty ||
       drawing ||
       this.liveRunning ||
+      this.bandFence.pending ||
       this.programs.bakeInFlight() ||
       this.dynamic.measuring
     ) {

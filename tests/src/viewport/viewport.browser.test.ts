@@ -5,7 +5,9 @@
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Scene, View } from '../../../nodes/core/scene.ts';
+import type { Scene3d } from '../../../nodes/core/scene-3d.ts';
 import { rasterize } from '../../../shader-gen/raster.ts';
+import { FIG11 } from '../../shader-gen/space/scenes-3d.ts';
 import { circlesScene, colourCount, compareImages, exampleScene } from './fixtures.ts';
 import { decode, type HarnessPage, openHarness } from './page/open-page.ts';
 import type { Quirks } from './page/viewport-page.ts';
@@ -23,14 +25,21 @@ afterAll(async () => {
 });
 
 const NO_BAKE = Number.POSITIVE_INFINITY;
-const create = (w: number, ht: number, idleBakeMs = NO_BAKE, quirks: Partial<Quirks> = {}) =>
-  page.evaluate(([w, ht, idle, q]) => window.kfViewport.create(w, ht, idle, q), [
+const create = (
+  w: number,
+  ht: number,
+  idleBakeMs = NO_BAKE,
+  quirks: Partial<Quirks> = {},
+  bandMs: number | undefined = undefined,
+) =>
+  page.evaluate(([w, ht, idle, q, b]) => window.kfViewport.create(w, ht, idle, q, b), [
     w,
     ht,
     idleBakeMs,
     quirks,
+    bandMs,
   ] as const);
-const setScene = (s: Scene) => page.evaluate((s) => window.kfViewport.setScene(s), s);
+const setScene = (s: Scene | Scene3d) => page.evaluate((s) => window.kfViewport.setScene(s), s);
 const setView = (v: View) => page.evaluate((v) => window.kfViewport.setView(v), v);
 const stats = () => page.evaluate(() => window.kfViewport.stats());
 const snapshot = async () => decode(await page.evaluate(() => window.kfViewport.snapshot()));
@@ -236,6 +245,28 @@ describe('Viewport', () => {
       (await page.evaluate(() => window.kfViewport.completionQueries())) - queriesBefore,
     ).toBeGreaterThanOrEqual(3);
     expect(await stats()).toMatchObject({ compiles: 1, bakedCompiles: 1, baked: true });
+    expect(h.errors).toEqual([]);
+  });
+});
+
+describe('Viewport: a slow full-size 3D sample is drawn in bands (frame-bands.ts)', () => {
+  it('draws the same picture band by band as in one draw, and counts a sample once it is whole', async () => {
+    const scene: Scene3d = { ...FIG11, samples: 4 };
+    await create(64, 48, NO_BAKE, {}, Number.POSITIVE_INFINITY); // never in bands
+    await setScene(scene);
+    await settle(4);
+    const whole = await snapshot();
+    const wholeStats = await stats();
+    expect(wholeStats.bands).toBe(1);
+    // Any predicted time is "slow": once a frame is timed, every later sample is drawn in bands.
+    await create(64, 48, NO_BAKE, {}, 1e-6);
+    await setScene(scene);
+    await settle(4);
+    const s = await stats();
+    expect(s.bands).toBeGreaterThan(1);
+    // A frame per whole sample, not per band (and the first, reduced frame that timed the program).
+    expect(s.frames).toBe(wholeStats.frames);
+    expect(compareImages(await snapshot(), whole, 1).offShare).toBe(0);
     expect(h.errors).toEqual([]);
   });
 });

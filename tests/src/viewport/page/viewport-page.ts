@@ -5,6 +5,7 @@
  */
 import type { Diagnostic } from '../../../../nodes/core/diagnostics.ts';
 import type { Scene, View } from '../../../../nodes/core/scene.ts';
+import type { Scene3d } from '../../../../nodes/core/scene-3d.ts';
 import { Renderer } from '../../../../src/viewport/renderer.ts';
 import { attachPanZoom, type RenderToPixelsOptions, Viewport } from '../../../../src/viewport/viewport.ts';
 
@@ -81,13 +82,20 @@ const harness = {
   diagnostics,
   frameLog,
   completionQueries: () => completionQueries,
-  create(width: number, height: number, idleBakeMs = 600, withQuirks: Partial<Quirks> = {}): void {
+  create(
+    width: number,
+    height: number,
+    idleBakeMs = 600,
+    withQuirks: Partial<Quirks> = {},
+    bandMs: number | undefined = undefined,
+  ): void {
     vp?.dispose();
     Object.assign(quirks, { noFloatBlend: false, parallelCompile: false }, withQuirks);
     diagnostics.length = 0;
     frameLog.length = 0;
     vp = new Viewport(canvas, {
       idleBakeMs,
+      bandMs,
       onDiagnostics: (d) => diagnostics.push(d),
       onFrame: (info) => {
         frameLog.push({ ...info, baked: vp!.stats.baked });
@@ -101,8 +109,8 @@ const harness = {
     });
     vp.setSize(width, height, 1);
   },
-  setScene(scene: Scene): void {
-    view = scene.view;
+  setScene(scene: Scene | Scene3d): void {
+    if ('view' in scene) view = scene.view;
     vp!.setScene(scene);
   },
   setView(v: View): void {

@@ -75,7 +75,7 @@ function expandOneLevel(
   };
   /** Per group id: inner id → flat id; exposed input → flat targets; exposed output → flat source. */
   const inputs = new Map<string, Map<string, PortRef[]>>();
-  const outputs = new Map<string, Map<string, PortRef>>();
+  const outputs = new Map<string, Map<string, PortRef | null>>();
   const outNodes: GraphNode[] = [];
   const innerEdges: GraphEdge[] = [];
   for (const node of nodes) {
@@ -126,35 +126,33 @@ function expandOneLevel(
       }),
     ]);
     inputs.set(node.id, new Map(exposedInputs));
-    const outs = new Map<string, PortRef>();
+    // Every exposed output, null where it names a missing inner node (reported just here).
+    const outs = new Map<string, PortRef | null>();
     for (const [i, p] of body.outputs.entries()) {
       const from = ref(p.from);
-      if (from) outs.set(p.name, from);
-      else missing(`.group.outputs[${i}].from.node`, p.name, p.from.node);
+      outs.set(p.name, from);
+      if (!from) missing(`.group.outputs[${i}].from.node`, p.name, p.from.node);
     }
     outputs.set(node.id, outs);
   }
+  /** A wire to or from a port its group does not expose: dropped, and said at the wire's port. */
+  const unexposed = (e: GraphEdge, end: 'source' | 'target') => {
+    const ref = end === 'source' ? e.from : e.to;
+    origins.problems.push({
+      kind: 'edges',
+      path: origins.edges.get(e.id) ?? [e.id],
+      rest: `.${end === 'source' ? 'from' : 'to'}.port`,
+      make: (at) => diag('unknownPort', { path: at, nodeId: ref.node }, end, ref.port, ref.node),
+    });
+  };
   const outEdges: GraphEdge[] = [];
   for (const e of edges) {
-    const from = outputs.has(e.from.node) ? outputs.get(e.from.node)!.get(e.from.port) : e.from;
-    const targets = inputs.has(e.to.node) ? (inputs.get(e.to.node)!.get(e.to.port) ?? []) : [e.to];
-    // A wire to or from a port the group does not expose has nothing to stand for: it is dropped,
-    // and said (a port that is exposed but names a missing inner node was reported above).
-    const unexposed = (end: 'source' | 'target', ref: PortRef, ports: readonly { name: string }[]) => {
-      if (ports.some((p) => p.name === ref.port)) return;
-      const field = end === 'source' ? 'from' : 'to';
-      origins.problems.push({
-        kind: 'edges',
-        path: origins.edges.get(e.id) ?? [e.id],
-        rest: `.${field}.port`,
-        make: (at) => diag('unknownPort', { path: at, nodeId: ref.node }, end, ref.port, ref.node),
-      });
-    };
-    const groupOf = (id: string) => nodes.find((n) => n.id === id)?.group;
-    const fromGroup = outputs.has(e.from.node) ? groupOf(e.from.node) : undefined;
-    const toGroup = inputs.has(e.to.node) ? groupOf(e.to.node) : undefined;
-    if (fromGroup) unexposed('source', e.from, fromGroup.outputs);
-    if (toGroup) unexposed('target', e.to, toGroup.inputs);
+    const groupOut = outputs.get(e.from.node);
+    const groupIn = inputs.get(e.to.node);
+    if (groupOut && !groupOut.has(e.from.port)) unexposed(e, 'source');
+    if (groupIn && !groupIn.has(e.to.port)) unexposed(e, 'target');
+    const from = groupOut ? groupOut.get(e.from.port) : e.from;
+    const targets = groupIn ? (groupIn.get(e.to.port) ?? []) : [e.to];
     if (!from) continue;
     targets.forEach((to, k) => {
       const id = k === 0 && targets.length === 1 ? e.id : fresh(`${e.id}>${k}`, e.id);

@@ -198,7 +198,10 @@ export type AnyScene =
   | { readonly kind: '3d'; readonly scene3d: Scene3d };
 
 /** For commands that work on 2D and 3D graphs alike (sample): see loadChecked. */
-export async function loadAnyScene(io: CliIo, path: string): Promise<GraphLoad & { picture: AnyScene }> {
+export async function loadAnyScene(
+  io: CliIo,
+  path: string,
+): Promise<GraphLoad & { evaluation: Evaluation; picture: AnyScene }> {
   const load = await loadChecked(io, path);
   const { scene, scene3d } = load.evaluation;
   if (scene3d) return { ...load, picture: { kind: '3d', scene3d } };

@@ -5,10 +5,11 @@
  * frames that are fast anyway). One frame is timed at a time, so a measurement never includes a
  * queue of earlier frames. Keeps the interactive scale and when the picture last changed.
  */
+import { GpuFence } from './gpu-fence.ts';
 import { DEFAULT_SCALE_POLICY, interacting, nextRenderScale, type ScalePolicy } from './render-scale.ts';
 
 interface Timing {
-  readonly sync: WebGLSync;
+  readonly fence: GpuFence;
   readonly start: number;
   readonly scale: number;
   /** The program generation it timed (newProgram): an older one's time is not this program's. */
@@ -67,18 +68,16 @@ export class DynamicResolution {
   /** Call after a frame's draw calls: times it unless another timed frame is still running. */
   end(gl: WebGL2RenderingContext, start: number, scale: number): void {
     if (this.timing) return;
-    const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
-    if (!sync) return;
-    gl.flush(); // the fence must reach the GPU, or it is never signalled
-    this.timing = { sync, start, scale, generation: this.generation };
+    const fence = new GpuFence();
+    if (!fence.set(gl)) return;
+    this.timing = { fence, start, scale, generation: this.generation };
   }
 
   /** Takes a finished timing into the interactive scale; never waits for the GPU. */
   poll(gl: WebGL2RenderingContext): void {
     const t = this.timing;
-    if (!t || gl.getSyncParameter(t.sync, gl.SYNC_STATUS) !== gl.SIGNALED) return;
+    if (!t || t.fence.waiting(gl)) return;
     const ms = performance.now() - t.start;
-    gl.deleteSync(t.sync);
     this.timing = null;
     if (t.generation !== this.generation) return;
     this.lastFrameMs = ms;

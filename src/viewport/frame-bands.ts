@@ -26,37 +26,3 @@ export function bandCount(predictedMs: number, rows: number, bandMs: number = BA
 export function bandRows(i: number, n: number, rows: number): readonly [number, number] {
   return [Math.floor((i * rows) / n), Math.floor(((i + 1) * rows) / n)];
 }
-
-/**
- * At most one band in flight. The animation frame loop does not wait for the GPU, so without this
- * every band would be queued at once and the GPU (and the page's compositor behind it) would be
- * as busy as with one big draw: the next band is submitted only once the last one has finished.
- */
-export class BandFence {
-  private sync: WebGLSync | null = null;
-
-  /** After a band's draw calls: marks them and sends them to the GPU. */
-  set(gl: WebGL2RenderingContext): void {
-    this.clear(gl);
-    this.sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
-    gl.flush();
-  }
-
-  /** Whether the GPU is still drawing the last band (never waits for it). */
-  busy(gl: WebGL2RenderingContext): boolean {
-    if (!this.sync) return false;
-    if (gl.getSyncParameter(this.sync, gl.SYNC_STATUS) !== gl.SIGNALED) return true;
-    this.clear(gl);
-    return false;
-  }
-
-  get pending(): boolean {
-    return this.sync !== null;
-  }
-
-  /** Deletes the fence (dispose), or after a lost context, where it died with it, just drops it. */
-  clear(gl: WebGL2RenderingContext | null): void {
-    if (this.sync && gl) gl.deleteSync(this.sync);
-    this.sync = null;
-  }
-}

@@ -15,7 +15,8 @@ import { DEFAULT_VIEW, type View } from '../../nodes/core/view.ts';
 import { sampleOffset } from '../../shader-gen/view.ts';
 import { type Drawable, is3d } from './drawable.ts';
 import { DynamicResolution } from './dynamic-resolution.ts';
-import { BAND_MS, BandFence, bandCount, bandRows } from './frame-bands.ts';
+import { BAND_MS, bandCount, bandRows } from './frame-bands.ts';
+import { GpuFence } from './gpu-fence.ts';
 import { liveMedia } from './live-media.ts';
 import { refreshLive } from './live-textures.ts';
 import { inspectCssPoint, type PixelInspection } from './pixel-probe.ts';
@@ -60,7 +61,12 @@ export class Viewport {
   /** A full-size 3D sample being drawn band by band (frame-bands.ts): its index, the next band, how many. */
   private band: { readonly k: number; next: number; readonly count: number } | null = null;
   private lastBands = 1;
-  private readonly bandFence = new BandFence();
+  /**
+   * At most one band in flight: the frame loop does not wait for the GPU, so without this every band
+   * would be queued at once and the GPU (and the page's compositor behind it) be as busy as with one
+   * big draw. The next band is sent once the GPU has finished the last.
+   */
+  private readonly bandFence = new GpuFence();
   /** The next frame starts the accumulation afresh (until then the old picture stays). */
   private restartPending = true;
   /** When the previous frame was drawn, or when the change that restarts the picture came. */
@@ -324,8 +330,8 @@ export class Viewport {
     const scale = this.frameScale(scene, now);
     // A reduced picture is a preview: once still, it is drawn again at full size (maybe in bands).
     if (this.drawnScale < 1 && scale === 1 && !this.band) this.restartPending = true;
-    // While the GPU draws a band nothing else is submitted (frame-bands.ts BandFence).
-    const waiting = this.bandFence.busy(this.gl);
+    // While the GPU draws a band nothing else is submitted.
+    const waiting = this.bandFence.waiting(this.gl);
     const due = this.restartPending || this.band || (this.samplesDone < target && this.drawnScale === 1);
     if (!waiting && this.active && due) {
       this.drawFrame(renderer, this.active, scene, target, scale);
@@ -378,16 +384,19 @@ export class Viewport {
     };
     const start = this.dynamic.begin();
     const { gp, uniforms, pictures } = program;
-    if (band.count > 1) {
+    const banded = band.count > 1;
+    if (banded) {
       // This band's rows only (a scissored clear and draw); the canvas keeps the last whole sample.
       const [y0, y1] = bandRows(band.next, band.count, drawn.height);
       this.gl.enable(this.gl.SCISSOR_TEST);
       this.gl.scissor(0, y0, drawn.width, y1 - y0);
     }
     renderer.drawSample(gp, uniforms, this.accum, drawn.width, drawn.height, frame, k, pictures);
-    this.gl.disable(this.gl.SCISSOR_TEST);
+    if (banded) {
+      this.gl.disable(this.gl.SCISSOR_TEST);
+      this.bandFence.set(this.gl);
+    }
     band.next++;
-    if (band.count > 1) this.bandFence.set(this.gl);
     if (band.next < band.count) return;
     this.band = null;
     this.lastBands = band.count;

@@ -43,13 +43,14 @@ export const glslCommand: CliCommand = {
     if (parsed.options.shadertoy && parsed.options.probe) {
       throw new CliError('--shadertoy and --probe cannot be combined', EXIT.usage, true);
     }
-    const { picture, doc } = await loadAnyScene(io, graphPath);
+    const { picture, doc, evaluation } = await loadAnyScene(io, graphPath);
     const flavour = parsed.options.shadertoy ? 'shadertoy' : parsed.options.probe ? 'probe' : 'webgl2';
     const { source, diagnostics } = standaloneShader(
       picture.kind === '3d' ? picture.scene3d : picture.scene,
       flavour,
     );
-    for (const d of diagnostics) io.stderr.write(`${graphPath}: ${formatDiagnostic(d, doc)}\n`);
+    for (const d of diagnostics)
+      io.stderr.write(`${graphPath}: ${formatDiagnostic(d, doc, evaluation.origin)}\n`);
     const output = stringOption(parsed, 'output');
     if (output === undefined) io.stdout.write(source);
     else {

@@ -17,7 +17,6 @@ let page: Page;
 
 beforeAll(async () => {
   ({ app, page } = await openSmall3dPane());
-  await waitRendered(page);
 }, 180_000);
 
 afterAll(async () => {

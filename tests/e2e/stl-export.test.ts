@@ -9,7 +9,6 @@ import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { readStl } from '../../src/io/stl.ts';
 import { repoRoot, type ServedApp } from './app-server.ts';
-import { waitRendered } from './editor-page.ts';
 import { currentDoc, menu, openViaPicker } from './io-page.ts';
 import { openSmall3dPane } from './view-3d-page.ts';
 
@@ -21,7 +20,6 @@ const example = (id: string) => readFileSync(join(repoRoot, 'examples', '3d', `$
 beforeAll(async () => {
   // A small render pane (view-3d-page.ts); the export does not depend on it.
   ({ app, page } = await openSmall3dPane());
-  await waitRendered(page);
 }, 180_000);
 
 afterAll(async () => {

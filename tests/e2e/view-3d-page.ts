@@ -5,6 +5,7 @@
  */
 import type { BrowserContext, Page } from 'playwright-core';
 import { type ServedApp, serveApp } from './app-server.ts';
+import { waitRendered } from './editor-page.ts';
 
 export interface Small3dSession {
   readonly app: ServedApp;
@@ -12,7 +13,10 @@ export interface Small3dSession {
   readonly page: Page;
 }
 
-/** The editor at 760 × 420 with the render pane 20 % of the width (about 150 × 350 px), opened. */
+/**
+ * The editor at 760 × 420 with the render pane 20 % of the width (about 150 × 350 px), opened and
+ * its start-up picture rendered.
+ */
 export async function openSmall3dPane(): Promise<Small3dSession> {
   const app = await serveApp();
   const context = await app.newContext({ width: 760, height: 420 });
@@ -20,6 +24,7 @@ export async function openSmall3dPane(): Promise<Small3dSession> {
   const page = await context.newPage();
   page.setDefaultTimeout(90_000);
   await page.goto(`${app.url}?test`);
+  await waitRendered(page);
   return { app, context, page };
 }
 

@@ -33,7 +33,6 @@ const doc = () => page.evaluate(() => window.__kleinflow!.store.getState().doc) 
 
 beforeAll(async () => {
   ({ app, page } = await openSmall3dPane());
-  await waitRendered(page);
   await openViaPicker(page, `${ID}.kleinflow.json`, file);
   await page.waitForFunction(
     (title) => window.__kleinflow!.store.getState().doc.meta.title === title,

@@ -86,7 +86,6 @@ async function dragMouse(from: { x: number; y: number }, dx: number, dy: number)
 beforeAll(async () => {
   mkdirSync(shots, { recursive: true });
   ({ app, page } = await openSmall3dPane());
-  await page.getByRole('button', { name: 'Help' }).waitFor();
 }, 180_000);
 
 afterAll(() => app?.close());

@@ -57,36 +57,18 @@ export function sizer(doc: GraphDoc, registry: NodeRegistry): SizeOf {
   return (node) => estimateSize(node, nodeDef(registry, node), connected.get(node.id) ?? new Set());
 }
 
-type Box = { readonly x: number; readonly y: number } & Size;
-
-const boxOf = (node: GraphNode, size: SizeOf): Box => ({
-  x: node.position[0],
-  y: node.position[1],
-  ...size(node),
-});
-const intersect = (a: Box, b: Box) =>
-  a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
-
 /** Whether any two nodes' boxes intersect. */
 export function nodesOverlap(doc: GraphDoc, size: SizeOf): boolean {
-  const boxes = doc.nodes.map((n) => boxOf(n, size));
+  const boxes = doc.nodes.map((n) => ({ x: n.position[0], y: n.position[1], ...size(n) }));
   for (let i = 0; i < boxes.length; i++) {
-    for (let j = i + 1; j < boxes.length; j++) if (intersect(boxes[i], boxes[j])) return true;
+    for (let j = i + 1; j < boxes.length; j++) {
+      const a = boxes[i];
+      const b = boxes[j];
+      if (a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height)
+        return true;
+    }
   }
   return false;
-}
-
-/**
- * Where `node` goes so it covers no node of `doc`: its own position, else one node width and a gap
- * further right, as often as needed (a node added twice from the Add node button, which has no
- * pointer position, would otherwise land exactly on the one before).
- */
-export function clearSpot(doc: GraphDoc, node: GraphNode, size: SizeOf): [number, number] {
-  const others = doc.nodes.map((n) => boxOf(n, size));
-  const own = boxOf(node, size);
-  let x = own.x;
-  while (others.some((b) => intersect({ ...own, x }, b))) x += NODE_WIDTH + GAP_X;
-  return [x, own.y];
 }
 
 /**

@@ -12,8 +12,6 @@ import type { ElementRecord3d } from './elements/element-3d-kind.ts';
 import { elementRecord3d } from './elements/index.ts';
 import { seedBall } from './seeds-3d.ts';
 
-/** Inversion records a ray's stack holds (docs/math-3d.md "§8 The tracer's distance bound"): the walk stops when it is full. */
-export const STACK_CAPACITY = 64;
 /** Rounds of the content-ball refinement (each one is a valid cover; more only tightens). */
 const HULL_ROUNDS = 6;
 /** An unbounded orbit (plane mirrors, outside regions) is traced this many scene radii beyond its centre. */
@@ -34,9 +32,10 @@ export interface TracePlan {
   readonly reach: readonly number[];
   /** Every element a sphere inversion, closed balls pairwise disjoint, seeds outside them (Fig. 11). */
   readonly disjoint: boolean;
-  /** The most inversion records one application pushes. */
-  readonly maxRecordsPerStep: number;
-  /** A ball holding the orbit (bounded) or the finite part of the scene (unbounded). */
+  /**
+   * A ball holding the orbit (bounded: the seeds and the content balls, or the regions) or the
+   * finite part of the scene (unbounded).
+   */
   readonly bounds: Sphere;
   readonly bounded: boolean;
 }
@@ -94,20 +93,24 @@ function isDisjoint(mirrors: readonly Sphere[], seeds: readonly Sphere[]): boole
 }
 
 /**
- * Content balls H_i with orbit ∩ B_i ⊂ H_i ∩ B_i (docs/math-3d.md "§8 The tracer's distance bound"): start from H_i = B_i and
- * repeat H_i ← enclosingBall(pieces), the pieces being I_i(seed ball) and, for j ≠ i, the smaller of
- * I_i(H_j) and I_i(B_j) (both hold I_i(orbit ∩ B_j)); a round needs every piece to be a ball (c_i
- * outside the inverted ball) and keeps the new ball only when it is smaller. Each round is a valid
- * cover by induction: orbit ∩ B_i = I_i(orbit \ B_i) and orbit \ B_i ⊂ seeds ∪ ⋃_{j≠i} (H_j ∩ B_j).
+ * Content balls H_i with orbit ∩ B_i ⊂ H_i ∩ B_i (docs/math-3d.md "§8 The tracer's distance bound"):
+ * start from H_i = B_i and repeat H_i ← enclosingBall(pieces), the pieces being I_i(seed ball) and,
+ * for j ≠ i, the smaller of I_i(H_j) and I_i(B_j) (both hold I_i(orbit ∩ B_j)); a round needs every
+ * piece to be a ball (c_i outside the inverted ball) and keeps the new ball only when it is smaller.
+ * Each round is a valid cover by induction: orbit ∩ B_i = I_i(orbit \ B_i) and
+ * orbit \ B_i ⊂ seeds ∪ ⋃_{j≠i} (H_j ∩ B_j). Also returns, per mirror, the last round's pieces (they
+ * cover orbit ∩ B_i too, more tightly than their enclosing ball), or [H_i] where no round applied.
  */
-function contentBalls(mirrors: readonly Sphere[], seeds: readonly Sphere[]): Sphere[] {
+function contentBalls(mirrors: readonly Sphere[], seeds: readonly Sphere[]) {
   let hulls = [...mirrors];
+  let cover: Sphere[][] = mirrors.map((m) => [m]);
   for (let round = 0; round < HULL_ROUNDS; round++) {
-    hulls = mirrors.map((m, i) => {
+    const next = mirrors.map((m, i): { hull: Sphere; pieces: Sphere[] } => {
+      const keep = { hull: hulls[i]!, pieces: cover[i]! };
       const pieces: Sphere[] = [];
       for (const s of seeds) {
         const img = imageBall(m, s);
-        if (!img) return hulls[i]!;
+        if (!img) return keep;
         pieces.push(img);
       }
       for (let j = 0; j < mirrors.length; j++) {
@@ -116,15 +119,17 @@ function contentBalls(mirrors: readonly Sphere[], seeds: readonly Sphere[]): Sph
         const viaBall = imageBall(m, mirrors[j]!);
         const img =
           viaHull && viaBall ? (viaHull.radius < viaBall.radius ? viaHull : viaBall) : (viaHull ?? viaBall);
-        if (!img) return hulls[i]!;
+        if (!img) return keep;
         pieces.push(img);
       }
-      if (pieces.length === 0) return hulls[i]!;
+      if (pieces.length === 0) return keep;
       const h = enclosingBall(pieces);
-      return h.radius < hulls[i]!.radius ? h : hulls[i]!;
+      return h.radius < hulls[i]!.radius ? { hull: h, pieces } : keep;
     });
+    hulls = next.map((n) => n.hull);
+    cover = next.map((n) => n.pieces);
   }
-  return hulls;
+  return { hulls, cover };
 }
 
 /**
@@ -177,13 +182,19 @@ export function prepareTrace3d(scene: Scene3d): TracePlan {
   const records = scene.elements.map((e) => elementRecord3d(e) as ElementRecord3d);
   const seedBalls = scene.seeds.map(seedBall);
   const mirrors = allInversions(scene.elements);
-  const hulls = mirrors ? contentBalls(mirrors, seedBalls) : scene.elements.map(() => null);
+  const content = mirrors ? contentBalls(mirrors, seedBalls) : null;
+  const hulls = content ? content.hulls : scene.elements.map(() => null);
   const reach = scene.elements.map((_, i) =>
     mirrors ? reachOf(mirrors, hulls as Sphere[], seedBalls, i) : Number.POSITIVE_INFINITY,
   );
   const regions = scene.elements.map(boundedRegions);
   const bounded = regions.every((r) => r !== null);
-  const finite = [...seedBalls, ...regions.flatMap((r, i) => r ?? [anchor(scene.elements[i]!)])];
+  // The orbit lies in the seeds and the content balls' pieces (tighter than the mirror balls);
+  // without content balls, in the seeds and the regions.
+  const finite = [
+    ...seedBalls,
+    ...(content ? content.cover.flat() : regions.flatMap((r, i) => r ?? [anchor(scene.elements[i]!)])),
+  ];
   const bounds = finite.length > 0 ? enclosingBall(finite) : { center: scene.camera.target, radius: 1 };
   return {
     scene,
@@ -191,7 +202,6 @@ export function prepareTrace3d(scene: Scene3d): TracePlan {
     hulls,
     reach,
     disjoint: mirrors !== null && isDisjoint(mirrors, seedBalls),
-    maxRecordsPerStep: Math.max(0, ...records.map((r) => r.inversionsPerStep)),
     bounds: { center: bounds.center, radius: Math.max(bounds.radius, 1e-6) },
     bounded,
   };

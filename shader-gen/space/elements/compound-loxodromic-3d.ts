@@ -14,19 +14,18 @@ import {
   sideSign,
   sphereRow,
 } from './ball-side.ts';
-import type { ElementRecord3d } from './element-3d-kind.ts';
-import { inversionFactorGlsl, invertGlsl, invertWalk } from './invert.ts';
+import { appliedGlsl, type ElementRecord3d } from './element-3d-kind.ts';
+import { inversionFactorGlsl, invertGlsl, invertPoleGlsl, invertWalk } from './invert.ts';
 
 type Loxodromic = Extract<Element3d, { kind: 'compound-loxodromic-3d' }>;
 
-const chain = (rows: readonly string[], push: (r2: string, far: string) => string, tag: string) =>
-  rows.map((d, k) => invertGlsl(`${d}.xyz`, `${d}.w`, `k${tag}${k}`, push)).join('\n');
+const chain = (rows: readonly string[], pole: boolean, tag: string) =>
+  rows.map((d, k) => invertGlsl(`${d}.xyz`, `${d}.w`, `k${tag}${k}`, pole)).join('\n');
 
 export const compoundLoxodromic3d: ElementRecord3d<Loxodromic> = {
   kind: 'compound-loxodromic-3d',
-  inversionsPerStep: 4,
   cpu: {
-    step({ g }, st, push) {
+    step({ g }, st) {
       const spheres = [g.base.s1, g.base.s2, g.s3, g.s4];
       const order = inBallSide(g.base.a, st.x, st.y, st.z)
         ? spheres
@@ -34,7 +33,7 @@ export const compoundLoxodromic3d: ElementRecord3d<Loxodromic> = {
           ? spheres.reverse()
           : null;
       if (!order) return false;
-      for (const s of order) invertWalk(st, ...s.center, s.radius ** 2, push);
+      for (const s of order) invertWalk(st, ...s.center, s.radius ** 2);
       st.depth += 1;
       return true;
     },
@@ -54,17 +53,15 @@ export const compoundLoxodromic3d: ElementRecord3d<Loxodromic> = {
       g.base.a.sphere.radius,
       g.base.b.sphere.radius,
     ],
-    step: (push) =>
+    step: ({ pole, applied }) =>
       `
 if (inBallSide(p, d0, d5.x)) {
-${chain(['d0', 'd1', 'd2', 'd3'], push, 'a')}
-  depth += 1;
-  continue;
+${chain(['d0', 'd1', 'd2', 'd3'], pole, 'a')}
+${appliedGlsl(applied)}
 }
 if (inBallSide(p, d4, d5.y)) {
-${chain(['d3', 'd2', 'd1', 'd0'], push, 'b')}
-  depth += 1;
-  continue;
+${chain(['d3', 'd2', 'd1', 'd0'], pole, 'b')}
+${appliedGlsl(applied)}
 }`.trim(),
     regionDistance: glslFunction(
       'compoundLoxodromic3dRegionDistance',
@@ -74,6 +71,6 @@ float compoundLoxodromic3dRegionDistance(vec3 p, vec4 d0, vec4 d1, vec4 d2, vec4
 }`,
       [ballSideDistanceGlsl],
     ),
-    deps: [inBallSideGlsl, inversionFactorGlsl],
+    deps: [inBallSideGlsl, inversionFactorGlsl, invertPoleGlsl],
   },
 };

@@ -1,20 +1,22 @@
 /**
  * Compound parabolic generator (docs/math-3d.md §6): s = (x − q)·n; s < 0 → G(x) = R_θ(x + 2h n);
- * s > 2h → G⁻¹(x) = R_−θ(x) − 2h n; the slab between is its fundamental domain. An isometry: no
- * records. Rodrigues about the axis (q, n): v cosθ + (n × v) sinθ + n(n·v)(1 − cosθ), v = x − q.
+ * s > 2h → G⁻¹(x) = R_−θ(x) − 2h n; the slab between is its fundamental domain. An isometry: a
+ * finite tracked pole moves with the point (docs/math-3d.md §8). Rodrigues about the axis (q, n): v cosθ + (n × v) sinθ + n(n·v)(1 − cosθ), v = x − q.
  * GLSL packing (3 vec4): d0 = (q, h), d1 = (n, 0), d2 = (cosθ, sinθ, 0, 0).
  */
 import type { Element3d } from '../../../nodes/core/scene-3d.ts';
 import { glslFunction } from '../../glsl/snippet.ts';
-import type { ElementRecord3d, Walk3dState } from './element-3d-kind.ts';
+import { appliedGlsl, type ElementRecord3d, type Walk3dState } from './element-3d-kind.ts';
 
 type Parabolic = Extract<Element3d, { kind: 'compound-parabolic-3d' }>;
 
 const slab = ({ g }: Parabolic, x: number, y: number, z: number): number =>
   (x - g.point[0]) * g.normal[0] + (y - g.point[1]) * g.normal[1] + (z - g.point[2]) * g.normal[2];
 
-/** Rotates the state's point about the axis (q, n) by the angle with cosine c and sine s. */
-function rotate(st: Walk3dState, q: readonly number[], n: readonly number[], c: number, s: number): void {
+type Point = Pick<Walk3dState, 'x' | 'y' | 'z'>;
+
+/** Rotates a point about the axis (q, n) by the angle with cosine c and sine s. */
+function rotate(st: Point, q: readonly number[], n: readonly number[], c: number, s: number): void {
   const vx = st.x - q[0]!;
   const vy = st.y - q[1]!;
   const vz = st.z - q[2]!;
@@ -36,26 +38,30 @@ vec3 rotateAxis(vec3 p, vec3 q, vec3 n, float c, float s) {
 }`,
 );
 
+/** G (dir 1: translate, then turn) or G⁻¹ (dir −1: turn back, then translate back) of a point. */
+function move({ g }: Parabolic, pt: Point, dir: 1 | -1): void {
+  const { point: q, normal: n, gap: h } = g;
+  const c = Math.cos(g.torsion);
+  const s = Math.sin(g.torsion);
+  const shift = () => {
+    pt.x += dir * 2 * h * n[0];
+    pt.y += dir * 2 * h * n[1];
+    pt.z += dir * 2 * h * n[2];
+  };
+  if (dir === 1) shift();
+  rotate(pt, q, n, c, dir * s);
+  if (dir === -1) shift();
+}
+
 export const compoundParabolic3d: ElementRecord3d<Parabolic> = {
   kind: 'compound-parabolic-3d',
-  inversionsPerStep: 0,
   cpu: {
     step(e, st) {
-      const { point: q, normal: n, gap: h, torsion } = e.g;
       const sd = slab(e, st.x, st.y, st.z);
-      const c = Math.cos(torsion);
-      const s = Math.sin(torsion);
-      if (sd < 0) {
-        st.x += 2 * h * n[0];
-        st.y += 2 * h * n[1];
-        st.z += 2 * h * n[2];
-        rotate(st, q, n, c, s);
-      } else if (sd > 2 * h) {
-        rotate(st, q, n, c, -s);
-        st.x -= 2 * h * n[0];
-        st.y -= 2 * h * n[1];
-        st.z -= 2 * h * n[2];
-      } else return false;
+      const dir = sd < 0 ? 1 : sd > 2 * e.g.gap ? -1 : 0;
+      if (dir === 0) return false;
+      move(e, st, dir);
+      if (st.pole?.finite) move(e, st.pole, dir);
       st.depth += 1;
       return true;
     },
@@ -67,19 +73,24 @@ export const compoundParabolic3d: ElementRecord3d<Parabolic> = {
   glsl: {
     vec4s: 3,
     pack: ({ g }) => [...g.point, g.gap, ...g.normal, 0, Math.cos(g.torsion), Math.sin(g.torsion), 0, 0],
-    step: () =>
-      `
+    step: ({ pole, applied }) => {
+      const forward = (v: string) =>
+        `${v} = rotateAxis(${v} + (2.0 * d0.w) * d1.xyz, d0.xyz, d1.xyz, d2.x, d2.y);`;
+      const back = (v: string) =>
+        `${v} = rotateAxis(${v}, d0.xyz, d1.xyz, d2.x, -d2.y) - (2.0 * d0.w) * d1.xyz;`;
+      const both = (f: (v: string) => string) =>
+        [f('p'), ...(pole ? [f('pole')] : [])].map((l) => `  ${l}`).join('\n');
+      return `
 float sd = dot(p - d0.xyz, d1.xyz);
 if (sd < 0.0) {
-  p = rotateAxis(p + (2.0 * d0.w) * d1.xyz, d0.xyz, d1.xyz, d2.x, d2.y);
-  depth += 1;
-  continue;
+${both(forward)}
+${appliedGlsl(applied)}
 }
 if (sd > 2.0 * d0.w) {
-  p = rotateAxis(p, d0.xyz, d1.xyz, d2.x, -d2.y) - (2.0 * d0.w) * d1.xyz;
-  depth += 1;
-  continue;
-}`.trim(),
+${both(back)}
+${appliedGlsl(applied)}
+}`.trim();
+    },
     regionDistance: glslFunction(
       'compoundParabolic3dRegionDistance',
       `

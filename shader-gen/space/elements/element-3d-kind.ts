@@ -4,10 +4,10 @@
  * reference) and its GLSL twin. The sphere tracer's walk (walk.ts and its GLSL twin) calls `step`
  * for each element in scene order and restarts from the first after every application.
  *
- * Every inversion a step applies is reported to `push(r², far)` BEFORE the point moves (far =
- * |x' − c|, the distance of the image from the centre): the walk keeps one record per inversion on
- * a per-ray stack and folds the distance bound back through them (docs/math-3d.md "§8 The tracer's distance bound"). Isometries
- * (plane reflections, the compound parabolic) push nothing: they keep distances.
+ * The distance bound needs, besides the point and its conformal factor, where the composed map
+ * sends ∞ — its pole (docs/math-3d.md "§8 The tracer's distance bound"). When the walk tracks it,
+ * every step moves the pole by the same map as the point: an inversion sends a pole at ∞ to its
+ * centre, any other pole like a point; an isometry moves a finite pole and keeps one at ∞.
  */
 import type { Element3d } from '../../../nodes/core/scene-3d.ts';
 import type { GlslFunction } from '../../glsl/snippet.ts';
@@ -20,14 +20,29 @@ export interface Walk3dState {
   /** Product of the conformal factors along the path (lengths at the start scale by this). */
   s: number;
   depth: number;
+  /** The pole of the composed map (where ∞ went), or null when the walk does not track it. */
+  pole: Pole3d | null;
 }
 
-/** Receives one inversion (its r² and the image's distance |x' − c| from the centre); null: not recording. */
-export type PushInversion = ((r2: number, far: number) => void) | null;
+/** A point that may be ∞ (`finite` false: x, y, z are meaningless). */
+export interface Pole3d {
+  x: number;
+  y: number;
+  z: number;
+  finite: boolean;
+}
+
+/** What the walk needs a GLSL step to emit beyond moving `p`. */
+export interface StepHooks {
+  /** Also move `vec3 pole` (`bool poleFinite` tells whether it is finite) by the same map. */
+  readonly pole: boolean;
+  /** A statement run when the element applies, just before its `continue` ('' for none). */
+  readonly applied: string;
+}
 
 export interface CpuElement3d<E extends Element3d = Element3d> {
   /** If the point lies in the element's region: moves it (factor, depth + 1) and returns true. */
-  step(e: E, st: Walk3dState, push: PushInversion): boolean;
+  step(e: E, st: Walk3dState): boolean;
   /**
    * Distance from (x, y, z) to the element's region(s) (0 inside): the fallback cover of the orbit
    * inside the regions (docs/math-3d.md §7).
@@ -48,10 +63,10 @@ export interface GlslElement3d<E extends Element3d = Element3d> {
   pack(e: E): number[];
   /**
    * The CPU `step` as statements in the walk loop, with `vec4 d0, d1, …` bound to its data and
-   * `vec3 p`, `float s`, `int depth` in scope; when it applies it ends with `continue`. `push(r2,
-   * far)` gives the statement that records an inversion ('' when the walk does not record).
+   * `vec3 p`, `float s`, `int depth` (and, with `hooks.pole`, `vec3 pole`, `bool poleFinite`) in
+   * scope; when it applies it ends with `hooks.applied` and `continue`.
    */
-  step(push: (r2: string, far: string) => string): string;
+  step(hooks: StepHooks): string;
   /** `float <kind>RegionDistance(vec3 p, vec4 d0, …)`: CPU `regionDistance`. */
   readonly regionDistance: GlslFunction;
   /**
@@ -65,8 +80,10 @@ export interface GlslElement3d<E extends Element3d = Element3d> {
 
 export interface ElementRecord3d<E extends Element3d = Element3d> {
   readonly kind: E['kind'];
-  /** The most inversions one application records (the stack must have room for them). */
-  readonly inversionsPerStep: number;
   readonly cpu: CpuElement3d<E>;
   readonly glsl: GlslElement3d<E>;
 }
+
+/** The end of a GLSL step block that applied: count it, run the walk's hook, restart the loop. */
+export const appliedGlsl = (applied: string): string =>
+  ['  depth += 1;', ...(applied ? [`  ${applied}`] : []), '  continue;'].join('\n');

@@ -14,23 +14,22 @@ import {
   sideSign,
   sphereRow,
 } from './ball-side.ts';
-import type { ElementRecord3d } from './element-3d-kind.ts';
-import { inversionFactorGlsl, invertGlsl, invertWalk } from './invert.ts';
+import { appliedGlsl, type ElementRecord3d } from './element-3d-kind.ts';
+import { inversionFactorGlsl, invertGlsl, invertPoleGlsl, invertWalk } from './invert.ts';
 
 type Mobius = Extract<Element3d, { kind: 'mobius-3d' }>;
 
 export const mobius3d: ElementRecord3d<Mobius> = {
   kind: 'mobius-3d',
-  inversionsPerStep: 2,
   cpu: {
-    step({ g }, st, push) {
+    step({ g }, st) {
       const [first, second] = inBallSide(g.a, st.x, st.y, st.z)
         ? [g.s1, g.s2]
         : inBallSide(g.b, st.x, st.y, st.z)
           ? [g.s2, g.s1]
           : [null, null];
       if (!first || !second) return false;
-      for (const s of [first, second]) invertWalk(st, ...s.center, s.radius ** 2, push);
+      for (const s of [first, second]) invertWalk(st, ...s.center, s.radius ** 2);
       st.depth += 1;
       return true;
     },
@@ -48,19 +47,17 @@ export const mobius3d: ElementRecord3d<Mobius> = {
       g.a.sphere.radius,
       g.b.sphere.radius,
     ],
-    step: (push) =>
+    step: ({ pole, applied }) =>
       `
 if (inBallSide(p, d0, d3.x)) {
-${invertGlsl('d0.xyz', 'd0.w', 'ka', push)}
-${invertGlsl('d1.xyz', 'd1.w', 'kb', push)}
-  depth += 1;
-  continue;
+${invertGlsl('d0.xyz', 'd0.w', 'ka', pole)}
+${invertGlsl('d1.xyz', 'd1.w', 'kb', pole)}
+${appliedGlsl(applied)}
 }
 if (inBallSide(p, d2, d3.y)) {
-${invertGlsl('d1.xyz', 'd1.w', 'kc', push)}
-${invertGlsl('d0.xyz', 'd0.w', 'kd', push)}
-  depth += 1;
-  continue;
+${invertGlsl('d1.xyz', 'd1.w', 'kc', pole)}
+${invertGlsl('d0.xyz', 'd0.w', 'kd', pole)}
+${appliedGlsl(applied)}
 }`.trim(),
     regionDistance: glslFunction(
       'mobius3dRegionDistance',
@@ -70,6 +67,6 @@ float mobius3dRegionDistance(vec3 p, vec4 d0, vec4 d1, vec4 d2, vec4 d3) {
 }`,
       [ballSideDistanceGlsl],
     ),
-    deps: [inBallSideGlsl, inversionFactorGlsl],
+    deps: [inBallSideGlsl, inversionFactorGlsl, invertPoleGlsl],
   },
 };

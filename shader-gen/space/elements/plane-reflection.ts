@@ -1,11 +1,11 @@
 /**
  * Reflection in a plane (q, n), n unit: region the moved side (x − q)·n < 0; ρ(x) = x − 2((x − q)·n)n,
- * factor 1 — an isometry, so it records nothing (docs/math-3d.md §1, §7).
+ * factor 1 — an isometry; a finite tracked pole is reflected too (docs/math-3d.md §1, §7, §8).
  * GLSL packing (1 vec4): d0 = (n, −q·n), so (x − q)·n = dot(x, n) + d0.w.
  */
 import type { Element3d } from '../../../nodes/core/scene-3d.ts';
 import { glslFunction } from '../../glsl/snippet.ts';
-import type { ElementRecord3d } from './element-3d-kind.ts';
+import { appliedGlsl, type ElementRecord3d } from './element-3d-kind.ts';
 
 type PlaneReflection = Extract<Element3d, { kind: 'plane-reflection' }>;
 
@@ -17,7 +17,6 @@ const signed = (e: PlaneReflection, x: number, y: number, z: number): number => 
 
 export const planeReflection: ElementRecord3d<PlaneReflection> = {
   kind: 'plane-reflection',
-  inversionsPerStep: 0,
   cpu: {
     step(e, st) {
       const sd = signed(e, st.x, st.y, st.z);
@@ -26,6 +25,13 @@ export const planeReflection: ElementRecord3d<PlaneReflection> = {
       st.x -= 2 * sd * nx;
       st.y -= 2 * sd * ny;
       st.z -= 2 * sd * nz;
+      const pole = st.pole;
+      if (pole?.finite) {
+        const ps = signed(e, pole.x, pole.y, pole.z);
+        pole.x -= 2 * ps * nx;
+        pole.y -= 2 * ps * ny;
+        pole.z -= 2 * ps * nz;
+      }
       st.depth += 1;
       return true;
     },
@@ -46,13 +52,12 @@ export const planeReflection: ElementRecord3d<PlaneReflection> = {
       const [nx, ny, nz] = e.plane.normal;
       return [nx, ny, nz, -(qx * nx + qy * ny + qz * nz)];
     },
-    step: () =>
+    step: ({ pole, applied }) =>
       `
 float sd = dot(p, d0.xyz) + d0.w;
 if (sd < 0.0) {
-  p -= (2.0 * sd) * d0.xyz;
-  depth += 1;
-  continue;
+  p -= (2.0 * sd) * d0.xyz;${pole ? '\n  pole -= (2.0 * (dot(pole, d0.xyz) + d0.w)) * d0.xyz;' : ''}
+${appliedGlsl(applied)}
 }`.trim(),
     regionDistance: glslFunction(
       'planeReflectionRegionDistance',

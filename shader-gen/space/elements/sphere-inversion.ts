@@ -4,8 +4,8 @@
  */
 import type { Element3d } from '../../../nodes/core/scene-3d.ts';
 import { glslFunction } from '../../glsl/snippet.ts';
-import type { ElementRecord3d } from './element-3d-kind.ts';
-import { dist2, inversionFactorGlsl, invertGlsl, invertWalk } from './invert.ts';
+import { appliedGlsl, type ElementRecord3d } from './element-3d-kind.ts';
+import { dist2, inversionFactorGlsl, invertGlsl, invertPoleGlsl, invertWalk } from './invert.ts';
 
 type SphereInversion = Extract<Element3d, { kind: 'sphere-inversion' }>;
 
@@ -23,13 +23,12 @@ float ballDistance(vec3 p, vec4 ball) {
 
 export const sphereInversion: ElementRecord3d<SphereInversion> = {
   kind: 'sphere-inversion',
-  inversionsPerStep: 1,
   cpu: {
-    step(e, st, push) {
+    step(e, st) {
       const [cx, cy, cz] = e.sphere.center;
       const r2 = e.sphere.radius * e.sphere.radius;
       if (!(dist2(st.x, st.y, st.z, cx, cy, cz) < r2)) return false;
-      invertWalk(st, cx, cy, cz, r2, push);
+      invertWalk(st, cx, cy, cz, r2);
       st.depth += 1;
       return true;
     },
@@ -41,20 +40,20 @@ export const sphereInversion: ElementRecord3d<SphereInversion> = {
       out.y = y;
       out.z = z;
       out.s = 1;
-      invertWalk(out, cx, cy, cz, r2, null);
+      out.pole = null;
+      invertWalk(out, cx, cy, cz, r2);
       return r2;
     },
   },
   glsl: {
     vec4s: 2,
     pack: (e) => [...e.sphere.center, e.sphere.radius, e.sphere.radius ** 2, 0, 0, 0],
-    step: (push) =>
+    step: ({ pole, applied }) =>
       `
 vec3 dd = p - d0.xyz;
 if (dot(dd, dd) < d1.x) {
-${invertGlsl('d0.xyz', 'd1.x', 'kf', push)}
-  depth += 1;
-  continue;
+${invertGlsl('d0.xyz', 'd1.x', 'kf', pole)}
+${appliedGlsl(applied)}
 }`.trim(),
     regionDistance: glslFunction(
       'sphereInversionRegionDistance',
@@ -68,13 +67,13 @@ float sphereInversionRegionDistance(vec3 p, vec4 d0, vec4 d1) {
       'sphereInversionMirror',
       `
 float sphereInversionMirror(vec3 p, vec4 d0, vec4 d1, out vec3 q, out float far) {
-  vec2 kf = inversionFactor(p, d0.xyz, d1.x);
-  q = d0.xyz + (p - d0.xyz) * kf.x;
-  far = kf.y;
+  float kf = inversionFactor(p, d0.xyz, d1.x);
+  q = d0.xyz + (p - d0.xyz) * kf;
+  far = length(q - d0.xyz);
   return d1.x;
 }`,
       [inversionFactorGlsl],
     ),
-    deps: [inversionFactorGlsl],
+    deps: [inversionFactorGlsl, invertPoleGlsl],
   },
 };

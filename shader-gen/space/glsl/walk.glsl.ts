@@ -1,21 +1,21 @@
 /**
- * The GLSL walk, twin of ../walk.ts (docs/math-3d.md "§8 The tracer's distance bound"): the IIS loop with one straight-line
- * block per element (its kind's step, no runtime switch), a fixed-size per-ray stack of inversion
- * records `vec4(local, r², far, reach)`, and the fold of the bound back through it. Emitted twice:
- * `walkRecord` (with the stack; returns the safe DE) and `walkPlain` (the seed-image distance only,
+ * The GLSL walk, twin of ../walk.ts (docs/math-3d.md "§8 The tracer's distance bound"): the IIS
+ * loop with one straight-line block per element (its kind's step, no runtime switch), moving the
+ * pole of the composed map with the point, and the bound formed once at the end:
+ * D / (s·(1 + D/|x_f − pole|)), D the covers (mirrored where they would lower it). Emitted twice:
+ * `walkRecord` (with the pole; returns the safe DE) and `walkPlain` (the seed-image distance only,
  * for normals and occlusion). Both write info = (seed-image distance, depth, seed, factor) and the
  * final point. Element, content-ball and seed data live in `u_el` rows (or literals when baked),
  * copied into locals first (SwiftShader reloads uniform arrays read inside a loop).
  */
 import type { Scene3d } from '../../../nodes/core/scene-3d.ts';
 import { GLSL_FAR } from '../../glsl/iis.glsl.ts';
-import { intLiteral } from '../../glsl/literal.ts';
 import type { GlslFunction } from '../../glsl/snippet.ts';
 import type { SourceBuilder } from '../../glsl/source.ts';
 import { ELEMENT_ARRAY, type SceneValues } from '../../glsl/values.ts';
 import type { ElementRecord3d } from '../elements/element-3d-kind.ts';
 import { ballDistanceGlsl } from '../elements/sphere-inversion.ts';
-import { STACK_CAPACITY, type TracePlan } from '../plan.ts';
+import type { TracePlan } from '../plan.ts';
 import { packSeed, seedDistanceGlsl } from '../seeds-3d.ts';
 
 export interface PlacedWalk {
@@ -129,11 +129,10 @@ function mirroredCoverStatements(placed: PlacedWalk): string[] {
 }
 
 /**
- * `float walk<Name>(vec3 start, out vec4 info, out vec3 fin)`. Recording: the loop also stops when
- * the stack could not take another application, and the function returns the folded bound.
+ * `float walk<Name>(vec3 start, out vec4 info, out vec3 fin)`. Recording: the walk also moves the
+ * pole, and the function returns the safe bound.
  */
 export function emitWalk(out: SourceBuilder, placed: PlacedWalk, record: boolean): void {
-  const { plan } = placed;
   const rows = [
     ...placed.elements.flatMap((e) => [...e.rows, ...(e.hull ?? [])]),
     ...placed.seeds.flatMap((s) => [...s]),
@@ -141,7 +140,6 @@ export function emitWalk(out: SourceBuilder, placed: PlacedWalk, record: boolean
   const hoisted = rows.filter((r) => local(r) !== r).map((r) => `  vec4 ${local(r)} = ${r};`);
   const literalLimit = /^\d+$/.test(placed.maxIter);
   const limit = literalLimit ? placed.maxIter : 'maxIter';
-  const room = intLiteral(STACK_CAPACITY - plan.maxRecordsPerStep);
   out.push(
     `float walk${record ? 'Record' : 'Plain'}(vec3 start, out vec4 info, out vec3 fin) {`,
     ...hoisted,
@@ -149,19 +147,15 @@ export function emitWalk(out: SourceBuilder, placed: PlacedWalk, record: boolean
     '  vec3 p = start;',
     '  float s = 1.0;',
     '  int depth = 0;',
-    ...(record ? [`  vec4 stack[${intLiteral(STACK_CAPACITY)}];`, '  int top = 0;'] : []),
-    `  for (; depth < ${limit}${record ? ` && top <= ${room}` : ''};) {`,
+    ...(record ? ['  vec3 pole = vec3(0.0);', '  bool poleFinite = false;'] : []),
+    `  for (; depth < ${limit};) {`,
   );
-  placed.elements.forEach(({ record: kind, rows: data, hull }, i) => {
-    const push = (r2: string, far: string) =>
-      record
-        ? `stack[top] = vec4(${hull ? coverExpr(placed, i) : GLSL_FAR}, ${r2}, ${far}, ${hull ? `${local(hull[1])}.x` : GLSL_FAR});\ntop += 1;`
-        : '';
+  placed.elements.forEach(({ record: kind, rows: data }, i) => {
     out.block(i + 1, [
       `    { // ${kind.kind}`,
       ...data.map((expr, k) => `      vec4 d${k} = ${local(expr)};`),
       ...kind.glsl
-        .step(push)
+        .step({ pole: record, applied: '' })
         .split('\n')
         .map((line) => `      ${line}`),
       '    }',
@@ -183,12 +177,7 @@ export function emitWalk(out: SourceBuilder, placed: PlacedWalk, record: boolean
   if (record) {
     out.push(
       ...mirroredCoverStatements(placed),
-      '  for (int k = top - 1; k >= 0; --k) {',
-      '    vec4 r = stack[k];',
-      '    float whole = r.y * (de / (r.z * (r.z + de)));',
-      '    de = max(whole, min(r.x, r.y * (de / (r.z * min(r.w, r.z + de)))));',
-      '  }',
-      '  return de;',
+      '  return de / (s * (1.0 + (poleFinite ? de / length(p - pole) : 0.0)));',
     );
   } else out.push('  return 0.0;');
   out.push('}');

@@ -8,12 +8,12 @@
  *   R   ≤ |x_f − W(∞)|, the distance from the final point to the pole of W⁻¹,
  *   DE  = R·D / (s·(R + D)) = D / (s·(1 + D/R)),  s the accumulated conformal factor.
  *
- * The walk moves the pole W(∞) with the point (∞ until the first inversion), so one IIS step costs
+ * The walk moves the pole W(∞) with the point (from a stand-in for ∞ far away), so one IIS step costs
  * one plain application plus the same map on the pole, and the O(n) covers are evaluated once, at
  * the end (with mirrored covers only for the covers below the running minimum). The walk also gives the seed-image
  * distance min over seeds of seedDistance(final)/factor, on which the tracer decides a hit.
  */
-import type { Pole3d, Walk3dState } from './elements/element-3d-kind.ts';
+import { POLE_AT_INFINITY, type Pole3d, type Walk3dState } from './elements/element-3d-kind.ts';
 import { ballDistance } from './elements/sphere-inversion.ts';
 import type { TracePlan } from './plan.ts';
 import { seedDistance } from './seeds-3d.ts';
@@ -48,29 +48,38 @@ function seedsDistance(plan: TracePlan, x: number, y: number, z: number, nearest
   return d;
 }
 
-/**
- * min(seeds, cover_j for j ≠ skip): a lower bound of the distance to the orbit outside element
- * `skip`. `mirrored`: each cover that would lower the minimum also tries its mirrored cover.
- */
-function coverDistance(
-  plan: TracePlan,
-  x: number,
-  y: number,
-  z: number,
-  skip: number,
-  mirrored = false,
-): number {
+/** cover_j at (x, y, z): the content ball and the region where both are known, else the region. */
+function coverOf(plan: TracePlan, x: number, y: number, z: number, j: number): number {
+  const h = plan.hulls[j];
+  const region = plan.records[j]!.cpu.regionDistance(plan.scene.elements[j]!, x, y, z);
+  return h ? Math.max(region, ballDistance(x, y, z, h.center, h.radius)) : region;
+}
+
+/** min(seeds, cover_j for j ≠ skip): a lower bound of the distance to the orbit outside element `skip`. */
+function coverDistance(plan: TracePlan, x: number, y: number, z: number, skip: number): number {
   let d = Math.max(0, seedsDistance(plan, x, y, z, { seed: -1 }));
-  plan.scene.elements.forEach((e, j) => {
-    if (j === skip) return;
-    const h = plan.hulls[j];
-    const region = plan.records[j]!.cpu.regionDistance(e, x, y, z);
-    let cover = h ? Math.max(region, ballDistance(x, y, z, h.center, h.radius)) : region;
-    // Only a cover below the minimum so far can change it: the others need no mirror.
-    if (mirrored && cover < d) cover = Math.max(cover, mirroredCover(plan, x, y, z, j));
-    d = Math.min(d, cover);
-  });
+  for (let j = 0; j < plan.records.length; j++) if (j !== skip) d = Math.min(d, coverOf(plan, x, y, z, j));
   return d;
+}
+
+/**
+ * D at the final point: min(seeds, covers), the nearest cover raised to its mirrored cover (where
+ * that is larger) — the others are not the minimum, so one mirror, O(n) in all, is what can help.
+ */
+function endDistance(plan: TracePlan, x: number, y: number, z: number): number {
+  let best = Math.max(0, seedsDistance(plan, x, y, z, { seed: -1 }));
+  let second = Number.POSITIVE_INFINITY;
+  let nearest = -1;
+  for (let j = 0; j < plan.records.length; j++) {
+    const c = coverOf(plan, x, y, z, j);
+    if (c < best) {
+      second = best;
+      best = c;
+      nearest = j;
+    } else second = Math.min(second, c);
+  }
+  if (nearest < 0) return best;
+  return Math.min(second, Math.max(best, mirroredCover(plan, x, y, z, nearest)));
 }
 
 /** Scratch state for the mirror image p* (the CPU tracer is single-threaded). */
@@ -92,9 +101,9 @@ function mirroredCover(plan: TracePlan, x: number, y: number, z: number, j: numb
   return r2 * (local / (far * Math.min(plan.reach[j]!, far + local)));
 }
 
-/** |x_f − W(∞)|: ∞ while W is a similarity that kept ∞ (no inversion yet). */
+/** |x_f − W(∞)| (about 10¹⁸ while W is an isometry: the bound is then D/s to float precision). */
 const poleDistance = (st: Walk3dState, pole: Pole3d): number =>
-  pole.finite ? Math.hypot(st.x - pole.x, st.y - pole.y, st.z - pole.z) : Number.POSITIVE_INFINITY;
+  Math.hypot(st.x - pole.x, st.y - pole.y, st.z - pole.z);
 
 /** The bound carried back through W: R·D/(s·(R + D)), written to stay finite for R = ∞. */
 export const composedBound = (d: number, s: number, r: number): number => d / (s * (1 + d / r));
@@ -102,7 +111,7 @@ export const composedBound = (d: number, s: number, r: number): number => d / (s
 /** Walks (x, y, z). `bound`: also form the safe distance bound `de` (else it is ∞). */
 export function walk3d(plan: TracePlan, x: number, y: number, z: number, bound: boolean): Walk3dResult {
   const { scene, records } = plan;
-  const pole: Pole3d | null = bound ? { x: 0, y: 0, z: 0, finite: false } : null;
+  const pole: Pole3d | null = bound ? { x: POLE_AT_INFINITY, y: 0, z: 0 } : null;
   const st: Walk3dState = { x, y, z, s: 1, depth: 0, pole };
   let escaped = false;
   while (st.depth < scene.maxIterations) {
@@ -121,7 +130,7 @@ export function walk3d(plan: TracePlan, x: number, y: number, z: number, bound: 
   const nearest = { seed: -1 };
   const image = seedsDistance(plan, st.x, st.y, st.z, nearest) / st.s;
   const de = pole
-    ? composedBound(coverDistance(plan, st.x, st.y, st.z, -1, true), st.s, poleDistance(st, pole))
+    ? composedBound(endDistance(plan, st.x, st.y, st.z), st.s, poleDistance(st, pole))
     : Number.POSITIVE_INFINITY;
   return {
     de,

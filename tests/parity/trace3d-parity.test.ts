@@ -160,10 +160,12 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
       // Measured at 64×48: median ≤ 0.0001, 95th percentile ≤ 0.003 (linear RGB); a few pixels
       // whose shadow ray grazes an orbit sphere differ more. By final point the colour changes at
       // each copy's own scale, so in copies a few pixels wide a float32 shift of the hit moves it
-      // more: measured at 96×72, median 0.0002, 95th percentile 0.034.
+      // more: measured at 96×72, median 0.0002, 95th percentile 0.034 with the old per-step fold,
+      // 0.051 with the end-of-walk bound, whose longer march steps land anywhere in the quarter-pixel
+      // hit band (GPU and CPU then stop a float32 shift apart on a different spot of a tiny copy).
       expect(r.pixels, r.name).toBeGreaterThan(100);
       expect(r.median, r.name).toBeLessThan(0.002);
-      expect(r.p95, r.name).toBeLessThan(r.byPoint ? 0.05 : 0.02);
+      expect(r.p95, r.name).toBeLessThan(r.byPoint ? 0.08 : 0.02);
     }
   }, 300_000);
 

@@ -15,7 +15,7 @@ import {
   sphereRow,
 } from './ball-side.ts';
 import { appliedGlsl, type ElementRecord3d } from './element-3d-kind.ts';
-import { inversionFactorGlsl, invertGlsl, invertPoleGlsl, invertWalk } from './invert.ts';
+import { inversionFactorGlsl, invertGlsl, invertWalk } from './invert.ts';
 
 type Loxodromic = Extract<Element3d, { kind: 'compound-loxodromic-3d' }>;
 
@@ -71,6 +71,6 @@ float compoundLoxodromic3dRegionDistance(vec3 p, vec4 d0, vec4 d1, vec4 d2, vec4
 }`,
       [ballSideDistanceGlsl],
     ),
-    deps: [inBallSideGlsl, inversionFactorGlsl, invertPoleGlsl],
+    deps: [inBallSideGlsl, inversionFactorGlsl],
   },
 };

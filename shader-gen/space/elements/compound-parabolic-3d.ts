@@ -1,7 +1,7 @@
 /**
  * Compound parabolic generator (docs/math-3d.md §6): s = (x − q)·n; s < 0 → G(x) = R_θ(x + 2h n);
  * s > 2h → G⁻¹(x) = R_−θ(x) − 2h n; the slab between is its fundamental domain. An isometry: a
- * finite tracked pole moves with the point (docs/math-3d.md §8). Rodrigues about the axis (q, n): v cosθ + (n × v) sinθ + n(n·v)(1 − cosθ), v = x − q.
+ * tracked pole moves with the point (docs/math-3d.md §8). Rodrigues about the axis (q, n): v cosθ + (n × v) sinθ + n(n·v)(1 − cosθ), v = x − q.
  * GLSL packing (3 vec4): d0 = (q, h), d1 = (n, 0), d2 = (cosθ, sinθ, 0, 0).
  */
 import type { Element3d } from '../../../nodes/core/scene-3d.ts';
@@ -61,7 +61,7 @@ export const compoundParabolic3d: ElementRecord3d<Parabolic> = {
       const dir = sd < 0 ? 1 : sd > 2 * e.g.gap ? -1 : 0;
       if (dir === 0) return false;
       move(e, st, dir);
-      if (st.pole?.finite) move(e, st.pole, dir);
+      if (st.pole) move(e, st.pole, dir);
       st.depth += 1;
       return true;
     },

@@ -6,8 +6,9 @@
  *
  * The distance bound needs, besides the point and its conformal factor, where the composed map
  * sends ∞ — its pole (docs/math-3d.md "§8 The tracer's distance bound"). When the walk tracks it,
- * every step moves the pole by the same map as the point: an inversion sends a pole at ∞ to its
- * centre, any other pole like a point; an isometry moves a finite pole and keeps one at ∞.
+ * every step moves the pole by the same map as the point. ∞ is stood for by the point POLE_AT_INFINITY
+ * (10¹⁸ away: an inversion sends it to within r²·10⁻¹⁸ of its centre, squared it still fits float32,
+ * and isometries keep it 10¹⁸ away), so no step needs a case for it.
  */
 import type { Element3d } from '../../../nodes/core/scene-3d.ts';
 import type { GlslFunction } from '../../glsl/snippet.ts';
@@ -24,17 +25,18 @@ export interface Walk3dState {
   pole: Pole3d | null;
 }
 
-/** A point that may be ∞ (`finite` false: x, y, z are meaningless). */
 export interface Pole3d {
   x: number;
   y: number;
   z: number;
-  finite: boolean;
 }
+
+/** The pole before any step: a stand-in for ∞ (see above). */
+export const POLE_AT_INFINITY = 1e18;
 
 /** What the walk needs a GLSL step to emit beyond moving `p`. */
 export interface StepHooks {
-  /** Also move `vec3 pole` (`bool poleFinite` tells whether it is finite) by the same map. */
+  /** Also move `vec3 pole` by the same map. */
   readonly pole: boolean;
   /** A statement run when the element applies, just before its `continue` ('' for none). */
   readonly applied: string;
@@ -63,7 +65,7 @@ export interface GlslElement3d<E extends Element3d = Element3d> {
   pack(e: E): number[];
   /**
    * The CPU `step` as statements in the walk loop, with `vec4 d0, d1, …` bound to its data and
-   * `vec3 p`, `float s`, `int depth` (and, with `hooks.pole`, `vec3 pole`, `bool poleFinite`) in
+   * `vec3 p`, `float s`, `int depth` (and, with `hooks.pole`, `vec3 pole`) in
    * scope; when it applies it ends with `hooks.applied` and `continue`.
    */
   step(hooks: StepHooks): string;

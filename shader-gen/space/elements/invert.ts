@@ -2,7 +2,7 @@
  * Sphere inversion of the walk state, shared by every kind that inverts (CPU and GLSL twins):
  *   d = x − c, |d|² clamped below by TINY (the centre itself has no finite image: it goes very far
  *   instead of to ∞, like the 2D centre guard), k = r²/|d|², x ← c + k·d, s ← s·k;
- * a tracked pole moves by the same inversion, ∞ going to the centre c (docs/math-3d.md §1, §8).
+ * a tracked pole moves by the same inversion (docs/math-3d.md §1, §8).
  */
 import { floatLiteral } from '../../glsl/literal.ts';
 import { glslFunction } from '../../glsl/snippet.ts';
@@ -11,36 +11,22 @@ import type { Pole3d, Walk3dState } from './element-3d-kind.ts';
 /** Smallest |d|² used (a normal float32, so the GPU computes the same). */
 export const TINY_D2 = 1e-30;
 
-/** Moves a tracked pole by the inversion in (c, r²): ∞ ↦ c, else like a point. */
-function invertPole(pole: Pole3d, cx: number, cy: number, cz: number, r2: number): void {
-  if (!pole.finite) {
-    pole.x = cx;
-    pole.y = cy;
-    pole.z = cz;
-    pole.finite = true;
-    return;
-  }
-  const dx = pole.x - cx;
-  const dy = pole.y - cy;
-  const dz = pole.z - cz;
+/** Inverts a point in (c, r²), |d|² clamped below by TINY. Returns the factor k. */
+function invertPoint(pt: Pole3d, cx: number, cy: number, cz: number, r2: number): number {
+  const dx = pt.x - cx;
+  const dy = pt.y - cy;
+  const dz = pt.z - cz;
   const k = r2 / Math.max(dx * dx + dy * dy + dz * dz, TINY_D2);
-  pole.x = cx + dx * k;
-  pole.y = cy + dy * k;
-  pole.z = cz + dz * k;
+  pt.x = cx + dx * k;
+  pt.y = cy + dy * k;
+  pt.z = cz + dz * k;
+  return k;
 }
 
 export function invertWalk(st: Walk3dState, cx: number, cy: number, cz: number, r2: number): void {
-  const dx = st.x - cx;
-  const dy = st.y - cy;
-  const dz = st.z - cz;
-  const k = r2 / Math.max(dx * dx + dy * dy + dz * dz, TINY_D2);
-  st.x = cx + dx * k;
-  st.y = cy + dy * k;
-  st.z = cz + dz * k;
-  st.s *= k;
-  if (st.pole) invertPole(st.pole, cx, cy, cz, r2);
+  st.s *= invertPoint(st, cx, cy, cz, r2);
+  if (st.pole) invertPoint(st.pole, cx, cy, cz, r2);
 }
-
 /** Squared distance from (x, y, z) to (cx, cy, cz). */
 export const dist2 = (x: number, y: number, z: number, cx: number, cy: number, cz: number): number =>
   (x - cx) ** 2 + (y - cy) ** 2 + (z - cz) ** 2;
@@ -55,16 +41,6 @@ float inversionFactor(vec3 p, vec3 c, float r2) {
 }`,
 );
 
-/** GLSL: a tracked pole moved by the inversion in (c, r²) — ∞ (poleFinite false) goes to c. */
-export const invertPoleGlsl = glslFunction(
-  'invertPole',
-  `
-vec3 invertPole(vec3 pole, bool poleFinite, vec3 c, float r2) {
-  return poleFinite ? c + (pole - c) * inversionFactor(pole, c, r2) : c;
-}`,
-  [inversionFactorGlsl],
-);
-
 /**
  * GLSL statements inverting p (and, with `pole`, the tracked pole) in the sphere (c, r²) given as
  * expressions, indented one level (they sit inside the block's `if`). `kf` names a fresh local.
@@ -74,7 +50,7 @@ export function invertGlsl(c: string, r2: string, kf: string, pole: boolean): st
     `float ${kf} = inversionFactor(p, ${c}, ${r2});`,
     `p = ${c} + (p - ${c}) * ${kf};`,
     `s *= ${kf};`,
-    ...(pole ? [`pole = invertPole(pole, poleFinite, ${c}, ${r2});`, 'poleFinite = true;'] : []),
+    ...(pole ? [`pole = ${c} + (pole - ${c}) * inversionFactor(pole, ${c}, ${r2});`] : []),
   ]
     .map((line) => `  ${line}`)
     .join('\n');

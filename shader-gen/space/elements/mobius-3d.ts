@@ -15,7 +15,7 @@ import {
   sphereRow,
 } from './ball-side.ts';
 import { appliedGlsl, type ElementRecord3d } from './element-3d-kind.ts';
-import { inversionFactorGlsl, invertGlsl, invertPoleGlsl, invertWalk } from './invert.ts';
+import { inversionFactorGlsl, invertGlsl, invertWalk } from './invert.ts';
 
 type Mobius = Extract<Element3d, { kind: 'mobius-3d' }>;
 
@@ -67,6 +67,6 @@ float mobius3dRegionDistance(vec3 p, vec4 d0, vec4 d1, vec4 d2, vec4 d3) {
 }`,
       [ballSideDistanceGlsl],
     ),
-    deps: [inBallSideGlsl, inversionFactorGlsl, invertPoleGlsl],
+    deps: [inBallSideGlsl, inversionFactorGlsl],
   },
 };

@@ -1,6 +1,6 @@
 /**
  * Reflection in a plane (q, n), n unit: region the moved side (x − q)·n < 0; ρ(x) = x − 2((x − q)·n)n,
- * factor 1 — an isometry; a finite tracked pole is reflected too (docs/math-3d.md §1, §7, §8).
+ * factor 1 — an isometry; a tracked pole is reflected too (docs/math-3d.md §1, §7, §8).
  * GLSL packing (1 vec4): d0 = (n, −q·n), so (x − q)·n = dot(x, n) + d0.w.
  */
 import type { Element3d } from '../../../nodes/core/scene-3d.ts';
@@ -26,7 +26,7 @@ export const planeReflection: ElementRecord3d<PlaneReflection> = {
       st.y -= 2 * sd * ny;
       st.z -= 2 * sd * nz;
       const pole = st.pole;
-      if (pole?.finite) {
+      if (pole) {
         const ps = signed(e, pole.x, pole.y, pole.z);
         pole.x -= 2 * ps * nx;
         pole.y -= 2 * ps * ny;

@@ -5,7 +5,7 @@
 import type { Element3d } from '../../../nodes/core/scene-3d.ts';
 import { glslFunction } from '../../glsl/snippet.ts';
 import { appliedGlsl, type ElementRecord3d } from './element-3d-kind.ts';
-import { dist2, inversionFactorGlsl, invertGlsl, invertPoleGlsl, invertWalk } from './invert.ts';
+import { dist2, inversionFactorGlsl, invertGlsl, invertWalk } from './invert.ts';
 
 type SphereInversion = Extract<Element3d, { kind: 'sphere-inversion' }>;
 
@@ -74,6 +74,6 @@ float sphereInversionMirror(vec3 p, vec4 d0, vec4 d1, out vec3 q, out float far)
 }`,
       [inversionFactorGlsl],
     ),
-    deps: [inversionFactorGlsl, invertPoleGlsl],
+    deps: [inversionFactorGlsl],
   },
 };

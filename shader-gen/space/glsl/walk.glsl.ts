@@ -10,10 +10,11 @@
  */
 import type { Scene3d } from '../../../nodes/core/scene-3d.ts';
 import { GLSL_FAR } from '../../glsl/iis.glsl.ts';
+import { floatLiteral } from '../../glsl/literal.ts';
 import type { GlslFunction } from '../../glsl/snippet.ts';
 import type { SourceBuilder } from '../../glsl/source.ts';
 import { ELEMENT_ARRAY, type SceneValues } from '../../glsl/values.ts';
-import type { ElementRecord3d } from '../elements/element-3d-kind.ts';
+import { type ElementRecord3d, POLE_AT_INFINITY } from '../elements/element-3d-kind.ts';
 import { ballDistanceGlsl } from '../elements/sphere-inversion.ts';
 import type { TracePlan } from '../plan.ts';
 import { packSeed, seedDistanceGlsl } from '../seeds-3d.ts';
@@ -95,36 +96,39 @@ function coverExpr(placed: PlacedWalk, skip: number): string {
 }
 
 /**
- * Statements setting `de` to coverDistance(p, −1, mirrored) of ../walk.ts: each cover below the
- * minimum so far also tries its mirrored cover (the image q, L_j there, folded back).
+ * Statements setting `de` to ../walk.ts endDistance: min(seeds, covers) with the nearest cover
+ * raised to its mirrored cover (the image q, L_j there, carried back) — one mirror, O(n) at run time.
  */
-function mirroredCoverStatements(placed: PlacedWalk): string[] {
-  const lines = [`  float de = max(0.0, ${seedsMin(placed)});`];
+function endDistanceStatements(placed: PlacedWalk): string[] {
+  const lines = [
+    `  float de = max(0.0, ${seedsMin(placed)});`,
+    `  float second = ${GLSL_FAR};`,
+    '  int nearest = -1;',
+  ];
+  placed.elements.forEach((_, j) => {
+    lines.push(
+      `  float c${j} = ${coverOf(placed, j)};`,
+      `  if (c${j} < de) { second = de; de = c${j}; nearest = ${j}; } else second = min(second, c${j});`,
+    );
+  });
   placed.elements.forEach(({ record, rows, hull }, j) => {
-    const cover = coverOf(placed, j);
     const mirror = record.glsl.mirror;
-    if (!mirror) {
-      lines.push(`  de = min(de, ${cover});`);
-      return;
-    }
+    if (!mirror) return;
     const reach = hull ? `${local(hull[1])}.x` : GLSL_FAR;
     lines.push(
-      '  {',
-      `    float cj = ${cover};`,
-      '    if (cj < de) {',
-      '      vec3 q;',
-      '      float far;',
-      `      float r2 = ${mirror.name}(p, ${rows.map(local).join(', ')}, q, far);`,
-      '      vec3 pm = p;',
-      '      p = q;',
-      `      float lq = ${coverExpr(placed, j)};`,
-      '      p = pm;',
-      `      cj = max(cj, r2 == 0.0 ? lq : r2 * (lq / (far * min(${reach}, far + lq))));`,
-      '    }',
-      '    de = min(de, cj);',
+      `  if (nearest == ${j}) {`,
+      '    vec3 q;',
+      '    float far;',
+      `    float r2 = ${mirror.name}(p, ${rows.map(local).join(', ')}, q, far);`,
+      '    vec3 pm = p;',
+      '    p = q;',
+      `    float lq = ${coverExpr(placed, j)};`,
+      '    p = pm;',
+      `    de = max(de, r2 == 0.0 ? lq : r2 * (lq / (far * min(${reach}, far + lq))));`,
       '  }',
     );
   });
+  lines.push('  de = min(de, second);');
   return lines;
 }
 
@@ -147,7 +151,7 @@ export function emitWalk(out: SourceBuilder, placed: PlacedWalk, record: boolean
     '  vec3 p = start;',
     '  float s = 1.0;',
     '  int depth = 0;',
-    ...(record ? ['  vec3 pole = vec3(0.0);', '  bool poleFinite = false;'] : []),
+    ...(record ? [`  vec3 pole = vec3(${floatLiteral(POLE_AT_INFINITY)}, 0.0, 0.0);`] : []),
     `  for (; depth < ${limit};) {`,
   );
   placed.elements.forEach(({ record: kind, rows: data }, i) => {
@@ -175,10 +179,7 @@ export function emitWalk(out: SourceBuilder, placed: PlacedWalk, record: boolean
   }
   out.push('  info = vec4(sd / s, float(depth), float(seed), s);', '  fin = p;');
   if (record) {
-    out.push(
-      ...mirroredCoverStatements(placed),
-      '  return de / (s * (1.0 + (poleFinite ? de / length(p - pole) : 0.0)));',
-    );
+    out.push(...endDistanceStatements(placed), '  return de / (s * (1.0 + de / length(p - pole)));');
   } else out.push('  return 0.0;');
   out.push('}');
 }

@@ -1,9 +1,9 @@
 /**
  * `kleinflow render` of a 3D graph through the real executable: on worker threads it writes the
- * bytes of one thread; it says its estimate before any progress, then progress (--progress
- * forces both on a render this small; without it a small render is silent, tests/cli/render-3d.test.ts);
- * at the largest size the estimate is the first line, said
- * before the long work starts (the test stops the render there).
+ * bytes of one thread; it says its estimate before any progress, then progress (--progress forces
+ * both on a render this small, which is otherwise silent: tests/cli/render-3d.test.ts); at the
+ * largest size the estimate is the first line, said before the long work starts (the test stops
+ * the render there).
  */
 import { spawn } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';

@@ -36,37 +36,84 @@ export function tracePixel(plan: TracePlan, width: number, height: number, px: n
   return { o: basis.origin, d, angle, hit: traceRay(plan, basis.origin, d, angle) };
 }
 
+/**
+ * What every pixel of one render shares, built once per thread: the trace plan and the settings.
+ * A pixel's colour depends on nothing else (no state carries from pixel to pixel, the sample
+ * jitter is a function of the sample index), so any set of rows rendered anywhere, in any order,
+ * gives the bytes of the whole render: `kleinflow render` splits an image into bands this way.
+ */
+export interface Render3dFrame {
+  readonly plan: TracePlan;
+  readonly width: number;
+  readonly height: number;
+  readonly samples: number;
+  readonly bg: readonly number[];
+  readonly bgAlpha: number;
+}
+
+export function render3dFrame(
+  scene: Scene3d,
+  width: number,
+  height: number,
+  options: Omit<Render3dOptions, 'onProgress'> = {},
+): Render3dFrame {
+  return {
+    plan: prepareTrace3d(scene),
+    width,
+    height,
+    samples: Math.max(1, Math.round(options.samples ?? scene.samples)),
+    bg: toLinear(scene.background),
+    bgAlpha: options.bgAlpha ?? 1,
+  };
+}
+
+/** Pixel (px, row), row 0 at the TOP, as RGBA bytes written to data[o … o + 3]. */
+export function renderPixel3d(f: Render3dFrame, px: number, row: number, data: Uint8ClampedArray, o: number) {
+  const py = f.height - 1 - row;
+  const sum = [0, 0, 0, 0];
+  for (let k = 0; k < f.samples; k++) {
+    const [jx, jy] = sampleOffset(k);
+    const { o: origin, d, angle, hit } = tracePixel(f.plan, f.width, f.height, px + jx, py + jy);
+    const c = hit.hit ? shadeHit(f.plan, origin, d, angle, hit) : f.bg;
+    const a = hit.hit ? 1 : f.bgAlpha;
+    for (let i = 0; i < 3; i++) sum[i]! += c[i]! * a;
+    sum[3]! += a;
+  }
+  const alpha = sum[3]! / f.samples;
+  for (let i = 0; i < 3; i++)
+    data[o + i] = Math.round(255 * linearToSrgb(Math.min(1, alpha > 0 ? sum[i]! / sum[3]! : 0)));
+  data[o + 3] = Math.round(255 * alpha);
+}
+
+/**
+ * Rows start … end − 1 (row 0 at the top) into `data`, row `start` at offset 0. `onRow` gets the
+ * number of rows done and may return false to stop; returns whether every row was rendered.
+ */
+export function renderRows3d(
+  f: Render3dFrame,
+  start: number,
+  end: number,
+  data: Uint8ClampedArray,
+  onRow?: (rowsDone: number) => boolean | undefined,
+): boolean {
+  for (let row = start; row < end; row++) {
+    const base = 4 * (row - start) * f.width;
+    for (let px = 0; px < f.width; px++) renderPixel3d(f, px, row, data, base + 4 * px);
+    if (onRow?.(row + 1 - start) === false) return false;
+  }
+  return true;
+}
+
 export function renderScene3d(
   scene: Scene3d,
   width: number,
   height: number,
   options: Render3dOptions = {},
 ): Raster3d {
-  const plan = prepareTrace3d(scene);
-  const samples = Math.max(1, Math.round(options.samples ?? scene.samples));
-  const bg = toLinear(scene.background);
-  const bgAlpha = options.bgAlpha ?? 1;
   const data = new Uint8ClampedArray(width * height * 4);
-  for (let row = 0; row < height; row++) {
-    const py = height - 1 - row;
-    for (let px = 0; px < width; px++) {
-      const sum = [0, 0, 0, 0];
-      for (let k = 0; k < samples; k++) {
-        const [jx, jy] = sampleOffset(k);
-        const { o, d, angle, hit } = tracePixel(plan, width, height, px + jx, py + jy);
-        const c = hit.hit ? shadeHit(plan, o, d, angle, hit) : bg;
-        const a = hit.hit ? 1 : bgAlpha;
-        for (let i = 0; i < 3; i++) sum[i]! += c[i]! * a;
-        sum[3]! += a;
-      }
-      const o = 4 * (row * width + px);
-      const alpha = sum[3]! / samples;
-      for (let i = 0; i < 3; i++)
-        data[o + i] = Math.round(255 * linearToSrgb(Math.min(1, alpha > 0 ? sum[i]! / sum[3]! : 0)));
-      data[o + 3] = Math.round(255 * alpha);
-    }
-    if (options.onProgress?.((row + 1) / height) === false) break;
-  }
+  renderRows3d(render3dFrame(scene, width, height, options), 0, height, data, (rows) =>
+    options.onProgress?.(rows / height),
+  );
   return { width, height, data };
 }
 

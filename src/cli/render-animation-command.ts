@@ -37,7 +37,11 @@ export const ANIMATION_OPTIONS: readonly OptionSpec[] = [
     value: 'A:B',
     doc: 'with --frames: only frames A to B−1 (split work across machines)',
   },
-  { long: 'threads', value: 'N', doc: 'with --frames: worker threads (default: every core)' },
+  {
+    long: 'threads',
+    value: 'N',
+    doc: 'worker threads of --frames and of a 3D graph (default: every core)',
+  },
 ];
 
 export const ANIMATION_USAGE = [
@@ -56,6 +60,12 @@ export function parseTimeOption(parsed: ParsedArgs): number {
   return t;
 }
 
+/** --threads N (undefined: every core). */
+export function parseThreadsOption(parsed: ParsedArgs): number | undefined {
+  const text = stringOption(parsed, 'threads');
+  return text ? parseIntegerOption('threads', text, 1, 1024) : undefined;
+}
+
 export async function runAnimationCommand(parsed: ParsedArgs, graphPath: string, io: CliIo): Promise<number> {
   const out = stringOption(parsed, 'out') ?? stringOption(parsed, 'output');
   if (!out) throw usageError('missing --out DIR/ or --out OUT.gif (where to write the frames)');
@@ -68,8 +78,7 @@ export async function runAnimationCommand(parsed: ParsedArgs, graphPath: string,
     ? parseSizeOption('size', sizeText, LIMITS.maxImageSide)
     : DEFAULT_FRAME_SIZE;
   const samplesText = stringOption(parsed, 'samples');
-  const threadsText = stringOption(parsed, 'threads');
-  const threads = threadsText ? parseIntegerOption('threads', threadsText, 1, 1024) : undefined;
+  const threads = parseThreadsOption(parsed);
   const load = await loadScene(io, graphPath);
   const samples = samplesText
     ? parseIntegerOption('samples', samplesText, 1, LIMITS.maxSamples)

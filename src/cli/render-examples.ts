@@ -1,7 +1,8 @@
 /**
  * `npm run render-examples [-- NAME...] [--size WxH] [--thumbnails]`: renders every
  * examples/*.kleinflow.json (or the named ones) to examples/png/NAME.png with the CPU interpreter
- * at the graph's own view and sample count, the graph embedded, two at a time on worker threads.
+ * at the graph's own view and sample count, the graph embedded: plane examples two at a time on
+ * worker threads, then space examples one at a time, each on every core.
  * `--thumbnails` writes the Examples gallery's small pictures instead (examples/thumbs/, no graph
  * inside) and records which version of each example they show (thumbs/sources.json), so a test
  * can tell a stale thumbnail. Prints name and time; exits 1 if any example fails.
@@ -15,13 +16,14 @@ import { parseArgs, parseSizeOption, stringOption } from './args.ts';
 import { CliError } from './command.ts';
 import {
   allExamples,
+  EXAMPLES_3D_DIR,
   EXAMPLES_PNG_DIR,
   EXAMPLES_THUMB_DIR,
   exampleDigest,
   examplePath,
   THUMB_SOURCES,
 } from './examples.ts';
-import type { RenderJob, RenderJobResult } from './render-job.ts';
+import { type RenderJob, type RenderJobResult, render3dJob } from './render-job.ts';
 import { runPool } from './worker-pool.ts';
 
 const DEFAULT_SIZE = { width: 800, height: 800 };
@@ -60,8 +62,7 @@ async function main(argv: readonly string[]): Promise<number> {
   const rendered: string[] = [];
   const started = performance.now();
   let failed = 0;
-  const jobModule = new URL('./render-job.ts', import.meta.url);
-  await runPool<RenderJob, RenderJobResult>(jobModule, jobs, Math.min(2, availableParallelism()), (r) => {
+  const report = (r: RenderJobResult) => {
     if (r.error !== undefined) {
       failed++;
       process.stderr.write(`${r.name.padEnd(28)} FAILED: ${r.error}\n`);
@@ -69,7 +70,13 @@ async function main(argv: readonly string[]): Promise<number> {
       rendered.push(r.name);
       process.stdout.write(`${r.name.padEnd(28)} ${String(Math.round(r.ms)).padStart(6)} ms\n`);
     }
-  });
+  };
+  const in3d = (job: RenderJob) => dirs.get(job.name) === EXAMPLES_3D_DIR;
+  const jobModule = new URL('./render-job.ts', import.meta.url);
+  const plane = jobs.filter((job) => !in3d(job));
+  await runPool<RenderJob, RenderJobResult>(jobModule, plane, Math.min(2, availableParallelism()), report);
+  // Space examples one at a time, each split over every core.
+  for (const job of jobs.filter(in3d)) report(await render3dJob(job, availableParallelism()));
   if (thumbs) await recordThumbSources(rendered, all);
   const total = ((performance.now() - started) / 1000).toFixed(1);
   process.stdout.write(

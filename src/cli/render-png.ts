@@ -1,14 +1,14 @@
 /**
  * Scene → PNG bytes on the CPU, with the graph's JSON embedded (iTXt "kleinflow") so the picture
  * reopens as its graph. Shared by `kleinflow render` and `npm run render-examples`; a 3D graph is
- * drawn by the CPU sphere tracer (shader-gen/space/render-3d.ts).
+ * drawn by the CPU sphere tracer (shader-gen/space/render-3d.ts) on worker threads.
  */
 import type { Scene } from '../../nodes/core/scene.ts';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
 import { rasterize } from '../../shader-gen/raster.ts';
-import { renderScene3d } from '../../shader-gen/space/render-3d.ts';
 import { encodePng } from '../io/png.ts';
 import { PNG_GRAPH_KEY } from './load-graph.ts';
+import { type Pool3dRequest, renderScene3dOnPool } from './render-3d-pool.ts';
 import { scenePictures } from './scene-pictures.ts';
 
 export interface PngRequest {
@@ -29,8 +29,11 @@ export function renderScenePng(scene: Scene, graphText: string | null, request: 
     samples: request.samples,
     onProgress: keepGoing(request.onProgress),
   });
-  return encodePng(image, graphText === null ? {} : { [PNG_GRAPH_KEY]: graphText });
+  return encodeWithGraph(image, graphText);
 }
+
+const encodeWithGraph = (image: Parameters<typeof encodePng>[0], graphText: string | null) =>
+  encodePng(image, graphText === null ? {} : { [PNG_GRAPH_KEY]: graphText });
 
 /** A progress callback that never cancels (the renderers stop when their callback says false). */
 const keepGoing = (onProgress?: (done: number) => void) =>
@@ -41,11 +44,14 @@ const keepGoing = (onProgress?: (done: number) => void) =>
       }
     : undefined;
 
-/** A 3D graph's picture: the CPU sphere tracer at the graph's camera, graph embedded like 2D. */
-export function renderScene3dPng(scene: Scene3d, graphText: string | null, request: PngRequest): Uint8Array {
-  const image = renderScene3d(scene, request.width, request.height, {
-    samples: request.samples,
-    onProgress: keepGoing(request.onProgress),
-  });
-  return encodePng(image, graphText === null ? {} : { [PNG_GRAPH_KEY]: graphText });
+/**
+ * A 3D graph's picture: the CPU sphere tracer at the graph's camera, in bands over `threads`
+ * worker threads (render-3d-pool.ts), graph embedded like 2D.
+ */
+export async function renderScene3dPngOnPool(
+  scene: Scene3d,
+  graphText: string | null,
+  request: Pool3dRequest,
+): Promise<Uint8Array> {
+  return encodeWithGraph(await renderScene3dOnPool(scene, request), graphText);
 }

@@ -52,4 +52,30 @@ describe('render estimate', () => {
       'rendering big.png 50% (about 20 s left)\n',
     ]);
   });
+
+  it('in a log, writes a line at least every half minute between quarters, with the time left', () => {
+    let t = 0;
+    const log = sink(false);
+    const p = progressLine(log.out, 'rendering huge.png', () => t);
+    t = 10_000;
+    p.update(0.001);
+    t = 31_000;
+    p.update(0.002);
+    t = 40_000;
+    p.update(0.003);
+    expect(log.lines).toEqual(['rendering huge.png 0.2% (about 4 h 17 min left)\n']);
+  });
+
+  it('on a terminal, redraws each second, in tenths of a percent', () => {
+    let t = 0;
+    const tty = sink(true);
+    const p = progressLine(tty.out, 'r', () => t);
+    p.update(0.001);
+    t = 500;
+    p.update(0.002); // under a second, same whole percent: not redrawn
+    t = 1_500;
+    p.update(0.003);
+    p.finish();
+    expect(tty.lines).toEqual(['\rr   0.1%', '\rr   0.3%', '\rr 100%  \n']);
+  });
 });

@@ -147,6 +147,18 @@ export class FrameSchedule {
     return b && { bands: b.bands, rows: b.done, of: b.size.height };
   }
 
+  /** The schedule's part of the viewport's stats (viewport-types.ts ViewportStats). */
+  stats() {
+    return {
+      samples: this.fullSamples,
+      renderScale: this.drawnScale,
+      renderSize: { ...this.drawnSize },
+      interactiveScale: this.dynamic.scale,
+      bands: this.lastBands,
+      band: this.progress,
+    };
+  }
+
   /** Whether frames are still wanted: a frame to draw, or a fence to poll. */
   wantsFrames(target: number, drawable: boolean): boolean {
     return (drawable && this.due(target)) || this.inFlight.pending || this.dynamic.measuring;

@@ -15,6 +15,7 @@ import { DEFAULT_VIEW, type View } from '../../nodes/core/view.ts';
 import { sampleOffset } from '../../shader-gen/view.ts';
 import { type Drawable, is3d } from './drawable.ts';
 import { BAND_MS } from './frame-bands.ts';
+import { FrameLoop } from './frame-loop.ts';
 import { type FramePlan, FrameSchedule } from './frame-schedule.ts';
 import { liveMedia } from './live-media.ts';
 import { refreshLive } from './live-textures.ts';
@@ -22,23 +23,12 @@ import { PaneTargets } from './pane-targets.ts';
 import { inspectCssPoint, type PixelInspection } from './pixel-probe.ts';
 import { Renderer } from './renderer.ts';
 import { type SceneProgram, SceneProgramBuilder } from './scene-program.ts';
-import { requestSrgbDrawingBuffer } from './srgb-canvas.ts';
+import { openSrgbCanvas, requestSrgbDrawingBuffer, sizeSrgbCanvas } from './srgb-canvas.ts';
 import { renderTiled } from './tiled-render.ts';
 import type { RenderToPixelsOptions, ViewportOptions, ViewportStats } from './viewport-types.ts';
 
 export type { PixelInspection } from './pixel-probe.ts';
 export type { RenderToPixelsOptions, ViewportOptions, ViewportStats } from './viewport-types.ts';
-
-const CONTEXT_ATTRIBUTES: WebGLContextAttributes = {
-  // An RGBA drawing buffer: only such a buffer can become SRGB8_ALPHA8 (srgb-canvas.ts). The
-  // picture stays opaque: on screen u_bgAlpha is 1, so every resolved pixel has alpha 1.
-  alpha: true,
-  antialias: false,
-  depth: false,
-  stencil: false,
-  preserveDrawingBuffer: false,
-  powerPreference: 'high-performance',
-};
 
 export class Viewport {
   private readonly gl: WebGL2RenderingContext;
@@ -57,8 +47,7 @@ export class Viewport {
   /** When the first of the scenes not yet taken by a frame was set. */
   private sceneSetAt = 0;
   private framesDrawn = 0;
-  private raf = 0;
-  private wakeTimer: ReturnType<typeof setTimeout> | undefined;
+  private readonly loop = new FrameLoop((now) => this.tick(now));
   private lost = false;
   private disposed = false;
   private readonly idleBakeMs: number;
@@ -73,10 +62,8 @@ export class Viewport {
     private readonly canvas: HTMLCanvasElement,
     private readonly options: ViewportOptions = {},
   ) {
-    const gl = canvas.getContext('webgl2', CONTEXT_ATTRIBUTES);
-    if (!gl) throw new Error('WebGL2 is not available in this browser');
+    const gl = openSrgbCanvas(canvas);
     this.gl = gl;
-    requestSrgbDrawingBuffer(gl, canvas.width, canvas.height);
     this.idleBakeMs = options.idleBakeMs ?? 600;
     this.frames = new FrameSchedule(options.bandMs ?? BAND_MS);
     this.targets = new PaneTargets(gl);
@@ -85,7 +72,7 @@ export class Viewport {
     const onLost = (e: Event) => {
       e.preventDefault(); // tells the browser we want the context back
       this.lost = true;
-      this.stopLoop();
+      this.loop.stop();
       this.programs.forget(this.renderer);
       this.renderer = null; // every GL object died with the context
       this.targets.forget();
@@ -121,14 +108,9 @@ export class Viewport {
       compiles: this.programs.compiles(this.renderer),
       bakedCompiles: this.programs.bakedCompiles(this.renderer),
       frames: this.framesDrawn,
-      samples: this.frames.fullSamples,
       baked: this.active?.baked ?? false,
       liveUploads: this.liveUploads,
-      renderScale: this.frames.scale,
-      renderSize: { ...this.frames.size },
-      interactiveScale: this.frames.dynamic.scale,
-      bands: this.frames.bands,
-      band: this.frames.progress,
+      ...this.frames.stats(),
     };
   }
 
@@ -166,13 +148,7 @@ export class Viewport {
   }
 
   setSize(width: number, height: number, dpr = globalThis.devicePixelRatio || 1): void {
-    const w = Math.max(1, Math.round(width * dpr));
-    const h = Math.max(1, Math.round(height * dpr));
-    if (this.canvas.width !== w) this.canvas.width = w;
-    if (this.canvas.height !== h) this.canvas.height = h;
-    requestSrgbDrawingBuffer(this.gl, w, h);
-    this.canvas.style.width = `${width}px`;
-    this.canvas.style.height = `${height}px`;
+    sizeSrgbCanvas(this.gl, this.canvas, width, height, dpr);
     this.restart();
   }
 
@@ -190,19 +166,13 @@ export class Viewport {
     this.refreshLiveFrames(renderer, program.pictures);
     this.exporting = true;
     try {
+      const view = opts.view ?? this.view(scene);
+      const camera = this.camera(scene, opts.camera);
+      const tiled = { ...opts, view, camera, transparent: opts.transparent ?? false };
       return await renderTiled(
         () => this.requireRenderer(),
         () => program,
-        {
-          width: opts.width,
-          height: opts.height,
-          samples: opts.samples,
-          view: opts.view ?? this.view(scene),
-          camera: this.camera(scene, opts.camera),
-          transparent: opts.transparent ?? false,
-          tile: opts.tile,
-          onProgress: opts.onProgress,
-        },
+        tiled,
       );
     } finally {
       this.exporting = false;
@@ -223,7 +193,7 @@ export class Viewport {
 
   dispose(): void {
     this.disposed = true;
-    this.stopLoop();
+    this.loop.stop();
     this.detach();
     if (this.renderer) {
       this.frames.dispose(this.gl);
@@ -266,21 +236,10 @@ export class Viewport {
   }
 
   private requestFrame(): void {
-    if (this.raf !== 0 || this.lost || this.disposed) return;
-    clearTimeout(this.wakeTimer);
-    this.wakeTimer = undefined;
-    this.raf = requestAnimationFrame((now) => this.tick(now));
-  }
-
-  private stopLoop(): void {
-    if (this.raf !== 0) cancelAnimationFrame(this.raf);
-    this.raf = 0;
-    clearTimeout(this.wakeTimer);
-    this.wakeTimer = undefined;
+    if (!this.lost && !this.disposed) this.loop.request();
   }
 
   private tick(now: number): void {
-    this.raf = 0;
     const renderer = this.renderer;
     const scene = this.scene;
     if (!renderer || !scene || this.lost || this.disposed) return;
@@ -364,7 +323,7 @@ export class Viewport {
     const bake = this.programs.bakeDueIn(now, this.idleBakeMs);
     const refine = this.frames.refineIn(now);
     const due = bake === null ? refine : refine === null ? bake : Math.min(bake, refine);
-    if (due !== null) this.wakeTimer = setTimeout(() => this.requestFrame(), due);
+    if (due !== null) this.loop.wakeIn(due);
   }
 }
 

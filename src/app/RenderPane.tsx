@@ -38,6 +38,8 @@ export interface RenderInfo {
   readonly ms: number;
   /** < 1: a 3D preview drawn at reduced resolution while the picture changes. */
   readonly scale?: number;
+  /** The share (0–1) of the next full-size 3D sample drawn so far, while it is drawn in bands. */
+  readonly band?: number;
 }
 
 interface Props {
@@ -105,9 +107,15 @@ export function RenderPane({
 
   useEffect(() => {
     try {
+      // A band reports its progress on top of the last frame's numbers; the next frame clears it.
+      let last: RenderInfo | null = null;
       const v = new Viewport(canvas.current!, {
         onDiagnostics: setCompileDiagnostics,
-        onFrame: (info) => callbacks.current.onFrame(info),
+        onFrame: (info) => {
+          last = info;
+          callbacks.current.onFrame(info);
+        },
+        onBand: ({ rows, of }) => last && callbacks.current.onFrame({ ...last, band: rows / of }),
       });
       viewport.current = v;
       onViewport(v);

@@ -1,5 +1,5 @@
 /** The status line: diagnostics (click for the list), render progress and autosave state. */
-import { useState } from 'react';
+import { useEffect, useState } from 'react';
 import type { Diagnostic, DiagnosticFix } from '../../nodes/core/diagnostics.ts';
 import { FixButton } from '../editor/FixButton.tsx';
 import type { RenderInfo } from './RenderPane.tsx';
@@ -15,11 +15,36 @@ interface Props {
   onFix(fix: DiagnosticFix): void;
 }
 
+/** The render progress line (see the README's "The 3D view"). */
+function progressText(render: RenderInfo): string {
+  const percent = (f: number) => `${Math.round(f * 100)} %`;
+  if (render.band !== undefined && render.samples === 0) return `Full size: ${percent(render.band)} …`;
+  if (render.scale !== undefined && render.scale < 1) return `Preview at ${percent(render.scale)} resolution`;
+  const done = render.samples >= render.target;
+  const text = `${done ? 'Rendered' : 'Rendering'} ${render.samples}/${render.target} samples`;
+  return render.band === undefined ? text : `${text} (next: ${percent(render.band)})`;
+}
+
+/**
+ * What a screen reader hears: only that a slow full-size picture is being drawn and that it is
+ * done, never each band's percentage or each sample (the progress line changes every frame).
+ */
+function useRenderAnnouncement(render: RenderInfo | null): string {
+  const [said, setSaid] = useState('');
+  const banding = render?.band !== undefined && render.samples === 0;
+  const full = render !== null && render.band === undefined && (render.scale ?? 1) === 1;
+  useEffect(() => {
+    if (banding) setSaid('Drawing the picture at full size…');
+    else if (full) setSaid((s) => (s === '' ? s : 'The full-size picture is drawn.'));
+  }, [banding, full]);
+  return said;
+}
+
 export function StatusBar({ diagnostics, render, nodes, edges, saveState, onSelectNode, onFix }: Props) {
   const [open, setOpen] = useState(false);
   const errors = diagnostics.filter((d) => d.severity === 'error').length;
   const warnings = diagnostics.filter((d) => d.severity === 'warning').length;
-  const done = render && render.samples >= render.target;
+  const announcement = useRenderAnnouncement(render);
   return (
     <footer className="kf-status">
       <button
@@ -37,14 +62,15 @@ export function StatusBar({ diagnostics, render, nodes, edges, saveState, onSele
       <span data-testid="render-progress" className="kf-status__item">
         {render ? (
           <>
-            {render.scale !== undefined && render.scale < 1
-              ? `Preview at ${Math.round(render.scale * 100)}% resolution`
-              : `${done ? 'Rendered' : 'Rendering'} ${render.samples}/${render.target} samples`}
+            {progressText(render)}
             {render.ms > 0 && <span className="kf-status__muted"> · {render.ms.toFixed(0)} ms/frame</span>}
           </>
         ) : (
           'Renderer starting…'
         )}
+      </span>
+      <span className="kf-visually-hidden" role="status" data-testid="render-announcement">
+        {announcement}
       </span>
       <span className="kf-status__spacer" />
       <span className="kf-status__item kf-status__muted">

@@ -12,6 +12,17 @@ import { type Extent, ResolvePass } from './resolve-pass.ts';
 import { canvasEncodesSrgb } from './srgb-canvas.ts';
 import { type FrameParams, type GpuProgram, setFrameUniforms, uploadUniforms } from './uniforms.ts';
 
+/**
+ * An accumulation target to resolve: `samples` accumulated; `drawn`, the part of it drawn when
+ * smaller than the destination (stretched over it); `rows`, GL rows [y0, y1) to resolve alone.
+ */
+export interface Layer {
+  readonly target: RenderTarget;
+  readonly samples: number;
+  readonly drawn?: Extent;
+  readonly rows?: readonly [number, number];
+}
+
 export class Renderer {
   readonly programs: ProgramCache;
   /** The pictures programs sample, as textures (cached by src). */
@@ -119,42 +130,59 @@ export class Renderer {
   }
 
   /**
-   * Resolves `samples` accumulated samples to sRGB on the canvas (its drawing buffer is
-   * width×height; sRGB encoded by the buffer itself where srgb-canvas.ts got an sRGB one). `drawn`:
-   * the part of `target` drawn, when smaller than the canvas (stretched over it).
+   * Resolves `base` to sRGB on the canvas (its drawing buffer is width×height; sRGB encoded by the
+   * buffer itself where srgb-canvas.ts got an sRGB one), then `over`'s rows on top.
    */
-  present(target: RenderTarget, samples: number, width: number, height: number, drawn?: Extent): void {
-    const count = this.resolveCount(target, samples);
-    this.resolvePass.draw(target.texture, count, null, width, height, canvasEncodesSrgb(this.gl), drawn);
+  present(base: Layer, width: number, height: number, over?: Layer): void {
+    this.resolve(null, canvasEncodesSrgb(this.gl), width, height, base, over);
   }
 
-  /** Resolves width×height of `target` into `scratch` (SRGB8_ALPHA8) and reads it back, top row first. */
+  /** Resolves width×height of `base` (and `over`'s rows) into `scratch` (SRGB8_ALPHA8) and reads it back, top row first. */
   readResolved(
-    target: RenderTarget,
-    samples: number,
+    base: Layer,
     scratch: RenderTarget,
     width: number,
     height: number,
-    drawn?: Extent,
+    over?: Layer,
   ): Uint8ClampedArray {
     const gl = this.gl;
-    this.resolvePass.draw(
-      target.texture,
-      this.resolveCount(target, samples),
-      scratch.framebuffer,
-      width,
-      height,
-      true,
-      drawn,
-    );
+    this.resolve(scratch.framebuffer, true, width, height, base, over);
     gl.bindFramebuffer(gl.FRAMEBUFFER, scratch.framebuffer);
     const pixels = readTopRowFirst(gl, width, height);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     return pixels;
   }
 
-  private resolveCount(target: RenderTarget, samples: number): number {
-    return target.mode === 'sum' ? samples : 1;
+  private resolve(
+    framebuffer: WebGLFramebuffer | null,
+    srgb: boolean,
+    width: number,
+    height: number,
+    base: Layer,
+    over?: Layer,
+  ): void {
+    const gl = this.gl;
+    const pass = (l: Layer) =>
+      this.resolvePass.draw(
+        l.target.texture,
+        this.resolveCount(l),
+        framebuffer,
+        width,
+        height,
+        srgb,
+        l.drawn,
+      );
+    pass(base);
+    if (!over) return;
+    const [y0, y1] = over.rows ?? [0, height];
+    gl.enable(gl.SCISSOR_TEST);
+    gl.scissor(0, y0, width, y1 - y0);
+    pass(over);
+    gl.disable(gl.SCISSOR_TEST);
+  }
+
+  private resolveCount(l: Layer): number {
+    return l.target.mode === 'sum' ? l.samples : 1;
   }
 
   /** A float accumulation target and its 8-bit sRGB readback twin. */

@@ -6,6 +6,42 @@
  * shader encodes (resolve-pass.ts).
  */
 
+const CONTEXT_ATTRIBUTES: WebGLContextAttributes = {
+  // An RGBA drawing buffer: only such a buffer can become SRGB8_ALPHA8. The picture stays opaque:
+  // on screen u_bgAlpha is 1, so every resolved pixel has alpha 1.
+  alpha: true,
+  antialias: false,
+  depth: false,
+  stencil: false,
+  preserveDrawingBuffer: false,
+  powerPreference: 'high-performance',
+};
+
+/** The live picture's WebGL2 context, its drawing buffer sRGB where the browser can. */
+export function openSrgbCanvas(canvas: HTMLCanvasElement): WebGL2RenderingContext {
+  const gl = canvas.getContext('webgl2', CONTEXT_ATTRIBUTES);
+  if (!gl) throw new Error('WebGL2 is not available in this browser');
+  requestSrgbDrawingBuffer(gl, canvas.width, canvas.height);
+  return gl;
+}
+
+/** Sizes the canvas to width × height CSS px of `dpr` device pixels each, asking again for an sRGB buffer. */
+export function sizeSrgbCanvas(
+  gl: WebGL2RenderingContext,
+  canvas: HTMLCanvasElement,
+  width: number,
+  height: number,
+  dpr: number,
+): void {
+  const w = Math.max(1, Math.round(width * dpr));
+  const h = Math.max(1, Math.round(height * dpr));
+  if (canvas.width !== w) canvas.width = w;
+  if (canvas.height !== h) canvas.height = h;
+  requestSrgbDrawingBuffer(gl, w, h);
+  canvas.style.width = `${width}px`;
+  canvas.style.height = `${height}px`;
+}
+
 /** The parts of WebGL2RenderingContext that TypeScript's DOM types do not have yet. */
 interface SrgbDrawingBufferApi {
   drawingBufferStorage?: (format: number, width: number, height: number) => void;

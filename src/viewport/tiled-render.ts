@@ -80,7 +80,7 @@ export async function renderTiled(
           if (o.onProgress?.(done / total) === false) return null;
           await yieldToPage();
         }
-        const pixels = r0.readResolved(targets.accum, samples, targets.readback, tw, th);
+        const pixels = r0.readResolved({ target: targets.accum, samples }, targets.readback, tw, th);
         // Tile row 0 (top of the tile) lands on image row height − (y0 + th).
         const top = height - (y0 + th);
         for (let y = 0; y < th; y++) {

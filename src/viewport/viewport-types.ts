@@ -13,6 +13,12 @@ export interface ViewportOptions {
    * 3D preview drawn at reduced resolution while the picture changes (its samples count as 0).
    */
   onFrame?(info: { samples: number; target: number; ms: number; scale: number }): void;
+  /**
+   * After each band of a slow full-size 3D sample is shown but the last (which ends a frame): rows
+   * drawn from the top, of how many, and the full-size samples before this one (0: it is drawn over
+   * the preview).
+   */
+  onBand?(info: { rows: number; of: number; samples: number }): void;
   /** Stillness before the baked program is built (default 600; Infinity: never bake). */
   idleBakeMs?: number;
   /**
@@ -43,6 +49,8 @@ export interface ViewportStats {
   readonly interactiveScale: number;
   /** The bands the last full sample was drawn in (1: in one draw; frame-bands.ts). */
   readonly bands: number;
+  /** The full-size sample being drawn in bands now: bands and rows shown (from the top), of its rows. */
+  readonly band: { readonly bands: number; readonly rows: number; readonly of: number } | null;
 }
 
 export interface RenderToPixelsOptions {

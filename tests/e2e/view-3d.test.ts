@@ -13,6 +13,8 @@ import { mkdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { LIMITS } from '../../nodes/core/limits.ts';
+import { DEFAULT_LIGHTING_3D } from '../../nodes/core/scene-3d.ts';
 import { decodePng } from '../../src/io/png.ts';
 import { repoRoot, type ServedApp } from './app-server.ts';
 import { renderPixels, thumbDiff, waitRendered } from './editor-page.ts';
@@ -49,15 +51,52 @@ const SLOW = { timeout: 90_000 };
 
 /** The render node's cost settings for SwiftShader (values, never a recompile). */
 const CHEAP = { samples: 1, occlusion: 0, shadow: 0, maxIterations: 10, marchSteps: 48 };
-const cheapen = (p: Page = page) =>
+/** The example's own cost (one sample): a full-size frame SwiftShader draws in many bands. */
+const DEAR = {
+  samples: 1,
+  occlusion: DEFAULT_LIGHTING_3D.occlusion,
+  shadow: DEFAULT_LIGHTING_3D.shadow,
+  maxIterations: 30,
+  marchSteps: LIMITS.defaultMarchSteps,
+};
+const cheapen = (p: Page = page, params: Record<string, number> = CHEAP) =>
   p.evaluate(
     (params) =>
       window.__kleinflow!.store.dispatchSilently({
         type: 'set-params',
         patches: [{ nodeId: 'render', params }],
       }),
-    CHEAP,
+    params,
   );
+const paneStats = () => page.evaluate(() => window.__kleinflow!.viewport!.stats);
+interface Shot {
+  readonly width: number;
+  readonly height: number;
+  readonly data: number[];
+}
+/** The render pane as shown on screen, RGBA (the screenshot is decoded by the browser). */
+async function paneShot(): Promise<Shot> {
+  const png = await page.getByTestId('render-pane').screenshot();
+  return page.evaluate(async (b64) => {
+    const img = new Image();
+    img.src = `data:image/png;base64,${b64}`;
+    await img.decode();
+    const c = document.createElement('canvas');
+    [c.width, c.height] = [img.width, img.height];
+    const g = c.getContext('2d')!;
+    g.drawImage(img, 0, 0);
+    return { width: c.width, height: c.height, data: [...g.getImageData(0, 0, c.width, c.height).data] };
+  }, png.toString('base64'));
+}
+
+/** Mean absolute RGB difference of two same-sized images over rows [from, to) given as fractions of the height. */
+function rowsDiff(a: Shot, b: Shot, from: number, to: number) {
+  const [y0, y1] = [Math.ceil(from * a.height), Math.floor(to * a.height)];
+  let sum = 0;
+  for (let i = y0 * a.width * 4; i < y1 * a.width * 4; i++)
+    if (i % 4 !== 3) sum += Math.abs(a.data[i] - b.data[i]);
+  return sum / Math.max(1, (y1 - y0) * a.width * 3);
+}
 
 const distance = (c: Camera) => Math.hypot(...c.position.map((v, i) => v - c.target[i]));
 
@@ -106,6 +145,44 @@ describe('3D view', () => {
     expect(initial.sd).toBeGreaterThan(8); // a picture, not a flat background
     await page.screenshot({ path: join(shots, 'view-3d-desktop.png') });
   }, 180_000);
+
+  it('a slow full-size picture appears band by band over the preview, its progress in the status bar', async () => {
+    await cheapen(page, DEAR);
+    await waitRendered(page, 120_000);
+    const progress = page.getByTestId('render-progress');
+    // A partial picture: some bands shown, the sample not whole before or after the screenshot. The
+    // sample may win the race with the screenshot on a fast machine: then orbit and try again.
+    let partial: { shot: Shot; done: number; left: number } | null = null;
+    for (let attempt = 0; attempt < 4 && !partial; attempt++) {
+      await dragMouse(await freePanePoint(page), 20, 8);
+      await page.waitForFunction(() => {
+        const s = window.__kleinflow!.viewport!.stats;
+        return s.samples === 0 && s.band !== null && s.band.rows >= 0.1 * s.band.of;
+      }, SLOW);
+      const text = await progress.textContent();
+      const before = (await paneStats()).band;
+      const shot = await paneShot();
+      const after = await paneStats();
+      if (!before || !after.band || after.samples > 0 || after.band.rows > 0.9 * after.band.of) continue;
+      expect(text).toMatch(/^Full size: \d+ % …/);
+      expect(await page.getByTestId('render-announcement').textContent()).toMatch(/full size/);
+      partial = { shot, done: before.rows / before.of, left: after.band.rows / after.band.of };
+    }
+    expect(partial).not.toBeNull();
+    const { shot, done, left } = partial!;
+    await waitRendered(page, 120_000);
+    expect((await paneStats()).bands).toBeGreaterThan(1);
+    expect(await page.getByTestId('render-announcement').textContent()).toMatch(/drawn/);
+    const whole = await paneShot();
+    // The rows drawn by the screenshot are the full-size picture's; those not yet drawn, the
+    // upscaled preview's, which differ.
+    const top = rowsDiff(shot, whole, 0, done - 0.02);
+    const bottom = rowsDiff(shot, whole, left + 0.02, 1);
+    expect(top).toBeLessThan(1);
+    expect(bottom).toBeGreaterThan(Math.max(2, 4 * top));
+    await cheapen();
+    await waitRendered(page, 120_000);
+  }, 360_000);
 
   it('dragging orbits the camera: the picture changes, the camera is stored, nothing compiles', async () => {
     const before = await compiles();

@@ -142,7 +142,7 @@ const harness = {
     gl.bindTexture(gl.TEXTURE_2D, accum.texture);
     gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, linear.length, 1, gl.RGBA, gl.FLOAT, data);
     gl.bindTexture(gl.TEXTURE_2D, null);
-    const px = r.readResolved(accum, 1, readback, linear.length, 1);
+    const px = r.readResolved({ target: accum, samples: 1 }, readback, linear.length, 1);
     r.dispose();
     return linear.map((_, i) => px[i * 4]);
   },

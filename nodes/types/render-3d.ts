@@ -75,7 +75,7 @@ export const render3dNode = defineNode({
     marchSteps: setting('march steps', LIMITS.defaultMarchSteps, 'sphere-tracing steps per ray', true),
     deScale: setting(
       'DE scale',
-      0.9,
+      1,
       'each march step goes this fraction (≤ 1) of the distance estimate',
       true,
     ),

@@ -31,7 +31,7 @@ export function scene3d(
     camera: DEFAULT_CAMERA_3D,
     maxIterations: 30,
     marchSteps: 200,
-    deScale: 0.9,
+    deScale: 1,
     lighting: DEFAULT_LIGHTING_3D,
     coloring: { mode: 'depth-wheel', step: 0.12 },
     background: [0.06, 0.07, 0.1],

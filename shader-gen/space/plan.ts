@@ -30,6 +30,8 @@ export interface TracePlan {
    * every element is a sphere inversion); ∞ otherwise.
    */
   readonly reach: readonly number[];
+  /** Every element a sphere inversion: their (c, r²) packed for the CPU walk's hot loop; else null. */
+  readonly inversionRows: Float64Array | null;
   /** Every element a sphere inversion, closed balls pairwise disjoint, seeds outside them (Fig. 11). */
   readonly disjoint: boolean;
   /**
@@ -201,6 +203,9 @@ export function prepareTrace3d(scene: Scene3d): TracePlan {
     records,
     hulls,
     reach,
+    inversionRows: mirrors
+      ? Float64Array.from(mirrors.flatMap((m) => [...m.center, m.radius * m.radius]))
+      : null,
     disjoint: mirrors !== null && isDisjoint(mirrors, seedBalls),
     bounds: { center: bounds.center, radius: Math.max(bounds.radius, 1e-6) },
     bounded,

@@ -14,6 +14,7 @@
  * distance min over seeds of seedDistance(final)/factor, on which the tracer decides a hit.
  */
 import { POLE_AT_INFINITY, type Pole3d, type Walk3dState } from './elements/element-3d-kind.ts';
+import { TINY_D2 } from './elements/invert.ts';
 import { ballDistance } from './elements/sphere-inversion.ts';
 import type { TracePlan } from './plan.ts';
 import { seedDistance } from './seeds-3d.ts';
@@ -37,16 +38,20 @@ export interface Walk3dResult {
 
 /** Distance from (x, y, z) to the seeds; sets `nearest.seed` to the nearest one's index. */
 function seedsDistance(plan: TracePlan, x: number, y: number, z: number, nearest: { seed: number }): number {
+  const seeds = plan.scene.seeds;
   let d = Number.POSITIVE_INFINITY;
-  plan.scene.seeds.forEach((s, k) => {
-    const ds = seedDistance(s, x, y, z);
+  for (let k = 0; k < seeds.length; k++) {
+    const ds = seedDistance(seeds[k]!, x, y, z);
     if (ds < d) {
       d = ds;
       nearest.seed = k;
     }
-  });
+  }
   return d;
 }
+
+/** Scratch for the seed index where it is not wanted (the CPU tracer is single-threaded). */
+const unused = { seed: -1 };
 
 /** cover_j at (x, y, z): the content ball and the region where both are known, else the region. */
 function coverOf(plan: TracePlan, x: number, y: number, z: number, j: number): number {
@@ -57,7 +62,7 @@ function coverOf(plan: TracePlan, x: number, y: number, z: number, j: number): n
 
 /** min(seeds, cover_j for j ≠ skip): a lower bound of the distance to the orbit outside element `skip`. */
 function coverDistance(plan: TracePlan, x: number, y: number, z: number, skip: number): number {
-  let d = Math.max(0, seedsDistance(plan, x, y, z, { seed: -1 }));
+  let d = Math.max(0, seedsDistance(plan, x, y, z, unused));
   for (let j = 0; j < plan.records.length; j++) if (j !== skip) d = Math.min(d, coverOf(plan, x, y, z, j));
   return d;
 }
@@ -67,7 +72,7 @@ function coverDistance(plan: TracePlan, x: number, y: number, z: number, skip: n
  * that is larger) — the others are not the minimum, so one mirror, O(n) in all, is what can help.
  */
 function endDistance(plan: TracePlan, x: number, y: number, z: number): number {
-  let best = Math.max(0, seedsDistance(plan, x, y, z, { seed: -1 }));
+  let best = Math.max(0, seedsDistance(plan, x, y, z, unused));
   let second = Number.POSITIVE_INFINITY;
   let nearest = -1;
   for (let j = 0; j < plan.records.length; j++) {
@@ -108,12 +113,50 @@ const poleDistance = (st: Walk3dState, pole: Pole3d): number =>
 /** The bound carried back through W: R·D/(s·(R + D)), written to stay finite for R = ∞. */
 export const composedBound = (d: number, s: number, r: number): number => d / (s * (1 + d / r));
 
-/** Walks (x, y, z). `bound`: also form the safe distance bound `de` (else it is ∞). */
-export function walk3d(plan: TracePlan, x: number, y: number, z: number, bound: boolean): Walk3dResult {
+/**
+ * The IIS over sphere inversions only, from packed (c, r²) rows: the same steps as the elements'
+ * own (sphereInversion.step and invertWalk), without a call and a destructuring per element per
+ * step — the CPU tracer's hot loop for Figs. 11–12 and the sphairahedra. Returns `escaped`.
+ */
+function walkInversions(rows: Float64Array, maxIterations: number, st: Walk3dState): boolean {
+  const pole = st.pole;
+  const n = rows.length;
+  outer: while (st.depth < maxIterations) {
+    for (let o = 0; o < n; o += 4) {
+      const cx = rows[o]!;
+      const cy = rows[o + 1]!;
+      const cz = rows[o + 2]!;
+      const r2 = rows[o + 3]!;
+      const dx = st.x - cx;
+      const dy = st.y - cy;
+      const dz = st.z - cz;
+      const d2 = dx * dx + dy * dy + dz * dz;
+      if (!(d2 < r2)) continue;
+      const k = r2 / Math.max(d2, TINY_D2);
+      st.x = cx + dx * k;
+      st.y = cy + dy * k;
+      st.z = cz + dz * k;
+      st.s *= k;
+      if (pole) {
+        const px = pole.x - cx;
+        const py = pole.y - cy;
+        const pz = pole.z - cz;
+        const kp = r2 / Math.max(px * px + py * py + pz * pz, TINY_D2);
+        pole.x = cx + px * kp;
+        pole.y = cy + py * kp;
+        pole.z = cz + pz * kp;
+      }
+      st.depth += 1;
+      continue outer;
+    }
+    return true;
+  }
+  return false;
+}
+
+/** The IIS over the scene's elements, each by its kind's step. Returns `escaped`. */
+function walkElements(plan: TracePlan, st: Walk3dState): boolean {
   const { scene, records } = plan;
-  const pole: Pole3d | null = bound ? { x: POLE_AT_INFINITY, y: 0, z: 0 } : null;
-  const st: Walk3dState = { x, y, z, s: 1, depth: 0, pole };
-  let escaped = false;
   while (st.depth < scene.maxIterations) {
     let moved = false;
     for (let i = 0; i < records.length; i++) {
@@ -122,11 +165,18 @@ export function walk3d(plan: TracePlan, x: number, y: number, z: number, bound: 
         break;
       }
     }
-    if (!moved) {
-      escaped = true;
-      break;
-    }
+    if (!moved) return true;
   }
+  return false;
+}
+
+/** Walks (x, y, z). `bound`: also form the safe distance bound `de` (else it is ∞). */
+export function walk3d(plan: TracePlan, x: number, y: number, z: number, bound: boolean): Walk3dResult {
+  const pole: Pole3d | null = bound ? { x: POLE_AT_INFINITY, y: 0, z: 0 } : null;
+  const st: Walk3dState = { x, y, z, s: 1, depth: 0, pole };
+  const escaped = plan.inversionRows
+    ? walkInversions(plan.inversionRows, plan.scene.maxIterations, st)
+    : walkElements(plan, st);
   const nearest = { seed: -1 };
   const image = seedsDistance(plan, st.x, st.y, st.z, nearest) / st.s;
   const de = pole

@@ -32,6 +32,11 @@ export interface TracePlan {
   readonly reach: readonly number[];
   /** Every element a sphere inversion: their (c, r²) packed for the CPU walk's hot loop; else null. */
   readonly inversionRows: Float64Array | null;
+  /**
+   * Every element a sphere inversion: per element (c, r, content-ball centre, its radius) packed
+   * for the CPU walk's covers; else null.
+   */
+  readonly coverRows: Float64Array | null;
   /** Every element a sphere inversion, closed balls pairwise disjoint, seeds outside them (Fig. 11). */
   readonly disjoint: boolean;
   /**
@@ -205,6 +210,11 @@ export function prepareTrace3d(scene: Scene3d): TracePlan {
     reach,
     inversionRows: mirrors
       ? Float64Array.from(mirrors.flatMap((m) => [...m.center, m.radius * m.radius]))
+      : null,
+    coverRows: mirrors
+      ? Float64Array.from(
+          mirrors.flatMap((m, i) => [...m.center, m.radius, ...hulls[i]!.center, hulls[i]!.radius]),
+        )
       : null,
     disjoint: mirrors !== null && isDisjoint(mirrors, seedBalls),
     bounds: { center: bounds.center, radius: Math.max(bounds.radius, 1e-6) },

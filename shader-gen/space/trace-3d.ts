@@ -8,7 +8,7 @@
  */
 import type { Vec3 } from '../../nodes/geometry/space/vec3.ts';
 import { type TracePlan, UNBOUNDED_REACH } from './plan.ts';
-import { walk3d } from './walk.ts';
+import { walk3d, walkResult } from './walk.ts';
 
 /**
  * Hits are decided within this many pixel footprints of a seed image: every surface is drawn this
@@ -56,8 +56,9 @@ export function traceRay(plan: TracePlan, o: Vec3, d: Vec3, angle: number): Hit3
   const span = plan.scene.seeds.length > 0 ? rayInterval(plan, o, d) : null;
   if (!span) return MISS;
   let t = span[0];
+  const w = walkResult();
   for (let i = 0; i < plan.scene.marchSteps; i++) {
-    const w = walk3d(plan, o[0] + d[0] * t, o[1] + d[1] * t, o[2] + d[2] * t, true);
+    walk3d(plan, o[0] + d[0] * t, o[1] + d[1] * t, o[2] + d[2] * t, true, w);
     const eps = hitTolerance(plan, angle, t);
     if (w.imageDistance < eps) {
       return {

@@ -55,6 +55,16 @@ const unused = { seed: -1 };
 
 /** cover_j at (x, y, z): the content ball and the region where both are known, else the region. */
 function coverOf(plan: TracePlan, x: number, y: number, z: number, j: number): number {
+  const rows = plan.coverRows;
+  if (rows) {
+    // max(d(x, B_j), d(x, H_j)) from the packed (c, r, hull centre, hull radius) row.
+    const o = 8 * j;
+    const b =
+      Math.sqrt((x - rows[o]!) ** 2 + (y - rows[o + 1]!) ** 2 + (z - rows[o + 2]!) ** 2) - rows[o + 3]!;
+    const h =
+      Math.sqrt((x - rows[o + 4]!) ** 2 + (y - rows[o + 5]!) ** 2 + (z - rows[o + 6]!) ** 2) - rows[o + 7]!;
+    return Math.max(0, b, h);
+  }
   const h = plan.hulls[j];
   const region = plan.records[j]!.cpu.regionDistance(plan.scene.elements[j]!, x, y, z);
   return h ? Math.max(region, ballDistance(x, y, z, h.center, h.radius)) : region;
@@ -108,7 +118,7 @@ function mirroredCover(plan: TracePlan, x: number, y: number, z: number, j: numb
 
 /** |x_f − W(∞)| (about 10¹⁸ while W is an isometry: the bound is then D/s to float precision). */
 const poleDistance = (st: Walk3dState, pole: Pole3d): number =>
-  Math.hypot(st.x - pole.x, st.y - pole.y, st.z - pole.z);
+  Math.sqrt((st.x - pole.x) ** 2 + (st.y - pole.y) ** 2 + (st.z - pole.z) ** 2);
 
 /** The bound carried back through W: R·D/(s·(R + D)), written to stay finite for R = ∞. */
 export const composedBound = (d: number, s: number, r: number): number => d / (s * (1 + d / r));
@@ -170,27 +180,62 @@ function walkElements(plan: TracePlan, st: Walk3dState): boolean {
   return false;
 }
 
-/** Walks (x, y, z). `bound`: also form the safe distance bound `de` (else it is ∞). */
-export function walk3d(plan: TracePlan, x: number, y: number, z: number, bound: boolean): Walk3dResult {
-  const pole: Pole3d | null = bound ? { x: POLE_AT_INFINITY, y: 0, z: 0 } : null;
-  const st: Walk3dState = { x, y, z, s: 1, depth: 0, pole };
+/** Scratch walk state and pole, reset by every walk (the CPU tracer is single-threaded). */
+const scratchPole: Pole3d = { x: 0, y: 0, z: 0 };
+const scratch: Walk3dState = { x: 0, y: 0, z: 0, s: 1, depth: 0, pole: null };
+
+/** A fresh result to fill (the default `out` of walk3d). */
+export const walkResult = (): Walk3dResult => ({
+  de: 0,
+  imageDistance: 0,
+  depth: 0,
+  seed: -1,
+  x: 0,
+  y: 0,
+  z: 0,
+  factor: 1,
+  escaped: false,
+});
+
+/**
+ * Walks (x, y, z). `bound`: also form the safe distance bound `de` (else it is ∞). The result is
+ * written to `out` (hot loops pass one they reuse, so a march allocates nothing) and returned.
+ */
+export function walk3d(
+  plan: TracePlan,
+  x: number,
+  y: number,
+  z: number,
+  bound: boolean,
+  out: Walk3dResult = walkResult(),
+): Walk3dResult {
+  const st = scratch;
+  st.x = x;
+  st.y = y;
+  st.z = z;
+  st.s = 1;
+  st.depth = 0;
+  const pole = bound ? scratchPole : null;
+  if (pole) {
+    pole.x = POLE_AT_INFINITY;
+    pole.y = 0;
+    pole.z = 0;
+  }
+  st.pole = pole;
   const escaped = plan.inversionRows
     ? walkInversions(plan.inversionRows, plan.scene.maxIterations, st)
     : walkElements(plan, st);
   const nearest = { seed: -1 };
-  const image = seedsDistance(plan, st.x, st.y, st.z, nearest) / st.s;
-  const de = pole
+  out.imageDistance = seedsDistance(plan, st.x, st.y, st.z, nearest) / st.s;
+  out.de = pole
     ? composedBound(endDistance(plan, st.x, st.y, st.z), st.s, poleDistance(st, pole))
     : Number.POSITIVE_INFINITY;
-  return {
-    de,
-    imageDistance: image,
-    depth: st.depth,
-    seed: nearest.seed,
-    x: st.x,
-    y: st.y,
-    z: st.z,
-    factor: st.s,
-    escaped,
-  };
+  out.depth = st.depth;
+  out.seed = nearest.seed;
+  out.x = st.x;
+  out.y = st.y;
+  out.z = st.z;
+  out.factor = st.s;
+  out.escaped = escaped;
+  return out;
 }

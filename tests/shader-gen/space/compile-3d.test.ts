@@ -1,10 +1,9 @@
 /**
  * The 3D GLSL generator (shader-gen/space/compile-3d.ts): every program it writes — uniform and
  * baked, colour and probe, every 3D example, the hand-built scenes, every colouring mode, the
- * Shadertoy version, and the hand-written bench tracer — pass glslangValidator and the WebGL identifier rules; the source depends
+ * Shadertoy version, and the hand-written bench tracers — pass glslangValidator and the WebGL identifier rules; the source depends
  * only on the scene's structure, so value edits re-use the program; baking leaves no scene uniform.
  */
-import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { LIMITS } from '../../../nodes/core/limits.ts';
 import type { Coloring3d, Scene3d } from '../../../nodes/core/scene-3d.ts';
@@ -16,6 +15,7 @@ import {
   FRAME_UNIFORMS_3D,
   shadertoySource3d,
 } from '../../../shader-gen/space/compile-3d.ts';
+import { HAND_WRITTEN_3D } from '../../bench/hand-written/trace3d.ts';
 import {
   type ShaderToCheck,
   shadertoyWrapper,
@@ -67,11 +67,8 @@ describe('compile3d', () => {
     })),
     { name: `${name}.shadertoy`, source: shadertoyWrapper(shadertoySource3d(scene)), stage: 'frag' as const },
   ]);
-  shaders.push({
-    name: 'hand-written-fig11-trace',
-    source: readFileSync(new URL('../../bench/hand-written/fig11-trace.frag', import.meta.url), 'utf8'),
-    stage: 'frag',
-  });
+  for (const { example, source } of HAND_WRITTEN_3D)
+    shaders.push({ name: `hand-written-${example}`, source, stage: 'frag' });
   const results = validateShaders(shaders);
 
   for (const shader of shaders) {

@@ -57,7 +57,11 @@ export const DIAGNOSTICS = table({
     severity: 'error',
     text: (n: number, max: number) => `document has ${n} nodes; the limit is ${max}`,
   },
-  duplicateNodeId: { code: 'KF201', severity: 'error', text: (id: string) => `duplicate node id "${id}"` },
+  duplicateNodeId: {
+    code: 'KF201',
+    severity: 'error',
+    text: (id: string, first: string) => `duplicate node id "${id}": ${first} already has it`,
+  },
   duplicateEdgeId: { code: 'KF202', severity: 'error', text: (id: string) => `duplicate edge id "${id}"` },
   unknownNodeType: {
     code: 'KF203',

@@ -18,6 +18,7 @@ import { fileLimit, tooLargeMessage } from '../io/input-limits.ts';
 import { readPngText } from '../io/png.ts';
 import { PNG_GRAPH_KEY } from '../io/png-graph.ts';
 import { CliError, type CliIo } from './command.ts';
+import { printable } from './printable.ts';
 import { liveFallbackNotes } from './scene-pictures.ts';
 
 /** The iTXt keyword under which exported PNGs carry their graph JSON (its home: src/io/png-graph.ts). */
@@ -140,7 +141,7 @@ export function formatDiagnostic(
   // Schema messages already start with their path; do not say it twice.
   const message =
     d.path && d.message.startsWith(`${d.path}: `) ? d.message.slice(d.path.length + 2) : d.message;
-  return `${d.severity} ${d.code} ${location}: ${message}`;
+  return printable(`${d.severity} ${d.code} ${location}: ${message}`);
 }
 
 /**
@@ -169,7 +170,7 @@ async function loadChecked(io: CliIo, path: string): Promise<GraphLoad & { evalu
   // Live sources are notes worth printing, though info: the picture is not what the browser shows.
   const live = load.evaluation && !load.evaluation.scene3d ? liveFallbackNotes(load.evaluation.scene) : [];
   for (const d of [...load.diagnostics.filter((d) => d.severity !== 'info'), ...live]) {
-    io.stderr.write(`${path}: ${formatDiagnostic(d, load.doc, load.evaluation?.origin)}\n`);
+    io.stderr.write(`${printable(path)}: ${formatDiagnostic(d, load.doc, load.evaluation?.origin)}\n`);
   }
   if (!load.evaluation || hasErrors(load.diagnostics)) {
     const n = countBySeverity(load.diagnostics).error;

@@ -6,6 +6,7 @@
 import { formatBytes, INPUT_LIMITS } from '../io/input-limits.ts';
 import { type CliCommand, CliError, type CliIo, EXIT } from './command.ts';
 import { COMMANDS } from './commands/index.ts';
+import { printable } from './printable.ts';
 
 const HELP_FLAGS = new Set(['--help', '-h', 'help']);
 
@@ -38,7 +39,9 @@ export async function main(argv: readonly string[], io: CliIo): Promise<number> 
     return await dispatch(argv, io);
   } catch (e) {
     try {
-      io.stderr.write(`kleinflow: internal error: ${e instanceof Error ? e.message : String(e)}\n`);
+      io.stderr.write(
+        `kleinflow: internal error: ${printable(e instanceof Error ? e.message : String(e))}\n`,
+      );
     } catch {
       // stderr itself is broken: the exit status is all that is left.
     }
@@ -72,7 +75,7 @@ async function dispatch(argv: readonly string[], io: CliIo): Promise<number> {
     return await command.run(args, io);
   } catch (e) {
     if (!(e instanceof CliError)) throw e;
-    io.stderr.write(`kleinflow ${command.name}: ${e.message}\n`);
+    io.stderr.write(`kleinflow ${command.name}: ${printable(e.message)}\n`);
     if (e.showUsage) io.stderr.write(`\n${command.usage}\n`);
     return e.status;
   }
@@ -80,6 +83,6 @@ async function dispatch(argv: readonly string[], io: CliIo): Promise<number> {
 
 function unknownCommand(name: string, io: CliIo): number {
   const hint = name.startsWith('-') ? `unknown option "${name}"` : `unknown command "${name}"`;
-  io.stderr.write(`kleinflow: ${hint}\n\n${generalUsage()}\n`);
+  io.stderr.write(`kleinflow: ${printable(hint)}\n\n${generalUsage()}\n`);
   return EXIT.usage;
 }

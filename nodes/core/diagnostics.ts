@@ -237,6 +237,11 @@ export const DIAGNOSTICS = table({
   mirrorAngle: { code: 'KF407', severity: 'warning', text: (detail: string) => detail },
   importProblem: { code: 'KF501', severity: 'error', text: (detail: string) => detail },
   importNote: { code: 'KF502', severity: 'warning', text: (detail: string) => detail },
+  pngRefused: {
+    code: 'KF504',
+    severity: 'error',
+    text: (why: string) => `the PNG is refused: ${why}`,
+  },
   migrated: {
     code: 'KF503',
     severity: 'info',

@@ -6,7 +6,7 @@
  */
 
 import type { Diagnostic, Severity } from '../../nodes/core/diagnostics.ts';
-import { hasErrors } from '../../nodes/core/diagnostics.ts';
+import { diag, hasErrors } from '../../nodes/core/diagnostics.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { Scene } from '../../nodes/core/scene.ts';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
@@ -15,8 +15,8 @@ import { type Evaluation, evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { openDocumentText, serializeDocument } from '../io/document-io.ts';
 import { fileLimit, tooLargeMessage } from '../io/input-limits.ts';
-import { readPngText } from '../io/png.ts';
-import { PNG_GRAPH_KEY } from '../io/png-graph.ts';
+import { isPng } from '../io/png.ts';
+import { PNG_GRAPH_KEY, readEmbeddedGraph } from '../io/png-graph.ts';
 import { CliError, type CliIo } from './command.ts';
 import { printable } from './printable.ts';
 import { liveFallbackNotes } from './scene-pictures.ts';
@@ -91,11 +91,14 @@ function concat(parts: readonly Uint8Array[], total: number): Uint8Array {
 
 /** The document text inside the bytes: UTF-8 JSON, or the graph embedded in a Kleinflow PNG. */
 export function documentText(path: string, bytes: Uint8Array): string {
-  const png = readPngText(bytes);
-  if (png) {
-    const text = png[PNG_GRAPH_KEY];
-    if (text === undefined) throw new CliError(`"${path}" is a PNG without an embedded Kleinflow graph`);
-    return text;
+  if (isPng(bytes)) {
+    const read = readEmbeddedGraph(bytes);
+    if ('problem' in read) {
+      const refused = diag('pngRefused', { path: '(file)' }, read.problem);
+      throw new CliError(`"${path}": ${formatDiagnostic(refused)}`);
+    }
+    if (read.text === undefined) throw new CliError(`"${path}" is a PNG without an embedded Kleinflow graph`);
+    return read.text;
   }
   try {
     return new TextDecoder('utf-8', { fatal: true, ignoreBOM: false }).decode(bytes);

@@ -230,8 +230,8 @@ export const DIAGNOSTICS = table({
   gpuRange: {
     code: 'KF405',
     severity: 'warning',
-    text: (value: number, max: number) =>
-      `a value of ${value} is beyond what the GPU computes with (±${max.toExponential()}): the shader overflows to ∞ there, so this element does not draw as the CPU preview does`,
+    text: (value: number, max: number, what = 'this element') =>
+      `a value of ${value} is beyond what the GPU computes with (±${max.toExponential()}): the shader overflows to ∞ there, so ${what} does not draw as the CPU preview does`,
   },
   keptSides: { code: 'KF406', severity: 'warning', text: (detail: string) => detail },
   mirrorAngle: { code: 'KF407', severity: 'warning', text: (detail: string) => detail },

@@ -124,3 +124,22 @@ describe('kleinflow check: document text with control characters', () => {
     expect(r.stderr.trim().split('\n')).toEqual([expect.stringMatching(/evil\.json: 1 error, 0 warnings$/)]);
   });
 });
+
+describe('kleinflow check: a 3D graph beyond the GPU range', () => {
+  it('warns (KF405) for a seed sphere centred at 1e308, which the shader would write as 3.4e38', () => {
+    const graph = doc(
+      [
+        node('m', 'sphere-inversion', { sphere: { center: [0, 0, 0], radius: 1 } }),
+        node('s', 'seed-sphere', { center: [1e308, 0, 0], radius: 0.5, color: '#ffffff' }),
+        node('out', 'render-3d', { camera: [4, 0, 0], target: [0, 0, 0] }),
+      ],
+      [edge('e1', 'm.element', 'out.elements'), edge('e2', 's.seed', 'out.seeds')],
+    );
+    const path = join(dir, 'far-3d.json');
+    writeFileSync(path, JSON.stringify(graph));
+    const r = runCli(['check', path]);
+    expect(r.stdout).toMatch(
+      /^warning KF405 .*\(node "out", port "seeds"\): a value of 1e\+308 is beyond .*so seed "s" does not draw/m,
+    );
+  });
+});

@@ -132,17 +132,22 @@ function* chunks(bytes: Uint8Array, maxChunks: number): Generator<Chunk> {
 
 const TEXT_TYPES = new Set(['tEXt', 'iTXt', 'zTXt']);
 
+/** The length of a text chunk's keyword (the 0 byte that ends it), looking at most 80 bytes far; -1 past that. */
+const keywordLength = (c: Chunk): number => c.data.subarray(0, PNG_KEYWORD_BYTES + 1).indexOf(0);
+
+const latin1 = (bytes: Uint8Array) => new TextDecoder('latin1').decode(bytes);
+
 /**
  * The keyword of a text chunk (Latin-1 up to the first 0 byte). Only its first 80 bytes are looked
  * at: a keyword that is empty or longer than the specification allows is a PngProblem.
  */
 function chunkKeyword(c: Chunk): string {
-  const z = c.data.subarray(0, PNG_KEYWORD_BYTES + 1).indexOf(0);
+  const z = keywordLength(c);
   const at = `the ${c.type} chunk at byte ${c.start.toLocaleString('en')}`;
   if (z < 0)
     throw new PngProblem(`${at} has a keyword longer than ${PNG_KEYWORD_BYTES} bytes (the PNG limit)`);
   if (z === 0) throw new PngProblem(`${at} has an empty keyword`);
-  return new TextDecoder('latin1').decode(c.data.subarray(0, z));
+  return latin1(c.data.subarray(0, z));
 }
 
 /**
@@ -175,7 +180,7 @@ export function readPngText(
       throw new PngProblem(
         `its "${key}" text is ${size.toLocaleString('en')} bytes, more than ${formatSize(limits.textBytes)}, the limit for it`,
       );
-    out[key] = new TextDecoder(c.type === 'tEXt' ? 'latin1' : 'utf-8').decode(c.data.subarray(p));
+    out[key] = c.type === 'tEXt' ? latin1(c.data.subarray(p)) : new TextDecoder().decode(c.data.subarray(p));
   }
   return out;
 }
@@ -198,7 +203,9 @@ export function setPngText(bytes: Uint8Array, text: Readonly<Record<string, stri
       parts.push(...fresh);
       inserted = true;
     }
-    if (!(TEXT_TYPES.has(c.type) && Object.hasOwn(text, chunkKeyword(c))))
+    // A malformed keyword is no entry being set: that chunk is copied like any other.
+    const z = TEXT_TYPES.has(c.type) ? keywordLength(c) : -1;
+    if (!(z > 0 && Object.hasOwn(text, latin1(c.data.subarray(0, z)))))
       parts.push(bytes.subarray(c.start, c.end));
   }
   if (!inserted) parts.push(...fresh);

@@ -4,6 +4,7 @@
  * the command's usage for usage errors), anything unexpected prints `kleinflow: internal error: …`.
  */
 import { formatBytes, INPUT_LIMITS } from '../io/input-limits.ts';
+import { PNG_KEYWORD_BYTES } from '../io/png.ts';
 import { type CliCommand, CliError, type CliIo, EXIT } from './command.ts';
 import { COMMANDS } from './commands/index.ts';
 import { printable } from './printable.ts';
@@ -23,7 +24,8 @@ export function generalUsage(commands: readonly CliCommand[] = COMMANDS): string
     '',
     'Run "kleinflow COMMAND --help" for the options of a command.',
     '',
-    `Limits: a graph file (JSON) at most ${formatBytes(INPUT_LIMITS.documentBytes)}, a PNG at most ${formatBytes(INPUT_LIMITS.pngBytes)};`,
+    `Limits: a graph file (JSON) at most ${formatBytes(INPUT_LIMITS.documentBytes)}, a PNG at most ${formatBytes(INPUT_LIMITS.pngBytes)}`,
+    `(${INPUT_LIMITS.pngChunks.toLocaleString('en')} chunks, keywords of ${PNG_KEYWORD_BYTES} bytes, the graph inside it ${formatBytes(INPUT_LIMITS.documentBytes)});`,
     `points files are streamed (any number of points, ${formatBytes(INPUT_LIMITS.pointEntryChars)} per entry).`,
   ].join('\n');
 }

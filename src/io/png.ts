@@ -30,7 +30,8 @@ export function crc32(bytes: Uint8Array, crc = 0xffffffff): number {
 const ascii = (s: string) => Uint8Array.from(s, (ch) => ch.charCodeAt(0));
 const utf8 = (s: string) => new TextEncoder().encode(s);
 
-function chunk(type: string, data: Uint8Array): Uint8Array {
+/** One chunk as the PNG specification lays it out: length, type, data, CRC over type and data. */
+export function pngChunk(type: string, data: Uint8Array): Uint8Array {
   const out = new Uint8Array(12 + data.length);
   const view = new DataView(out.buffer);
   view.setUint32(0, data.length);
@@ -47,7 +48,7 @@ function itxt(keyword: string, text: string): Uint8Array {
   const data = new Uint8Array(k.length + 5 + t.length);
   data.set(k, 0);
   data.set(t, k.length + 5);
-  return chunk('iTXt', data);
+  return pngChunk('iTXt', data);
 }
 
 export interface PngImage {
@@ -72,10 +73,10 @@ export function encodePng(image: PngImage, text: Readonly<Record<string, string>
   }
   const parts = [
     Uint8Array.from(SIGNATURE),
-    chunk('IHDR', ihdr),
+    pngChunk('IHDR', ihdr),
     ...Object.entries(text).map(([k, t]) => itxt(k, t)),
-    chunk('IDAT', zlibSync(raw, { level: 6 })),
-    chunk('IEND', new Uint8Array(0)),
+    pngChunk('IDAT', zlibSync(raw, { level: 6 })),
+    pngChunk('IEND', new Uint8Array(0)),
   ];
   const out = new Uint8Array(parts.reduce((n, p) => n + p.length, 0));
   let o = 0;

@@ -109,28 +109,14 @@ describe('kleinflow mesh', () => {
 
   it('refuses bounds whose extent overflows float64, and never writes an empty mesh with exit 0', () => {
     const out = join(dir, 'huge.stl');
-    const huge = runCli([
-      'mesh',
-      example3d('fig26-quasi-sphere'),
-      '-o',
-      out,
-      '--bounds',
-      '-1e308,-1e308,-1e308,1e308,1e308,1e308',
-    ]);
+    const quasiSphere = (...options: string[]) =>
+      runCli(['mesh', example3d('fig26-quasi-sphere'), '-o', out, ...options]);
+    const huge = quasiSphere('--bounds', '-1e308,-1e308,-1e308,1e308,1e308,1e308');
     expect(huge.status).toBe(2);
     expect(huge.stderr.split('\n')[0]).toMatch(/^kleinflow mesh: --bounds .*not finite in float64/);
     expect(existsSync(out)).toBe(false);
     // A box beside the solid: nothing to mesh is a failure, not an empty file.
-    const away = runCli([
-      'mesh',
-      example3d('fig26-quasi-sphere'),
-      '-o',
-      out,
-      '-r',
-      '8',
-      '--bounds',
-      '50,50,50,51,51,51',
-    ]);
+    const away = quasiSphere('-r', '8', '--bounds', '50,50,50,51,51,51');
     expect(away.status).toBe(1);
     expect(away.stderr).toMatch(/no mesh: nothing solid/);
     expect(existsSync(out)).toBe(false);

@@ -1,18 +1,9 @@
 /** Hand-made PNG bytes for the limit tests: chunks laid out as the PNG specification says. */
-import { crc32, encodePng } from '../../../../src/io/png.ts';
+import { encodePng, pngChunk } from '../../../../src/io/png.ts';
+
+export { pngChunk };
 
 const ascii = (s: string) => Uint8Array.from(s, (c) => c.charCodeAt(0));
-
-/** One chunk: length, type, data, CRC over type and data. */
-export function pngChunk(type: string, data: Uint8Array): Uint8Array {
-  const out = new Uint8Array(12 + data.length);
-  const view = new DataView(out.buffer);
-  view.setUint32(0, data.length);
-  out.set(ascii(type), 4);
-  out.set(data, 8);
-  view.setUint32(8 + data.length, (crc32(out.subarray(4, 8 + data.length)) ^ 0xffffffff) >>> 0);
-  return out;
-}
 
 /** tEXt data: keyword, 0, Latin-1 text. */
 export const textData = (keyword: Uint8Array | string, text: string): Uint8Array => {

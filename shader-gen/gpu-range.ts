@@ -3,6 +3,7 @@
  * shader works in float32 and squares coordinates and radii, so a value beyond
  * LIMITS.gpuMaxMagnitude becomes ∞ on the GPU while the CPU interpreter (float64) still draws it.
  */
+import { firstBeyond } from '../nodes/core/limits.ts';
 import { LIMITS, type Scene } from '../nodes/core/scene.ts';
 import { elementRecord } from './elements/index.ts';
 
@@ -10,19 +11,6 @@ export interface OutOfRange {
   /** The node whose element (or the render node, for the clip disk) holds the value. */
   readonly nodeId: string | undefined;
   readonly value: number;
-}
-
-/** The first number with |v| > max inside `value` (iterative: no recursion limit), or undefined. */
-function firstBeyond(value: unknown, max: number): number | undefined {
-  const stack: unknown[] = [value];
-  while (stack.length > 0) {
-    const v = stack.pop();
-    if (typeof v === 'number') {
-      if (Math.abs(v) > max) return v;
-    } else if (Array.isArray(v)) stack.push(...v);
-    else if (v !== null && typeof v === 'object') stack.push(...Object.values(v));
-  }
-  return undefined;
 }
 
 /**

@@ -57,7 +57,11 @@ export const DIAGNOSTICS = table({
     severity: 'error',
     text: (n: number, max: number) => `document has ${n} nodes; the limit is ${max}`,
   },
-  duplicateNodeId: { code: 'KF201', severity: 'error', text: (id: string) => `duplicate node id "${id}"` },
+  duplicateNodeId: {
+    code: 'KF201',
+    severity: 'error',
+    text: (id: string, first: string) => `duplicate node id "${id}": ${first} already has it`,
+  },
   duplicateEdgeId: { code: 'KF202', severity: 'error', text: (id: string) => `duplicate edge id "${id}"` },
   unknownNodeType: {
     code: 'KF203',
@@ -226,13 +230,18 @@ export const DIAGNOSTICS = table({
   gpuRange: {
     code: 'KF405',
     severity: 'warning',
-    text: (value: number, max: number) =>
-      `a value of ${value} is beyond what the GPU computes with (±${max.toExponential()}): the shader overflows to ∞ there, so this element does not draw as the CPU preview does`,
+    text: (value: number, max: number, what = 'this element') =>
+      `a value of ${value} is beyond what the GPU computes with (±${max.toExponential()}): the shader overflows to ∞ there, so ${what} does not draw as the CPU preview does`,
   },
   keptSides: { code: 'KF406', severity: 'warning', text: (detail: string) => detail },
   mirrorAngle: { code: 'KF407', severity: 'warning', text: (detail: string) => detail },
   importProblem: { code: 'KF501', severity: 'error', text: (detail: string) => detail },
   importNote: { code: 'KF502', severity: 'warning', text: (detail: string) => detail },
+  pngRefused: {
+    code: 'KF504',
+    severity: 'error',
+    text: (why: string) => `the PNG is refused: ${why}`,
+  },
   migrated: {
     code: 'KF503',
     severity: 'info',

@@ -43,3 +43,19 @@ export const LIMITS = {
   /** 3D render: the default IIS budget per distance estimate (each march step runs it). */
   defaultMaxIterations3d: 30,
 } as const;
+
+/**
+ * The first number with |v| > max inside `value` (arrays and objects, iteratively: no recursion
+ * limit), or undefined: the scene values the GPU would overflow on (LIMITS.gpuMaxMagnitude).
+ */
+export function firstBeyond(value: unknown, max: number): number | undefined {
+  const stack: unknown[] = [value];
+  while (stack.length > 0) {
+    const v = stack.pop();
+    if (typeof v === 'number') {
+      if (Math.abs(v) > max) return v;
+    } else if (Array.isArray(v)) stack.push(...v);
+    else if (v !== null && typeof v === 'object') stack.push(...Object.values(v));
+  }
+  return undefined;
+}

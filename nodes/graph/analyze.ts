@@ -26,8 +26,10 @@ export function analyzeGraph(doc: GraphDoc, registry: NodeRegistry): Analysis {
   const nodes = new Map<string, { node: GraphNode; index: number; def: NodeDef | undefined }>();
   doc.nodes.forEach((node, index) => {
     const path = `nodes[${index}]`;
-    if (nodes.has(node.id)) {
-      diagnostics.push(diag('duplicateNodeId', { path: `${path}.id`, nodeId: node.id }, node.id));
+    const first = nodes.get(node.id);
+    if (first) {
+      const where = { path: `${path}.id`, nodeId: node.id };
+      diagnostics.push(diag('duplicateNodeId', where, node.id, `nodes[${first.index}]`));
       return;
     }
     const def = registry.get(node.type);

@@ -32,6 +32,7 @@ export function flattenGroups(doc: GraphDoc): Flattened {
   const origin = new Map<string, readonly string[]>();
   const edgeOrigin = new Map<string, readonly string[]>();
   const problems: Problem[] = [];
+  const clashes = duplicateIds(doc.nodes, '');
   let nodes: readonly GraphNode[] = doc.nodes;
   let edges: readonly GraphEdge[] = doc.edges;
   // One level per pass; the document's depth limit (LIMITS.maxJsonDepth) bounds the passes.
@@ -41,7 +42,33 @@ export function flattenGroups(doc: GraphDoc): Flattened {
     const at = documentPath(doc, path, kind);
     return make(at === null ? undefined : `${at}${rest}`);
   });
-  return { doc: { ...doc, nodes: [...nodes], edges: [...edges] }, origin, edgeOrigin, diagnostics };
+  return {
+    doc: { ...doc, nodes: [...nodes], edges: [...edges] },
+    origin,
+    edgeOrigin,
+    diagnostics: [...clashes, ...diagnostics],
+  };
+}
+
+/**
+ * KF201 for two nodes of one id in one list where flattening would otherwise lose one silently:
+ * inside a group (its wires could reach only one of them), or at the top where one of the two is a
+ * group (a group is gone before analysis, which reports two plain top-level nodes itself). Ids in
+ * different lists never collide: flattening scopes them ("<group id>/<inner id>").
+ */
+function duplicateIds(list: readonly GraphNode[], at: string): Diagnostic[] {
+  const out: Diagnostic[] = [];
+  const first = new Map<string, number>();
+  list.forEach((node, i) => {
+    const j = first.get(node.id);
+    if (j === undefined) first.set(node.id, i);
+    else if (at !== '' || node.group || list[j].group) {
+      const where = { path: `${at}nodes[${i}].id`, nodeId: node.id };
+      out.push(diag('duplicateNodeId', where, node.id, `${at}nodes[${j}]`));
+    }
+    if (node.group) out.push(...duplicateIds(node.group.nodes, `${at}nodes[${i}].group.`));
+  });
+  return out;
 }
 
 /** A problem found while expanding, placed in the document once flattening is done. */

@@ -19,7 +19,7 @@ import {
 import { DEFAULT_COLORING } from '../core/tile-spec.ts';
 import { dist3, len3 } from '../geometry/space/vec3.ts';
 import { fail, fmt } from './shared.ts';
-import { cameraDiagnostics, seedDiagnostics } from './space-checks.ts';
+import { cameraDiagnostics, gpuRangeDiagnostics3d, seedDiagnostics } from './space-checks.ts';
 import { element3Input, point3Input } from './space-shared.ts';
 
 const [cx, cy, cz] = DEFAULT_CAMERA_3D.position;
@@ -147,6 +147,7 @@ export const render3dNode = defineNode({
     diagnostics.push(
       ...cameraDiagnostics(camera.position, elements, seeds),
       ...seedDiagnostics(seeds, elements),
+      ...gpuRangeDiagnostics3d(elements, seeds, [camera.position, camera.target]),
     );
     const light = len3(i.light) > 0 ? i.light : DEFAULT_LIGHTING_3D.direction;
     if (light !== i.light)

@@ -3,16 +3,20 @@
  * a camera inside a region the IIS moves or inside a seed, and a seed not in the fundamental domain.
  */
 import { type Diagnostic, diag } from '../core/diagnostics.ts';
+import { firstBeyond, LIMITS } from '../core/limits.ts';
 import type { NodeElement3d, Seed3d, Vec3 } from '../core/scene-3d.ts';
 import { seedSamplePoints, seedSignedDistance } from '../core/seed-3d.ts';
+import { insideSphere } from '../geometry/space/sphere.ts';
 import { elementHolding } from './space-shared.ts';
 
 /**
  * A camera inside an inversion sphere sees the scene turned inside out and shrunken first. (The
  * regions of plane reflections and translations are moved by isometries, and a generator's outer
  * region B may hold every far-away point: a camera there is normal, so those get no warning.)
+ * Tested by distance, not by stepping: at the very centre the inversion is undefined.
  */
-const inversion = (e: NodeElement3d) => e.kind === 'sphere-inversion';
+const holdsCamera = (e: NodeElement3d, camera: Vec3) =>
+  e.kind === 'sphere-inversion' && insideSphere(e.sphere, camera);
 
 export function cameraDiagnostics(
   camera: Vec3,
@@ -20,7 +24,7 @@ export function cameraDiagnostics(
   seeds: readonly Seed3d[],
 ): Diagnostic[] {
   const out: Diagnostic[] = [];
-  const holder = elementHolding(elements.filter(inversion), camera);
+  const holder = elements.find((e) => holdsCamera(e, camera));
   if (holder)
     out.push(
       diag(
@@ -69,4 +73,28 @@ export function seedDiagnostics(seeds: readonly Seed3d[], elements: readonly Nod
     if (holder) out.push(diag('seedOutsideDomain', { port: 'seeds' }, seed.nodeId, holder.nodeId));
   }
   return out;
+}
+
+/**
+ * KF405, like the 2D compile's check (shader-gen/gpu-range.ts): the first element, seed or camera
+ * value beyond LIMITS.gpuMaxMagnitude. The float64 evaluator draws it, but the float32 sphere
+ * tracer squares coordinates and radii, and such a value overflows to ∞ there.
+ */
+export function gpuRangeDiagnostics3d(
+  elements: readonly NodeElement3d[],
+  seeds: readonly Seed3d[],
+  camera: readonly Vec3[] = [],
+  max: number = LIMITS.gpuMaxMagnitude,
+): Diagnostic[] {
+  const far = (port: string, items: readonly unknown[], what: (item: unknown) => string) =>
+    items.flatMap((item) => {
+      const value = firstBeyond(item, max);
+      return value === undefined ? [] : [diag('gpuRange', { port }, value, max, what(item))];
+    });
+  const named = (kind: string) => (item: unknown) => `${kind} "${(item as { nodeId: string }).nodeId}"`;
+  return [
+    ...far('elements', elements, named('element')),
+    ...far('seeds', seeds, named('seed')),
+    ...far('camera', [camera], () => 'the view'),
+  ].slice(0, 1);
 }

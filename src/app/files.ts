@@ -37,7 +37,12 @@ export function saveDocument(doc: GraphDoc): void {
  * its limit (src/io/input-limits.ts) is refused from its size, before anything is read.
  */
 export async function readDocumentFile(file: File): Promise<OpenResult> {
-  const limit = fileLimit(new Uint8Array(await file.slice(0, 8).arrayBuffer()));
-  if (file.size > limit.bytes) return openProblem(tooLargeMessage(limit, file.size));
-  return openBytes(new Uint8Array(await file.arrayBuffer()));
+  try {
+    const limit = fileLimit(new Uint8Array(await file.slice(0, 8).arrayBuffer()));
+    if (file.size > limit.bytes) return openProblem(tooLargeMessage(limit, file.size));
+    return openBytes(new Uint8Array(await file.arrayBuffer()));
+  } catch (e) {
+    // A file the browser cannot read, or a reader bug: the user is told, the page keeps working.
+    return openProblem(`the file could not be read: ${e instanceof Error ? e.message : String(e)}`);
+  }
 }

@@ -6,7 +6,7 @@
  */
 
 import type { Diagnostic, Severity } from '../../nodes/core/diagnostics.ts';
-import { hasErrors } from '../../nodes/core/diagnostics.ts';
+import { diag, hasErrors } from '../../nodes/core/diagnostics.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { Scene } from '../../nodes/core/scene.ts';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
@@ -15,9 +15,10 @@ import { type Evaluation, evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { openDocumentText, serializeDocument } from '../io/document-io.ts';
 import { fileLimit, tooLargeMessage } from '../io/input-limits.ts';
-import { readPngText } from '../io/png.ts';
-import { PNG_GRAPH_KEY } from '../io/png-graph.ts';
+import { isPng } from '../io/png.ts';
+import { PNG_GRAPH_KEY, readEmbeddedGraph } from '../io/png-graph.ts';
 import { CliError, type CliIo } from './command.ts';
+import { printable } from './printable.ts';
 import { liveFallbackNotes } from './scene-pictures.ts';
 
 /** The iTXt keyword under which exported PNGs carry their graph JSON (its home: src/io/png-graph.ts). */
@@ -90,11 +91,14 @@ function concat(parts: readonly Uint8Array[], total: number): Uint8Array {
 
 /** The document text inside the bytes: UTF-8 JSON, or the graph embedded in a Kleinflow PNG. */
 export function documentText(path: string, bytes: Uint8Array): string {
-  const png = readPngText(bytes);
-  if (png) {
-    const text = png[PNG_GRAPH_KEY];
-    if (text === undefined) throw new CliError(`"${path}" is a PNG without an embedded Kleinflow graph`);
-    return text;
+  if (isPng(bytes)) {
+    const read = readEmbeddedGraph(bytes);
+    if ('problem' in read) {
+      const refused = diag('pngRefused', { path: '(file)' }, read.problem);
+      throw new CliError(`"${path}": ${formatDiagnostic(refused)}`);
+    }
+    if (read.text === undefined) throw new CliError(`"${path}" is a PNG without an embedded Kleinflow graph`);
+    return read.text;
   }
   try {
     return new TextDecoder('utf-8', { fatal: true, ignoreBOM: false }).decode(bytes);
@@ -140,7 +144,7 @@ export function formatDiagnostic(
   // Schema messages already start with their path; do not say it twice.
   const message =
     d.path && d.message.startsWith(`${d.path}: `) ? d.message.slice(d.path.length + 2) : d.message;
-  return `${d.severity} ${d.code} ${location}: ${message}`;
+  return printable(`${d.severity} ${d.code} ${location}: ${message}`);
 }
 
 /**
@@ -169,7 +173,7 @@ async function loadChecked(io: CliIo, path: string): Promise<GraphLoad & { evalu
   // Live sources are notes worth printing, though info: the picture is not what the browser shows.
   const live = load.evaluation && !load.evaluation.scene3d ? liveFallbackNotes(load.evaluation.scene) : [];
   for (const d of [...load.diagnostics.filter((d) => d.severity !== 'info'), ...live]) {
-    io.stderr.write(`${path}: ${formatDiagnostic(d, load.doc, load.evaluation?.origin)}\n`);
+    io.stderr.write(`${printable(path)}: ${formatDiagnostic(d, load.doc, load.evaluation?.origin)}\n`);
   }
   if (!load.evaluation || hasErrors(load.diagnostics)) {
     const n = countBySeverity(load.diagnostics).error;

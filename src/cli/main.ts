@@ -4,8 +4,10 @@
  * the command's usage for usage errors), anything unexpected prints `kleinflow: internal error: …`.
  */
 import { formatBytes, INPUT_LIMITS } from '../io/input-limits.ts';
+import { PNG_KEYWORD_BYTES } from '../io/png.ts';
 import { type CliCommand, CliError, type CliIo, EXIT } from './command.ts';
 import { COMMANDS } from './commands/index.ts';
+import { printable } from './printable.ts';
 
 const HELP_FLAGS = new Set(['--help', '-h', 'help']);
 
@@ -22,7 +24,8 @@ export function generalUsage(commands: readonly CliCommand[] = COMMANDS): string
     '',
     'Run "kleinflow COMMAND --help" for the options of a command.',
     '',
-    `Limits: a graph file (JSON) at most ${formatBytes(INPUT_LIMITS.documentBytes)}, a PNG at most ${formatBytes(INPUT_LIMITS.pngBytes)};`,
+    `Limits: a graph file (JSON) at most ${formatBytes(INPUT_LIMITS.documentBytes)}, a PNG at most ${formatBytes(INPUT_LIMITS.pngBytes)}`,
+    `(${INPUT_LIMITS.pngChunks.toLocaleString('en')} chunks, keywords of ${PNG_KEYWORD_BYTES} bytes, the graph inside it ${formatBytes(INPUT_LIMITS.documentBytes)});`,
     `points files are streamed (any number of points, ${formatBytes(INPUT_LIMITS.pointEntryChars)} per entry).`,
   ].join('\n');
 }
@@ -38,7 +41,9 @@ export async function main(argv: readonly string[], io: CliIo): Promise<number> 
     return await dispatch(argv, io);
   } catch (e) {
     try {
-      io.stderr.write(`kleinflow: internal error: ${e instanceof Error ? e.message : String(e)}\n`);
+      io.stderr.write(
+        `kleinflow: internal error: ${printable(e instanceof Error ? e.message : String(e))}\n`,
+      );
     } catch {
       // stderr itself is broken: the exit status is all that is left.
     }
@@ -72,7 +77,7 @@ async function dispatch(argv: readonly string[], io: CliIo): Promise<number> {
     return await command.run(args, io);
   } catch (e) {
     if (!(e instanceof CliError)) throw e;
-    io.stderr.write(`kleinflow ${command.name}: ${e.message}\n`);
+    io.stderr.write(`kleinflow ${command.name}: ${printable(e.message)}\n`);
     if (e.showUsage) io.stderr.write(`\n${command.usage}\n`);
     return e.status;
   }
@@ -80,6 +85,6 @@ async function dispatch(argv: readonly string[], io: CliIo): Promise<number> {
 
 function unknownCommand(name: string, io: CliIo): number {
   const hint = name.startsWith('-') ? `unknown option "${name}"` : `unknown command "${name}"`;
-  io.stderr.write(`kleinflow: ${hint}\n\n${generalUsage()}\n`);
+  io.stderr.write(`kleinflow: ${printable(hint)}\n\n${generalUsage()}\n`);
   return EXIT.usage;
 }

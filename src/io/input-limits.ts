@@ -18,6 +18,13 @@ export const INPUT_LIMITS = {
   /** A PNG file (its pixels are skipped; only its text chunks are read). A 16384² export is far below. */
   pngBytes: 512 * MiB,
   /**
+   * The chunks of one PNG. Reading skips through them without copying, but each is a step: a
+   * 512 MB PNG in libpng's usual 8 KB IDAT chunks has 65,536, so this leaves room and stops a file
+   * of millions of empty chunks at once. (Text keywords are at most 79 bytes, the PNG limit, and the
+   * graph inside a PNG is held to documentBytes before its text is decoded.)
+   */
+  pngChunks: 100_000,
+  /**
    * One entry of a points file, whitespace around it included. Points files are streamed, so
    * their total size is unlimited; this bound keeps memory small whatever the file holds.
    */

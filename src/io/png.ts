@@ -1,9 +1,12 @@
 /**
  * PNG encoding/decoding of 8-bit RGBA images with text chunks (the graph JSON travels in an iTXt
- * chunk keyed "kleinflow", so a PNG dropped back onto Kleinflow reopens its graph). Pure TS +
- * fflate: the same code serves the CLI (Node) and the browser.
+ * chunk keyed "kleinflow", so a PNG dropped back onto Kleinflow reopens its graph). Pure TS,
+ * fflate and fast-png: the same code serves the CLI (Node) and the browser. Decoding pixels is
+ * fast-png's; the writer and the text reader walk chunk headers only (no pixel is decoded to read
+ * a graph) and take their limits from the caller (Kleinflow's policy: src/io/png-graph.ts).
  */
-import { unzlibSync, zlibSync } from 'fflate';
+import { convertIndexedToRgb, decode } from 'fast-png';
+import { zlibSync } from 'fflate';
 
 const SIGNATURE = [137, 80, 78, 71, 13, 10, 26, 10];
 
@@ -27,7 +30,8 @@ export function crc32(bytes: Uint8Array, crc = 0xffffffff): number {
 const ascii = (s: string) => Uint8Array.from(s, (ch) => ch.charCodeAt(0));
 const utf8 = (s: string) => new TextEncoder().encode(s);
 
-function chunk(type: string, data: Uint8Array): Uint8Array {
+/** One chunk as the PNG specification lays it out: length, type, data, CRC over type and data. */
+export function pngChunk(type: string, data: Uint8Array): Uint8Array {
   const out = new Uint8Array(12 + data.length);
   const view = new DataView(out.buffer);
   view.setUint32(0, data.length);
@@ -44,7 +48,7 @@ function itxt(keyword: string, text: string): Uint8Array {
   const data = new Uint8Array(k.length + 5 + t.length);
   data.set(k, 0);
   data.set(t, k.length + 5);
-  return chunk('iTXt', data);
+  return pngChunk('iTXt', data);
 }
 
 export interface PngImage {
@@ -69,10 +73,10 @@ export function encodePng(image: PngImage, text: Readonly<Record<string, string>
   }
   const parts = [
     Uint8Array.from(SIGNATURE),
-    chunk('IHDR', ihdr),
+    pngChunk('IHDR', ihdr),
     ...Object.entries(text).map(([k, t]) => itxt(k, t)),
-    chunk('IDAT', zlibSync(raw, { level: 6 })),
-    chunk('IEND', new Uint8Array(0)),
+    pngChunk('IDAT', zlibSync(raw, { level: 6 })),
+    pngChunk('IEND', new Uint8Array(0)),
   ];
   const out = new Uint8Array(parts.reduce((n, p) => n + p.length, 0));
   let o = 0;
@@ -83,44 +87,107 @@ export function encodePng(image: PngImage, text: Readonly<Record<string, string>
   return out;
 }
 
-/** Reads the tEXt/iTXt (uncompressed) entries of a PNG; null when the bytes are not a PNG. */
-export function readPngText(bytes: Uint8Array): Record<string, string> | null {
-  if (bytes.length < 8 || SIGNATURE.some((b, i) => bytes[i] !== b)) return null;
-  const out: Record<string, string> = {};
+export const isPng = (bytes: Uint8Array): boolean =>
+  bytes.length >= 8 && SIGNATURE.every((b, i) => bytes[i] === b);
+
+/** The PNG specification's longest keyword of a text chunk (tEXt, zTXt, iTXt), in bytes. */
+export const PNG_KEYWORD_BYTES = 79;
+
+/** What a caller lets one PNG hold before it is refused: all its chunks, and one text entry's bytes. */
+export interface PngTextLimits {
+  readonly chunks: number;
+  readonly textBytes: number;
+}
+
+const NO_LIMITS: PngTextLimits = { chunks: Number.POSITIVE_INFINITY, textBytes: Number.POSITIVE_INFINITY };
+
+/** A PNG past a limit, or with a malformed text chunk: one line saying which chunk and why. */
+export class PngProblem extends Error {}
+
+interface Chunk {
+  /** Where the chunk starts (its length field) and ends (after its CRC, clipped to the file). */
+  readonly start: number;
+  readonly end: number;
+  readonly type: string;
+  readonly data: Uint8Array;
+}
+
+/**
+ * The chunks of a PNG after its signature, up to IEND: headers only, no data copied or decoded.
+ * Throws PngProblem past `maxChunks` chunks.
+ */
+function* chunks(bytes: Uint8Array, maxChunks: number): Generator<Chunk> {
   const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
   let o = 8;
-  while (o + 12 <= bytes.length) {
+  for (let n = 1; o + 12 <= bytes.length; n++) {
+    if (n > maxChunks)
+      throw new PngProblem(`it has more than ${maxChunks.toLocaleString('en')} chunks, the limit`);
     const len = view.getUint32(o);
-    const type = String.fromCharCode(...bytes.subarray(o + 4, o + 8));
-    const data = bytes.subarray(o + 8, Math.min(bytes.length, o + 8 + len));
-    if (type === 'tEXt' || type === 'iTXt') {
-      const z = data.indexOf(0);
-      if (z > 0) {
-        const key = String.fromCharCode(...data.subarray(0, z));
-        if (type === 'tEXt') out[key] = new TextDecoder('latin1').decode(data.subarray(z + 1));
-        else if (data[z + 1] === 0) {
-          // skip compression flag/method, language tag and translated keyword (both 0-terminated)
-          let p = z + 3;
-          p = data.indexOf(0, p) + 1;
-          p = data.indexOf(0, p) + 1;
-          if (p > 0) out[key] = new TextDecoder().decode(data.subarray(p));
-        }
-      }
-    }
-    if (type === 'IEND') break;
+    const type = String.fromCharCode(bytes[o + 4], bytes[o + 5], bytes[o + 6], bytes[o + 7]);
+    const end = Math.min(bytes.length, o + 12 + len);
+    yield { start: o, end, type, data: bytes.subarray(o + 8, Math.min(bytes.length, o + 8 + len)) };
+    if (type === 'IEND') return;
     o += 12 + len;
+  }
+}
+
+const TEXT_TYPES = new Set(['tEXt', 'iTXt', 'zTXt']);
+
+/** The length of a text chunk's keyword (the 0 byte that ends it), looking at most 80 bytes far; -1 past that. */
+const keywordLength = (c: Chunk): number => c.data.subarray(0, PNG_KEYWORD_BYTES + 1).indexOf(0);
+
+const latin1 = (bytes: Uint8Array) => new TextDecoder('latin1').decode(bytes);
+
+/**
+ * The keyword of a text chunk (Latin-1 up to the first 0 byte). Only its first 80 bytes are looked
+ * at: a keyword that is empty or longer than the specification allows is a PngProblem.
+ */
+function chunkKeyword(c: Chunk): string {
+  const z = keywordLength(c);
+  const at = `the ${c.type} chunk at byte ${c.start.toLocaleString('en')}`;
+  if (z < 0)
+    throw new PngProblem(`${at} has a keyword longer than ${PNG_KEYWORD_BYTES} bytes (the PNG limit)`);
+  if (z === 0) throw new PngProblem(`${at} has an empty keyword`);
+  return latin1(c.data.subarray(0, z));
+}
+
+/**
+ * The tEXt and uncompressed iTXt entries of a PNG; null when the bytes are not a PNG. zTXt and
+ * compressed iTXt are skipped: Kleinflow writes nothing compressed, so no inflation can explode.
+ * With `only`, just that keyword's text is decoded. Throws PngProblem past `limits` (an entry's
+ * size is checked before its text is decoded) or for a malformed keyword.
+ */
+export function readPngText(
+  bytes: Uint8Array,
+  limits: PngTextLimits = NO_LIMITS,
+  only?: string,
+): Record<string, string> | null {
+  if (!isPng(bytes)) return null;
+  const out: Record<string, string> = {};
+  for (const c of chunks(bytes, limits.chunks)) {
+    if (!TEXT_TYPES.has(c.type)) continue;
+    const key = chunkKeyword(c);
+    if (c.type === 'zTXt' || (only !== undefined && key !== only)) continue;
+    let p = key.length + 1;
+    if (c.type === 'iTXt') {
+      if (c.data[p] !== 0) continue; // compressed
+      // skip the compression flag and method, then the language tag and translated keyword (0-terminated)
+      p = c.data.indexOf(0, p + 2) + 1;
+      p = p > 0 ? c.data.indexOf(0, p) + 1 : 0;
+      if (p === 0) continue;
+    }
+    const size = c.data.length - p;
+    if (size > limits.textBytes)
+      throw new PngProblem(
+        `its "${key}" text is ${size.toLocaleString('en')} bytes, more than ${formatSize(limits.textBytes)}, the limit for it`,
+      );
+    out[key] = c.type === 'tEXt' ? latin1(c.data.subarray(p)) : new TextDecoder().decode(c.data.subarray(p));
   }
   return out;
 }
 
-export const isPng = (bytes: Uint8Array): boolean =>
-  bytes.length >= 8 && SIGNATURE.every((b, i) => bytes[i] === b);
-
-/** The keyword of a tEXt/iTXt/zTXt chunk's data (Latin-1 up to the first 0 byte). */
-const chunkKeyword = (data: Uint8Array): string => {
-  const z = data.indexOf(0);
-  return z > 0 ? String.fromCharCode(...data.subarray(0, z)) : '';
-};
+const formatSize = (n: number) =>
+  n >= 1 << 20 ? `${+(n / (1 << 20)).toFixed(1)} MB` : `${n.toLocaleString('en')} bytes`;
 
 /**
  * A copy of a PNG with iTXt entries set: text chunks with the same keywords are removed and the
@@ -129,24 +196,18 @@ const chunkKeyword = (data: Uint8Array): string => {
  */
 export function setPngText(bytes: Uint8Array, text: Readonly<Record<string, string>>): Uint8Array {
   if (!isPng(bytes)) throw new Error('not a PNG file');
-  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
   const parts: Uint8Array[] = [bytes.subarray(0, 8)];
   const fresh = Object.entries(text).map(([k, t]) => itxt(k, t));
   let inserted = false;
-  let o = 8;
-  while (o + 12 <= bytes.length) {
-    const len = view.getUint32(o);
-    const type = String.fromCharCode(...bytes.subarray(o + 4, o + 8));
-    const end = Math.min(bytes.length, o + 12 + len);
-    const isText = type === 'tEXt' || type === 'iTXt' || type === 'zTXt';
-    if ((type === 'IDAT' || type === 'IEND') && !inserted) {
+  for (const c of chunks(bytes, Number.POSITIVE_INFINITY)) {
+    if ((c.type === 'IDAT' || c.type === 'IEND') && !inserted) {
       parts.push(...fresh);
       inserted = true;
     }
-    if (!(isText && Object.hasOwn(text, chunkKeyword(bytes.subarray(o + 8, end)))))
-      parts.push(bytes.subarray(o, end));
-    if (type === 'IEND') break;
-    o += 12 + len;
+    // A malformed keyword is no entry being set: that chunk is copied like any other.
+    const z = TEXT_TYPES.has(c.type) ? keywordLength(c) : -1;
+    if (!(z > 0 && Object.hasOwn(text, latin1(c.data.subarray(0, z)))))
+      parts.push(bytes.subarray(c.start, c.end));
   }
   if (!inserted) parts.push(...fresh);
   const out = new Uint8Array(parts.reduce((n, p) => n + p.length, 0));
@@ -158,54 +219,28 @@ export function setPngText(bytes: Uint8Array, text: Readonly<Record<string, stri
   return out;
 }
 
-/** Decodes an 8-bit RGBA, non-interlaced PNG as written by encodePng (filter types 0–4). For tests. */
+/**
+ * Any PNG (every colour type, bit depth and interlacing, decoded by fast-png) as 8-bit RGBA.
+ * Throws on a damaged file, with fast-png's reason.
+ */
 export function decodePng(bytes: Uint8Array): PngImage {
-  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
-  let o = 8;
-  let width = 0;
-  let height = 0;
-  const idat: Uint8Array[] = [];
-  while (o + 12 <= bytes.length) {
-    const len = view.getUint32(o);
-    const type = String.fromCharCode(...bytes.subarray(o + 4, o + 8));
-    const data = bytes.subarray(o + 8, o + 8 + len);
-    if (type === 'IHDR') {
-      width = view.getUint32(o + 8);
-      height = view.getUint32(o + 12);
-      if (data[8] !== 8 || data[9] !== 6 || data[12] !== 0)
-        throw new Error('only 8-bit RGBA non-interlaced PNGs are supported');
-    } else if (type === 'IDAT') idat.push(data);
-    else if (type === 'IEND') break;
-    o += 12 + len;
-  }
-  const all = new Uint8Array(idat.reduce((n, p) => n + p.length, 0));
-  let p = 0;
-  for (const d of idat) {
-    all.set(d, p);
-    p += d.length;
-  }
-  const raw = unzlibSync(all);
-  const stride = width * 4;
-  const out = new Uint8Array(height * stride);
-  for (let y = 0; y < height; y++) {
-    const f = raw[y * (stride + 1)];
-    for (let x = 0; x < stride; x++) {
-      const cur = raw[y * (stride + 1) + 1 + x];
-      const a = x >= 4 ? out[y * stride + x - 4] : 0;
-      const b = y > 0 ? out[(y - 1) * stride + x] : 0;
-      const c = x >= 4 && y > 0 ? out[(y - 1) * stride + x - 4] : 0;
-      let pred = 0;
-      if (f === 1) pred = a;
-      else if (f === 2) pred = b;
-      else if (f === 3) pred = (a + b) >> 1;
-      else if (f === 4) {
-        const pa = Math.abs(b - c);
-        const pb = Math.abs(a - c);
-        const pc = Math.abs(a + b - 2 * c);
-        pred = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
-      }
-      out[y * stride + x] = (cur + pred) & 0xff;
-    }
+  const png = decode(bytes);
+  const { width, height } = png;
+  const values = png.palette ? convertIndexedToRgb(png) : png.data;
+  const channels = png.palette ? png.palette[0].length : png.channels;
+  const max = png.palette ? 255 : 2 ** png.depth - 1;
+  if (values.length < width * height * channels)
+    throw new Error('the PNG has fewer pixels than its size says');
+  const out = new Uint8Array(width * height * 4);
+  const to8 = max === 255 ? (v: number) => v : (v: number) => Math.round((v * 255) / max);
+  const grey = channels < 3;
+  const alpha = channels === 2 || channels === 4;
+  for (let i = 0; i < width * height; i++) {
+    const at = i * channels;
+    out[i * 4] = to8(values[at]);
+    out[i * 4 + 1] = to8(values[grey ? at : at + 1]);
+    out[i * 4 + 2] = to8(values[grey ? at : at + 2]);
+    out[i * 4 + 3] = alpha ? to8(values[at + channels - 1]) : 255;
   }
   return { width, height, data: out };
 }

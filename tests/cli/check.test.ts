@@ -105,3 +105,41 @@ describe('kleinflow check: nodes inside groups', () => {
     );
   });
 });
+
+describe('kleinflow check: document text with control characters', () => {
+  it('escapes them in every line it prints: no terminal escape, no faked line', () => {
+    const evil = '\u001b]0;owned\u0007\u001b[2J\r\nb.json: ok\u009b\u202e';
+    const odd: Node = { id: evil, type: `t${evil}`, position: [0, 0], params: {} };
+    const path = inversions('evil.json', [{ c: [0, 0], r: 1 }], [odd]);
+    const r = runCli(['check', path]);
+    expect(r.status).toBe(1);
+    // Nothing but printable text and the line breaks between messages.
+    // biome-ignore lint/suspicious/noControlCharactersInRegex: the characters that must not come out
+    expect(r.stdout + r.stderr).not.toMatch(/[\u0000-\u0009\u000b-\u001f\u007f-\u009f\u202a-\u202e]/);
+    const lines = r.stdout.trim().split('\n');
+    expect(lines).toHaveLength(1);
+    expect(lines[0]).toMatch(
+      /^error KF203 nodes\[2\]\.type \(node "\\x1b\]0;owned\\x07\\x1b\[2J\\r\\nb\.json: ok/,
+    );
+    expect(r.stderr.trim().split('\n')).toEqual([expect.stringMatching(/evil\.json: 1 error, 0 warnings$/)]);
+  });
+});
+
+describe('kleinflow check: a 3D graph beyond the GPU range', () => {
+  it('warns (KF405) for a seed sphere centred at 1e308, which the shader would write as 3.4e38', () => {
+    const graph = doc(
+      [
+        node('m', 'sphere-inversion', { sphere: { center: [0, 0, 0], radius: 1 } }),
+        node('s', 'seed-sphere', { center: [1e308, 0, 0], radius: 0.5, color: '#ffffff' }),
+        node('out', 'render-3d', { camera: [4, 0, 0], target: [0, 0, 0] }),
+      ],
+      [edge('e1', 'm.element', 'out.elements'), edge('e2', 's.seed', 'out.seeds')],
+    );
+    const path = join(dir, 'far-3d.json');
+    writeFileSync(path, JSON.stringify(graph));
+    const r = runCli(['check', path]);
+    expect(r.stdout).toMatch(
+      /^warning KF405 .*\(node "out", port "seeds"\): a value of 1e\+308 is beyond .*so seed "s" does not draw/m,
+    );
+  });
+});

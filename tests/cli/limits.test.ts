@@ -9,6 +9,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { afterAll, describe, expect, it } from 'vitest';
+import { pngChunk, pngWith, textData } from '../src/io/support/png-chunks.ts';
 import { ROOT, runCli } from './run-cli.ts';
 
 const BIN = fileURLToPath(new URL('../../src/cli/kleinflow.mjs', import.meta.url));
@@ -89,4 +90,21 @@ describe('kleinflow sample streams', () => {
     expect([inside.depth, inside.x, inside.y]).toEqual([1, 2, 0]);
     expect(out.points[0]).toEqual({ depth: 0, x: -2, y: 0, escaped: true });
   }, 30_000);
+});
+
+describe('PNG limits on the command line', () => {
+  it.each(['check', 'convert'])(
+    '%s refuses a PNG with a 2 MB text keyword in one line naming the file',
+    (command) => {
+      const path = join(dir, 'long-keyword.png');
+      const keyword = new Uint8Array(2 * 1024 * 1024).fill(0x41);
+      writeFileSync(path, pngWith([pngChunk('tEXt', textData(keyword, 'x'))]));
+      const r = runCli([command, path]);
+      expect(r.status).toBe(1);
+      // check: one line; convert: the diagnostic, then "could not be converted". Never a stack trace.
+      const lines = r.stderr.trim().split('\n');
+      expect(lines.length).toBeLessThanOrEqual(2);
+      expect(lines[0]).toMatch(/long-keyword\.png.*KF504.*keyword .*longer than 79 bytes/);
+    },
+  );
 });

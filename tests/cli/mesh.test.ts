@@ -3,7 +3,7 @@
  * back into a closed, consistently oriented mesh, progress on stderr; an unbounded graph without
  * --bounds, a 2D graph and bad options are refused in one line.
  */
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
@@ -105,5 +105,20 @@ describe('kleinflow mesh', () => {
     const noOut = runCli(['mesh', example3d('fig26-quasi-sphere')]);
     expect(noOut.stderr).toMatch(/missing --out/);
     for (const run of [flat, res, bounds, noOut]) expect(run.stderr).not.toMatch(/\n\s+at /);
+  });
+
+  it('refuses bounds whose extent overflows float64, and never writes an empty mesh with exit 0', () => {
+    const out = join(dir, 'huge.stl');
+    const quasiSphere = (...options: string[]) =>
+      runCli(['mesh', example3d('fig26-quasi-sphere'), '-o', out, ...options]);
+    const huge = quasiSphere('--bounds', '-1e308,-1e308,-1e308,1e308,1e308,1e308');
+    expect(huge.status).toBe(2);
+    expect(huge.stderr.split('\n')[0]).toMatch(/^kleinflow mesh: --bounds .*not finite in float64/);
+    expect(existsSync(out)).toBe(false);
+    // A box beside the solid: nothing to mesh is a failure, not an empty file.
+    const away = quasiSphere('-r', '8', '--bounds', '50,50,50,51,51,51');
+    expect(away.status).toBe(1);
+    expect(away.stderr).toMatch(/no mesh: nothing solid/);
+    expect(existsSync(out)).toBe(false);
   });
 });

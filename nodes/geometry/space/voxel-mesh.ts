@@ -68,7 +68,20 @@ export function parseBounds(text: string): Result<Bounds3> {
   const min: Vec3 = [v[0], v[1], v[2]];
   const max: Vec3 = [v[3], v[4], v[5]];
   if (!min.every((m, a) => m < max[a])) return fail('each of X0, Y0, Z0 must be below X1, Y1, Z1');
-  return ok({ min, max });
+  const problem = boundsProblem({ min, max });
+  return problem ? fail(problem) : ok({ min, max });
+}
+
+/**
+ * Why a box cannot be meshed, or null: its sides and the grid around it (one cell of padding) must
+ * be finite in float64 — `-1e308…1e308` is 2e308 wide, which is ∞, and would mesh as nothing.
+ */
+export function boundsProblem({ min, max }: Bounds3): string | null {
+  const size = sub3(max, min);
+  const reach = [...min, ...max].map((v) => Math.abs(v) + Math.max(...size));
+  return [...size, ...reach].every(Number.isFinite)
+    ? null
+    : `the box's extent (${size.map((s) => s.toPrecision(3)).join(' × ')}) is not finite in float64: give a smaller box`;
 }
 
 /** A grid with cubic cells, `resolution` of them along the longest side, plus one empty cell of padding all round. */
@@ -156,6 +169,8 @@ export async function meshScene3d(
   }
   if (!bounds.min.every((v, a) => v < bounds.max[a]))
     return fail('the bounds are empty (min must be below max)');
+  const problem = boundsProblem(bounds);
+  if (problem) return fail(problem);
   const grid = gridFor(bounds, resolution);
   const solid = new Uint8Array((grid.nx + 1) * (grid.ny + 1) * (grid.nz + 1));
   const report = options.onProgress ?? (() => true);
@@ -187,5 +202,6 @@ export async function meshScene3d(
   });
   if (!mesh) return null;
   report(1);
+  if (mesh.triangles.length === 0) return fail('nothing solid inside the bounds: the mesh would be empty');
   return ok({ mesh, bounds, grid });
 }

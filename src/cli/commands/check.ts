@@ -10,6 +10,7 @@ import { compile } from '../../../shader-gen/compile.ts';
 import { parseArgs } from '../args.ts';
 import { type CliCommand, CliError, EXIT, usageError } from '../command.ts';
 import { countBySeverity, formatDiagnostic, type GraphLoad, loadGraph } from '../load-graph.ts';
+import { printable } from '../printable.ts';
 
 const plural = (n: number, word: string) => `${n} ${word}${n === 1 ? '' : 's'}`;
 
@@ -54,17 +55,17 @@ export const checkCommand: CliCommand = {
         const diagnostics = withCompileDiagnostics(load);
         for (const d of diagnostics) {
           io.stdout.write(
-            `${prefix ? `${path}: ` : ''}${formatDiagnostic(d, load.doc, load.evaluation?.origin)}\n`,
+            `${prefix ? `${printable(path)}: ` : ''}${formatDiagnostic(d, load.doc, load.evaluation?.origin)}\n`,
           );
         }
         const n = countBySeverity(diagnostics);
         const summary =
           n.error + n.warning === 0 ? 'ok' : `${plural(n.error, 'error')}, ${plural(n.warning, 'warning')}`;
-        io.stderr.write(`${path}: ${summary}\n`);
+        io.stderr.write(`${printable(path)}: ${summary}\n`);
         if (hasErrors(diagnostics)) status = EXIT.failed;
       } catch (e) {
         if (!(e instanceof CliError)) throw e;
-        io.stderr.write(`kleinflow check: ${e.message}\n`);
+        io.stderr.write(`kleinflow check: ${printable(e.message)}\n`);
         status = EXIT.failed;
       }
     }

@@ -8,6 +8,7 @@ import { openBytes, serializeDocument } from '../../io/document-io.ts';
 import { expectPositionals, formatOptions, type OptionSpec, parseArgs, stringOption } from '../args.ts';
 import { type CliCommand, CliError, EXIT, usageError } from '../command.ts';
 import { fileErrorMessage, formatDiagnostic, readInput } from '../load-graph.ts';
+import { printable } from '../printable.ts';
 
 const OPTIONS: readonly OptionSpec[] = [
   {
@@ -46,10 +47,11 @@ export const convertCommand: CliCommand = {
 
     const opened = openBytes(await readInput(io, input));
     if (!opened.ok) {
-      for (const d of opened.diagnostics) io.stderr.write(`${input}: ${formatDiagnostic(d)}\n`);
+      for (const d of opened.diagnostics) io.stderr.write(`${printable(input)}: ${formatDiagnostic(d)}\n`);
       throw new CliError(`"${input}" could not be converted`);
     }
-    for (const d of opened.notes) io.stderr.write(`${input}: ${formatDiagnostic(d, opened.doc)}\n`);
+    for (const d of opened.notes)
+      io.stderr.write(`${printable(input)}: ${formatDiagnostic(d, opened.doc)}\n`);
     const text = serializeDocument(opened.doc);
     if (output === undefined) {
       io.stdout.write(text);

@@ -11,6 +11,7 @@ import { standaloneShader } from '../../../shader-gen/standalone.ts';
 import { expectPositionals, formatOptions, type OptionSpec, parseArgs, stringOption } from '../args.ts';
 import { type CliCommand, CliError, EXIT } from '../command.ts';
 import { fileErrorMessage, formatDiagnostic, loadAnyScene } from '../load-graph.ts';
+import { printable } from '../printable.ts';
 
 const OPTIONS: readonly OptionSpec[] = [
   { long: 'shadertoy', doc: 'print the Shadertoy version (mainImage, jittered samples, sRGB output)' },
@@ -50,7 +51,7 @@ export const glslCommand: CliCommand = {
       flavour,
     );
     for (const d of diagnostics)
-      io.stderr.write(`${graphPath}: ${formatDiagnostic(d, doc, evaluation.origin)}\n`);
+      io.stderr.write(`${printable(graphPath)}: ${formatDiagnostic(d, doc, evaluation.origin)}\n`);
     const output = stringOption(parsed, 'output');
     if (output === undefined) io.stdout.write(source);
     else {

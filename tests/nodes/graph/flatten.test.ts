@@ -55,6 +55,32 @@ describe('flattenGroups', () => {
     expect(evaluateGraph(two, registry).scene.elements).toHaveLength(2);
   });
 
+  it('two groups with one id: a KF201 error naming both places, never one group silently dropped', () => {
+    const d = grouped();
+    const g = d.nodes.find((n) => n.id === 'g')!;
+    const twin = { ...d, nodes: [...d.nodes, g] };
+    const said = evaluateGraph(twin, registry).diagnostics.filter((x) => x.code === 'KF201');
+    expect(said).toHaveLength(1);
+    expect(said[0]).toMatchObject({ severity: 'error', nodeId: 'g', path: `nodes[${d.nodes.length}].id` });
+    expect(said[0].message).toContain(`nodes[${d.nodes.indexOf(g)}] already has it`);
+    // A group next to a plain node of its id is the same fault.
+    const clash = { ...d, nodes: [...d.nodes, node('g', 'point')] };
+    expect(evaluateGraph(clash, registry).diagnostics.filter((x) => x.code === 'KF201')).toHaveLength(1);
+  });
+
+  it('two nodes with one id inside one group (at any depth): KF201 at the second, naming the first', () => {
+    const inner = withBody((b) => ({ ...b, nodes: [...b.nodes, { ...b.nodes[0] }] }));
+    const said = evaluateGraph(inner, registry).diagnostics.filter((x) => x.code === 'KF201');
+    expect(said).toHaveLength(1);
+    expect(said[0]).toMatchObject({ nodeId: 'c', path: 'nodes[0].group.nodes[2].id' });
+    expect(said[0].message).toContain('nodes[0].group.nodes[0]');
+    // One level deeper: the group g inside an outer group h.
+    const nested = groupNodes(inner, ['g', 'out'], 'h');
+    const deep = evaluateGraph(nested, registry).diagnostics.filter((x) => x.code === 'KF201');
+    expect(deep).toHaveLength(1);
+    expect(deep[0].path).toMatch(/^nodes\[0\]\.group\.nodes\[\d\]\.group\.nodes\[2\]\.id$/);
+  });
+
   it('a muted group mutes every node inside it (its elements leave the picture)', () => {
     const d = grouped();
     const muted = { ...d, nodes: d.nodes.map((n) => (n.id === 'g' ? { ...n, muted: true } : n)) };

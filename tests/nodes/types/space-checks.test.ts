@@ -2,7 +2,11 @@
 import { describe, expect, it } from 'vitest';
 import type { NodeElement3d, Seed3d } from '../../../nodes/core/scene-3d.ts';
 import { mobius3d } from '../../../nodes/geometry/space/mobius-3d.ts';
-import { cameraDiagnostics, seedDiagnostics } from '../../../nodes/types/space-checks.ts';
+import {
+  cameraDiagnostics,
+  gpuRangeDiagnostics3d,
+  seedDiagnostics,
+} from '../../../nodes/types/space-checks.ts';
 
 const mirror: NodeElement3d = {
   kind: 'sphere-inversion',
@@ -31,6 +35,12 @@ describe('cameraDiagnostics', () => {
     expect(codes(cameraDiagnostics([5.5, 0.5, 0], [], [box]))).toEqual([
       'KF316 the camera is inside seed "b": it sees only the inside of that seed',
     ]);
+  });
+
+  it('warns with the camera exactly at an inversion centre (where inverting is undefined)', () => {
+    expect(codes(cameraDiagnostics([0, 0, 0], [mirror], []))[0]).toMatch(
+      /^KF316 the camera is inside the region of element "m"/,
+    );
   });
 
   it('says nothing outside, or below a plane mirror (an isometry draws the same picture)', () => {
@@ -64,5 +74,25 @@ describe('seedDiagnostics', () => {
     expect(seedDiagnostics([{ ...box, center: [5, 0, 0.5] }], [floor])[0]?.message).toMatch(
       /region of element "f"/,
     );
+  });
+});
+
+describe('gpuRangeDiagnostics3d', () => {
+  it('KF405 for a seed or element value the float32 shader overflows on when squaring, naming its node', () => {
+    const far = ball(1e308, 1);
+    expect(gpuRangeDiagnostics3d([mirror], [far])).toEqual([
+      expect.objectContaining({ code: 'KF405', severity: 'warning', port: 'seeds' }),
+    ]);
+    expect(gpuRangeDiagnostics3d([mirror], [far])[0].message).toMatch(
+      /a value of 1e\+308 is beyond .*, so seed "s" does not draw/,
+    );
+    const huge: NodeElement3d = { ...mirror, sphere: { center: [0, 0, 0], radius: 1e20 } };
+    expect(gpuRangeDiagnostics3d([huge], [])).toMatchObject([
+      { code: 'KF405', port: 'elements', message: expect.stringContaining('element "m"') },
+    ]);
+  });
+
+  it('says nothing for ordinary values', () => {
+    expect(gpuRangeDiagnostics3d([mirror, floor], [box, ball(3, 1)])).toEqual([]);
   });
 });

@@ -4,7 +4,8 @@
  * `samples` and drawing stops (an idle page costs no GPU). Value edits reuse the linked program
  * (uniform upload only); after `idleBakeMs` without edits a baked program (values as literals,
  * several times faster) takes over until the next edit. Compile errors keep the last good frame on
- * screen and are reported with node ids. A lost WebGL context is rebuilt when the browser restores it.
+ * screen and are reported with node ids. A lost WebGL context is rebuilt when the browser restores it
+ * (context-loss.ts); live sources keep the loop running while they play (live-feed.ts).
  * Which sample, at which scale, whole or in bands, is frame-schedule.ts's to say: a 3D scene is
  * previewed at a reduced resolution while it changes and drawn again at full size once still, band
  * by band over the preview when one sample would be slow; a 2D scene always at full size, whole.
@@ -13,12 +14,12 @@ import { sameCamera3d } from '../../nodes/core/camera-3d.ts';
 import type { Camera3d } from '../../nodes/core/scene-3d.ts';
 import { DEFAULT_VIEW, type View } from '../../nodes/core/view.ts';
 import { sampleOffset } from '../../shader-gen/view.ts';
+import { ContextLoss } from './context-loss.ts';
 import { type Drawable, is3d } from './drawable.ts';
 import { BAND_MS } from './frame-bands.ts';
 import { FrameLoop } from './frame-loop.ts';
 import { type FramePlan, FrameSchedule } from './frame-schedule.ts';
-import { liveMedia } from './live-media.ts';
-import { refreshLive } from './live-textures.ts';
+import { LiveFeed } from './live-feed.ts';
 import { PaneTargets } from './pane-targets.ts';
 import { inspectCssPoint, type PixelInspection } from './pixel-probe.ts';
 import { Renderer } from './renderer.ts';
@@ -48,15 +49,10 @@ export class Viewport {
   private sceneSetAt = 0;
   private framesDrawn = 0;
   private readonly loop = new FrameLoop((now) => this.tick(now));
-  private lost = false;
   private disposed = false;
   private readonly idleBakeMs: number;
-  private readonly detach: () => void;
-  /** A live source (camera, video) feeds the program: frames are requested continuously. */
-  private liveRunning = false;
-  /** Live frames are held still while an export draws its tiles (one frame for the whole PNG). */
-  private exporting = false;
-  private liveUploads = 0;
+  private readonly context: ContextLoss;
+  private readonly live: LiveFeed;
 
   constructor(
     private readonly canvas: HTMLCanvasElement,
@@ -69,38 +65,25 @@ export class Viewport {
     this.targets = new PaneTargets(gl);
     this.renderer = new Renderer(gl, () => this.restart());
     this.programs = new SceneProgramBuilder((d) => options.onDiagnostics?.(d));
-    const onLost = (e: Event) => {
-      e.preventDefault(); // tells the browser we want the context back
-      this.lost = true;
-      this.loop.stop();
-      this.programs.forget(this.renderer);
-      this.renderer = null; // every GL object died with the context
-      this.targets.forget();
-      this.active = null;
-      this.frames.forget();
-    };
-    const onRestored = () => {
-      try {
+    this.context = new ContextLoss(canvas, {
+      drop: () => {
+        this.loop.stop();
+        this.programs.forget(this.renderer);
+        this.renderer = null; // every GL object died with the context
+        this.targets.forget();
+        this.active = null;
+        this.frames.forget();
+      },
+      rebuild: () => {
         this.renderer = new Renderer(gl, () => this.restart());
         requestSrgbDrawingBuffer(gl, canvas.width, canvas.height);
-      } catch (e) {
-        // Lost again while rebuilding: the next 'webglcontextrestored' tries once more.
-        console.warn('[kleinflow] could not rebuild the WebGL renderer', e);
-        return;
-      }
-      this.lost = false;
-      this.sceneDirty = this.scene !== null;
-      this.requestFrame();
-    };
-    canvas.addEventListener('webglcontextlost', onLost);
-    canvas.addEventListener('webglcontextrestored', onRestored);
-    // A source starting or failing changes what is bound (its frames or its fallback).
-    const unsubscribe = liveMedia.subscribe(() => this.restart());
-    this.detach = () => {
-      unsubscribe();
-      canvas.removeEventListener('webglcontextlost', onLost);
-      canvas.removeEventListener('webglcontextrestored', onRestored);
-    };
+      },
+      resume: () => {
+        this.sceneDirty = this.scene !== null;
+        this.requestFrame();
+      },
+    });
+    this.live = new LiveFeed(() => this.restart());
   }
 
   get stats(): ViewportStats {
@@ -109,7 +92,7 @@ export class Viewport {
       bakedCompiles: this.programs.bakedCompiles(this.renderer),
       frames: this.framesDrawn,
       baked: this.active?.baked ?? false,
-      liveUploads: this.liveUploads,
+      liveUploads: this.live.uploads,
       ...this.frames.stats(),
     };
   }
@@ -162,21 +145,16 @@ export class Viewport {
     const renderer = this.requireRenderer();
     const program = this.programs.exportProgram(renderer, scene);
     await renderer.pictures.whenReady(program.pictures);
-    // The live sources' current frame, held for every tile.
-    this.refreshLiveFrames(renderer, program.pictures);
-    this.exporting = true;
-    try {
-      const view = opts.view ?? this.view(scene);
-      const camera = this.camera(scene, opts.camera);
-      const tiled = { ...opts, view, camera, transparent: opts.transparent ?? false };
-      return await renderTiled(
+    const view = opts.view ?? this.view(scene);
+    const camera = this.camera(scene, opts.camera);
+    const tiled = { ...opts, view, camera, transparent: opts.transparent ?? false };
+    const draw = () =>
+      renderTiled(
         () => this.requireRenderer(),
         () => program,
         tiled,
       );
-    } finally {
-      this.exporting = false;
-    }
+    return this.live.holdDuring(renderer.pictures.live, program.pictures, draw);
   }
 
   /** The picture on the canvas now (resolved from the accumulation buffer), top row first; null before the first frame. */
@@ -194,7 +172,8 @@ export class Viewport {
   dispose(): void {
     this.disposed = true;
     this.loop.stop();
-    this.detach();
+    this.live.dispose();
+    this.context.dispose();
     if (this.renderer) {
       this.frames.dispose(this.gl);
       this.targets.dispose();
@@ -220,15 +199,6 @@ export class Viewport {
     return this.renderer;
   }
 
-  /** Uploads the live sources' new frames (none while exporting); true when the picture changed. */
-  private refreshLiveFrames(renderer: Renderer, pictures: readonly string[]): boolean {
-    if (this.exporting) return false;
-    const r = refreshLive(renderer.pictures.live, pictures, (id) => liveMedia.frameOf(id));
-    this.liveRunning = r.running;
-    if (r.changed) this.liveUploads++;
-    return r.changed;
-  }
-
   private restart(): void {
     if (!this.frames.restarting) this.frameClock = performance.now();
     this.frames.changed(performance.now());
@@ -236,13 +206,13 @@ export class Viewport {
   }
 
   private requestFrame(): void {
-    if (!this.lost && !this.disposed) this.loop.request();
+    if (!this.context.lost && !this.disposed) this.loop.request();
   }
 
   private tick(now: number): void {
     const renderer = this.renderer;
     const scene = this.scene;
-    if (!renderer || !scene || this.lost || this.disposed) return;
+    if (!renderer || !scene || this.context.lost || this.disposed) return;
     if (this.sceneDirty) {
       this.sceneDirty = false;
       const change = this.programs.apply(renderer, scene, now);
@@ -256,7 +226,7 @@ export class Viewport {
     }
     const baked = this.programs.pollBake(renderer, scene, now, this.idleBakeMs);
     if (baked) this.active = baked;
-    if (this.active && this.refreshLiveFrames(renderer, this.active.pictures)) this.frames.restart();
+    if (this.active && this.live.refresh(renderer.pictures.live, this.active.pictures)) this.frames.restart();
     const target = Math.max(1, scene.samples);
     if (this.targets.fit()) this.frames.restart();
     const { width, height } = this.targets;
@@ -311,12 +281,8 @@ export class Viewport {
 
   /** Keeps the loop running while there is work; sleeps (no frames at all) until the bake is due. */
   private keepRunning(now: number, target: number): void {
-    if (
-      this.sceneDirty ||
-      this.frames.wantsFrames(target, this.active !== null) ||
-      this.liveRunning ||
-      this.programs.bakeInFlight()
-    ) {
+    const busy = this.sceneDirty || this.live.running || this.programs.bakeInFlight();
+    if (busy || this.frames.wantsFrames(target, this.active !== null)) {
       this.requestFrame();
       return;
     }

@@ -3,8 +3,8 @@
  * their distance from a point, and a ray's first hit among them. Exact for every enumerated sphere;
  * the enumeration is a finite part of the orbit, so its distance is ≥ the true orbit distance.
  */
-import type { Sphere } from '../../../nodes/geometry/space/sphere.ts';
-import { invertSphere } from '../../../nodes/geometry/space/sphere.ts';
+import type { Plane, Sphere } from '../../../nodes/geometry/space/sphere.ts';
+import { invertSphere, reflectInPlane } from '../../../nodes/geometry/space/sphere.ts';
 import { dist3, type Vec3 } from '../../../nodes/geometry/space/vec3.ts';
 
 /** All w(seed) for reduced words w in the inversions of length ≤ maxLength. */
@@ -49,6 +49,86 @@ export function generatorOrbit(s1: Sphere, s2: Sphere, seeds: readonly Sphere[],
     let level: Sphere[] = [...seeds];
     for (let k = 0; k < n; k++) {
       level = level.flatMap((s) => apply(order, s) ?? []);
+      all.push(...level);
+    }
+  }
+  return all;
+}
+
+/** An involution of a mixed scene: inversion in a sphere or reflection in a plane. */
+export type Involution = { readonly sphere: Sphere } | { readonly plane: Plane };
+
+/**
+ * The image of ball b under one involution, or null where it is not a ball (an inversion centre on
+ * or inside b: the image is a half-space or a ball's outside).
+ */
+export function involutionImage(m: Involution, b: Sphere): Sphere | null {
+  if ('plane' in m) return { center: reflectInPlane(m.plane, b.center).x, radius: b.radius };
+  if (dist3(m.sphere.center, b.center) <= b.radius) return null;
+  const img = invertSphere(m.sphere, b);
+  return img.kind === 'sphere' ? img.sphere : null;
+}
+
+/** All w(seed) for reduced words w of length ≤ maxLength in mixed involutions (sphere inversions, plane reflections). */
+export function involutionOrbit(
+  mirrors: readonly Involution[],
+  seeds: readonly Sphere[],
+  maxLength: number,
+): Sphere[] {
+  const all: Sphere[] = [...seeds];
+  let level = seeds.map((s) => ({ s, last: -1 }));
+  for (let k = 0; k < maxLength; k++) {
+    const next: { s: Sphere; last: number }[] = [];
+    for (const { s, last } of level) {
+      mirrors.forEach((m, i) => {
+        if (i === last) return;
+        const img = involutionImage(m, s);
+        if (img) next.push({ s: img, last: i });
+      });
+    }
+    all.push(...next.map((n) => n.s));
+    level = next;
+  }
+  return all;
+}
+
+/**
+ * Images of the seeds under G^k, |k| ≤ n, for a generator G that is a chain of inversions
+ * (`chain` in the order applied, G⁻¹ being the reversed chain): G^k(seed) exactly, each inversion
+ * mapping a ball to a ball. A power whose image is not a ball (an inversion centre on or inside
+ * an intermediate ball) is left out, and so are the higher powers on that side.
+ */
+export function chainOrbit(chain: readonly Sphere[], seeds: readonly Sphere[], n: number): Sphere[] {
+  const apply = (order: readonly Sphere[], s: Sphere): Sphere | null => {
+    let cur: Sphere | null = s;
+    for (const sphere of order) {
+      cur = cur && involutionImage({ sphere }, cur);
+    }
+    return cur;
+  };
+  const all: Sphere[] = [...seeds];
+  for (const order of [chain, [...chain].reverse()]) {
+    let level: Sphere[] = [...seeds];
+    for (let k = 0; k < n; k++) {
+      level = level.flatMap((s) => apply(order, s) ?? []);
+      all.push(...level);
+    }
+  }
+  return all;
+}
+
+/** Images of the seeds under G^k, |k| ≤ n, for an isometry G (and its inverse) given on points. */
+export function isometryOrbit(
+  forward: (x: Vec3) => Vec3,
+  backward: (x: Vec3) => Vec3,
+  seeds: readonly Sphere[],
+  n: number,
+): Sphere[] {
+  const all: Sphere[] = [...seeds];
+  for (const map of [forward, backward]) {
+    let level: Sphere[] = [...seeds];
+    for (let k = 0; k < n; k++) {
+      level = level.map((s) => ({ center: map(s.center), radius: s.radius }));
       all.push(...level);
     }
   }

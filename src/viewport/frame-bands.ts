@@ -39,6 +39,14 @@ export function nextBandRows(last: number, ms: number, rows: number, bandMs: num
 }
 
 /**
+ * The rows of the next band after one of `last` rows whose fence was already signalled when it was
+ * first polled: its GPU time is unknown, only below a display frame (on a loaded machine that can
+ * be hundreds of ms, and pacing by it would keep one-row bands for ever), so it grows by MAX_GROWTH.
+ */
+export const grownBandRows = (last: number, rows: number): number =>
+  Math.max(1, Math.min(last * MAX_GROWTH, rows));
+
+/**
  * GL rows [y0, y1) (counted from the bottom, as gl.scissor counts them) of a band of `count` rows
  * that follows `done` rows drawn from the top of a `height`-row picture; clipped at the bottom.
  */

@@ -13,7 +13,7 @@
  * is sent without waiting for the abandoned band, which the GPU finishes first (GL keeps order).
  */
 import { DynamicResolution } from './dynamic-resolution.ts';
-import { BAND_MS, bandRows, firstBandRows, nextBandRows } from './frame-bands.ts';
+import { BAND_MS, bandRows, firstBandRows, grownBandRows, nextBandRows } from './frame-bands.ts';
 import { GpuFence } from './gpu-fence.ts';
 import { scaledSize } from './render-scale.ts';
 import type { Extent } from './resolve-pass.ts';
@@ -72,8 +72,14 @@ interface Band {
   /** The next band's rows. */
   rows: number;
   bands: number;
-  /** The band on the GPU now: its rows and when it was sent. */
-  sent: { readonly rows: number; readonly at: number } | null;
+  /** The band on the GPU now: its rows, when it was sent, and whether a poll found it unfinished. */
+  sent: Sent | null;
+}
+
+interface Sent {
+  readonly rows: number;
+  readonly at: number;
+  waited: boolean;
 }
 
 export class FrameSchedule {
@@ -180,7 +186,10 @@ export class FrameSchedule {
   ): { readonly finished: BandShown | null; readonly plan: FramePlan | null } {
     const band = this.band;
     // An abandoned band's fence is polled only to know when the GPU is free (see `sent`).
-    if (this.inFlight.waiting(gl) && band?.sent) return { finished: null, plan: null };
+    if (this.inFlight.waiting(gl) && band?.sent) {
+      band.sent.waited = true;
+      return { finished: null, plan: null };
+    }
     const finished = band?.sent ? this.bandFinished(band, band.sent) : null;
     if (c.is3d) this.dynamic.poll(gl);
     const scale = c.is3d ? this.dynamic.frameScale(now) : 1;
@@ -193,7 +202,7 @@ export class FrameSchedule {
   /** The plan's draw calls were sent, starting at `start` (performance.now()). */
   sent(gl: WebGL2RenderingContext, plan: FramePlan, start: number, is3d: boolean): void {
     if (plan.rows && this.band) {
-      this.band.sent = { rows: plan.rows[1] - plan.rows[0], at: start };
+      this.band.sent = { rows: plan.rows[1] - plan.rows[0], at: start, waited: false };
       this.inFlight.set(gl);
       return;
     }
@@ -237,12 +246,16 @@ export class FrameSchedule {
     return this.restartPending || this.band !== null || (this.samplesDone < target && this.drawnScale === 1);
   }
 
-  private bandFinished(band: Band, sent: { readonly rows: number; readonly at: number }): BandShown {
+  private bandFinished(band: Band, sent: Sent): BandShown {
     band.sent = null;
     band.done += sent.rows;
     band.bands++;
     const of = band.size.height;
-    band.rows = nextBandRows(sent.rows, this.clock() - sent.at, of, this.bandMs);
+    // A band found finished at its first poll took less than a display frame: its measured time is
+    // the frame interval, not its own, so it grows instead of being paced by it.
+    band.rows = sent.waited
+      ? nextBandRows(sent.rows, this.clock() - sent.at, of, this.bandMs)
+      : grownBandRows(sent.rows, of);
     this.learned = { height: of, rows: band.rows };
     const whole = band.done >= of;
     if (whole) {

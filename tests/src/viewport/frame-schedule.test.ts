@@ -114,12 +114,28 @@ describe('FrameSchedule', () => {
       send(plan);
       sizes.push(plan!.rows![1] - plan!.rows![0]);
       tick(ms);
+      expect(s.step(gpu.gl, SETTLED, ctx(true)).plan).toBeNull(); // polled on the GPU: its time is its own
       gpu.finish();
       plan = s.step(gpu.gl, SETTLED, ctx(true)).plan;
     }
     // 15 rows took 3 × BAND_MS: 5; 5 took a quarter: at most twice as many, 10; 10 took BAND_MS: 10.
     expect(sizes).toEqual([15, 5, 10]);
     expect(plan!.rows![1] - plan!.rows![0]).toBe(10);
+  });
+
+  it('a band found finished at its first poll grows, whatever the frame interval made its time', () => {
+    const { s, gpu, send, tick } = previewed();
+    let plan = s.step(gpu.gl, SETTLED, ctx(true)).plan;
+    const sizes: number[] = [];
+    for (let i = 0; i < 3; i++) {
+      send(plan);
+      sizes.push(plan!.rows![1] - plan!.rows![0]);
+      tick(BAND_MS * 8); // a loaded machine: the next animation frame comes long after
+      gpu.finish();
+      plan = s.step(gpu.gl, SETTLED, ctx(true)).plan;
+    }
+    // Paced by the 8 × BAND_MS the frames took, the bands would shrink to one row and stay there.
+    expect(sizes).toEqual([15, 30, 60]);
   });
 
   it('a whole banded sample counts once; the next sample starts from the learned band size', () => {
@@ -130,6 +146,7 @@ describe('FrameSchedule', () => {
       send(step.plan);
       bands++;
       tick(BAND_MS * 2); // every band twice as slow as aimed: the bands halve, down to one row
+      s.step(gpu.gl, SETTLED, ctx(true)); // polled while on the GPU
       gpu.finish();
       step = s.step(gpu.gl, SETTLED, ctx(true));
     }

@@ -4,7 +4,9 @@
  * such a sample is drawn as horizontal bands from the top down, one at a time (frame-schedule.ts),
  * each shown as soon as it is finished. A band is sized to take about BAND_MS: the first from the
  * frame time predicted by render-scale.ts's model (t(1) = t_m / s_m² for a frame of scale s_m
- * that took t_m), every later one from the measured time of the band before.
+ * that took t_m), every later one from the measured time of the band before less one frame
+ * interval (a band is seen finished only when a frame polls its fence); one seen finished at its
+ * first poll, or within a frame interval, grows by MAX_GROWTH (frame-schedule.ts).
  */
 
 /** Bands are aimed at this many ms each. */

@@ -96,6 +96,9 @@ export class FrameSchedule {
   private drawnScale = 1;
   private drawnSize: Extent = { width: 0, height: 0 };
   private lastBands = 1;
+  /** The last interval between animation frames, and when the last one came (band timing). */
+  private interval = 0;
+  private lastStep = Number.NaN;
 
   constructor(
     private readonly bandMs: number = BAND_MS,
@@ -184,6 +187,8 @@ export class FrameSchedule {
     now: number,
     c: StepContext,
   ): { readonly finished: BandShown | null; readonly plan: FramePlan | null } {
+    this.interval = Number.isFinite(this.lastStep) ? Math.max(0, now - this.lastStep) : 0;
+    this.lastStep = now;
     const band = this.band;
     // An abandoned band's fence is polled only to know when the GPU is free (see `sent`).
     if (this.inFlight.waiting(gl) && band?.sent) {
@@ -251,11 +256,12 @@ export class FrameSchedule {
     band.done += sent.rows;
     band.bands++;
     const of = band.size.height;
-    // A band found finished at its first poll took less than a display frame: its measured time is
-    // the frame interval, not its own, so it grows instead of being paced by it.
-    band.rows = sent.waited
-      ? nextBandRows(sent.rows, this.clock() - sent.at, of, this.bandMs)
-      : grownBandRows(sent.rows, of);
+    // A band is seen finished only when a frame polls its fence: its measured time holds up to one
+    // frame interval of waiting (hundreds of ms on a loaded machine). One found finished at its first
+    // poll, or within a frame interval, took less than that: it grows instead of being paced by it.
+    const own = this.clock() - sent.at - this.interval;
+    band.rows =
+      sent.waited && own > 0 ? nextBandRows(sent.rows, own, of, this.bandMs) : grownBandRows(sent.rows, of);
     this.learned = { height: of, rows: band.rows };
     const whole = band.done >= of;
     if (whole) {

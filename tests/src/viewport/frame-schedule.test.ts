@@ -92,10 +92,12 @@ describe('FrameSchedule', () => {
     expect(s.shown()).toMatchObject({ base: 'preview', over: null });
     tick(BAND_MS);
     gpu.finish();
-    // Finished: shown at once, and the next band sent in the same frame.
+    // Finished: shown at once, and the next band sent in the same frame. It was seen 50 ms after it
+    // was sent, up to one frame interval (17 ms) of which was waiting for the poll: 15 rows in 33 ms,
+    // so the next band has 23 rows.
     const { finished, plan } = s.step(gpu.gl, SETTLED + 33, ctx(true));
     expect(finished).toEqual({ rows: 15, of: H, whole: false });
-    expect(plan!.rows).toEqual([H - 30, H - 15]);
+    expect(plan!.rows).toEqual([H - 38, H - 15]);
     expect(s.shown()).toEqual({
       base: 'preview',
       samples: 1,

@@ -7,17 +7,10 @@
  */
 import type { Diagnostic } from '../core/diagnostics.ts';
 import type { NodeRegistry } from '../core/registry.ts';
-import type { GraphDoc, GraphNode } from './document.ts';
+import type { GraphDoc } from './document.ts';
 import { idAtLevel, type NodePath, pathOf } from './flatten.ts';
 import { nodeDef } from './group-def.ts';
-
-/** ‘label’, else the type's name and the id (two unlabelled circles are told apart). */
-function nodeName(node: GraphNode | undefined, id: string, registry: NodeRegistry): string {
-  const label = node?.label?.trim();
-  if (label) return `‘${label}’`;
-  const type = node ? nodeDef(registry, node)?.label : undefined;
-  return `‘${type ?? 'node'}’ (${id})`;
-}
+import { nodeNames } from './node-names.ts';
 
 /** “in group ‘A’ → node ‘B’”: the way from the level's node `inner[0]` down to the node `inner.at(-1)`. */
 function where(
@@ -29,10 +22,11 @@ function where(
   let nodes = doc.nodes;
   for (const id of level) nodes = nodes.find((n) => n.id === id)?.group?.nodes ?? [];
   const steps = inner.map((id, i) => {
-    const node = nodes.find((n) => n.id === id);
-    nodes = node?.group?.nodes ?? [];
+    // Named by title, as the graph at that level shows them (node-names.ts), never by id.
+    const names = nodeNames(nodes, (n) => nodeDef(registry, n)?.label, ['‘', '’']);
+    nodes = nodes.find((n) => n.id === id)?.group?.nodes ?? [];
     const kind = i < inner.length - 1 ? 'group' : 'node';
-    return `${kind} ${nodeName(node, id, registry)}`;
+    return `${kind} ${names.get(id) ?? `‘${id}’`}`;
   });
   return `in ${steps.join(' → ')}`;
 }

@@ -7,26 +7,17 @@
  *   to flip — the fewest flips that give a common region, a bounded one where lines can bound one
  *   — and offers the flip as a fix.
  * - KF407 angles: two line mirrors that are adjacent sides of the kept region must meet at π/n, or
- *   their images overlap. The warning shows the angle as π/x and offers to snap it to the nearest
- *   π/n by turning one line about its other point.
- * Pure: the geometry is in nodes/geometry/kept-region.ts.
+ *   their images overlap (mirror-angles.ts; a triangle of lines snaps whole, mirror-triangle.ts).
+ * Pure: the geometry is in nodes/geometry/kept-region.ts and triangle-snap.ts.
  */
-import type { EvalContext } from '../core/define-node.ts';
 import { type Diagnostic, type DiagnosticFix, diag } from '../core/diagnostics.ts';
 import type { SceneElement } from '../core/scene.ts';
-import type { Line, Vec2 } from '../core/values.ts';
-import {
-  commonInteriorPoint,
-  depthInSide,
-  flipSide,
-  isBounded,
-  type KeptSide,
-} from '../geometry/kept-region.ts';
-import { add, dist, dot, rotate, scale, sub } from '../geometry/vec.ts';
-import type { Analysis } from './analyze.ts';
+import { commonInteriorPoint, flipSide, isBounded, type KeptSide } from '../geometry/kept-region.ts';
+import { angleDiagnostics, type Mirror, type MirrorGraph } from './mirror-angles.ts';
+import { nodeName } from './node-names.ts';
 
-/** Largest angle error (radians) still accepted as π/n: 1e-4 rad ≈ 0.006°, invisible in a picture. */
-export const ANGLE_TOLERANCE = 1e-4;
+export { ANGLE_TOLERANCE, formatPiOver, type MirrorGraph } from './mirror-angles.ts';
+
 /** The most flips tried together when looking for the fix. */
 const MAX_FLIPS = 3;
 /** Flip sets tried at most, and the most mirrors a flip search runs for (see findFlips). */
@@ -38,37 +29,12 @@ const FLIP_SEARCH_MIRRORS = 12;
  */
 export const MAX_CHECKED_MIRRORS = 32;
 
-interface Mirror {
-  readonly nodeId: string;
-  readonly name: string;
-  readonly side: KeptSide;
-  /** The node's `flip` toggle when it has one (and makes only this mirror), else null. */
-  readonly flip: boolean | null;
-}
-
-/** What the check needs to know about the graph around the scene's mirrors. */
-export interface MirrorGraph {
-  readonly analysis: Analysis;
-  /** Each node's outputs (evaluate.ts's NodeEvaluation, structurally: no import back to it). */
-  readonly nodes: ReadonlyMap<
-    string,
-    { readonly outputs?: Readonly<Record<string, unknown>>; readonly ctx?: EvalContext }
-  >;
-}
-
 /** Sides kept by the scene's reflections and inversions, in scene order. */
 export function keptSideOf(e: SceneElement): KeptSide | null {
   if (e.kind === 'reflection') return { kind: 'half-plane', q: e.q, n: e.n };
   if (e.kind === 'inversion') return { kind: 'disk', c: e.c, r: e.r, keepInside: false };
   if (e.kind === 'outer-inversion') return { kind: 'disk', c: e.c, r: e.r, keepInside: true };
   return null;
-}
-
-/** “label”, else the node type's name and id: how messages name a node. */
-export function nodeName(graph: MirrorGraph, nodeId: string): string {
-  const entry = graph.analysis.nodes.get(nodeId);
-  if (entry?.node.label) return `“${entry.node.label}”`;
-  return `${entry?.def?.label ?? 'node'} “${nodeId}”`;
 }
 
 function mirrorsOf(elements: readonly SceneElement[], graph: MirrorGraph): Mirror[] {
@@ -83,7 +49,7 @@ function mirrorsOf(elements: readonly SceneElement[], graph: MirrorGraph): Mirro
     const flippable = def?.params.flip?.kind === 'boolean' && perNode.get(e.nodeId) === 1;
     mirrors.push({
       nodeId: e.nodeId,
-      name: nodeName(graph, e.nodeId),
+      name: nodeName(graph.analysis.nodes, e.nodeId),
       side,
       flip: flippable && typeof flip === 'boolean' ? flip : null,
     });
@@ -166,107 +132,6 @@ function keptSideDiagnostics(mirrors: readonly Mirror[], renderNodeId: string): 
         'the line mirrors enclose a polygon but keep an unbounded region beyond one of its edges, so the picture is not a tiling',
       )
     : [];
-}
-
-/** Where the line mirror `m` gets its line, and how the fix moves one of its points. */
-function lineSource(graph: MirrorGraph, nodeId: string): { line: Line; owner: string | null } | null {
-  const edge = graph.analysis.incoming.get(nodeId)?.get('line')?.[0];
-  if (!edge) {
-    const line = graph.nodes.get(nodeId)?.ctx?.inputs.line as Line | undefined;
-    return line ? { line, owner: null } : null;
-  }
-  const from = graph.analysis.nodes.get(edge.from.node);
-  const line = graph.nodes.get(edge.from.node)?.outputs?.[edge.from.port] as Line | undefined;
-  // Only a Line node has handles "a" and "b"; a constructed line (bisector…) has no free point.
-  return from?.node.type === 'line' && line ? { line, owner: edge.from.node } : null;
-}
-
-/** Kept angle of a wedge with side normals n1, n2: π − ∠(n1, n2). */
-const wedgeAngle = (n1: Vec2, n2: Vec2) => Math.PI - Math.acos(Math.max(-1, Math.min(1, dot(n1, n2))));
-
-/** π/x with x to two decimals, and degrees: "π/2.37 (76.0°)". */
-export const formatPiOver = (angle: number) =>
-  `π/${(Math.PI / angle).toFixed(2).replace(/\.?0+$/, '')} (${((angle * 180) / Math.PI).toFixed(1)}°)`;
-
-/**
- * The fix that turns mirror `nodeId`'s line (normal `normal`) about its point nearer the corner so its kept angle with
- * normal `other` becomes π/n: the farther point P moves to Q + R(δ)(P − Q), which turns the line's
- * direction (and normal) by δ whichever end P is.
- */
-function snapFix(
-  graph: MirrorGraph,
-  nodeId: string,
-  normal: Vec2,
-  other: Vec2,
-  corner: Vec2,
-  n: number,
-): DiagnosticFix | undefined {
-  const source = lineSource(graph, nodeId);
-  if (!source) return undefined;
-  const { a, b } = source.line;
-  const moveB = dist(b, corner) >= dist(a, corner);
-  const [pivot, free] = moveB ? [a, b] : [b, a];
-  const target = Math.PI / n;
-  const now = wedgeAngle(other, normal);
-  const deltas = [target - now, now - target];
-  const delta = deltas.reduce((best, d) =>
-    Math.abs(wedgeAngle(other, rotate(normal, d)) - target) <
-    Math.abs(wedgeAngle(other, rotate(normal, best)) - target)
-      ? d
-      : best,
-  );
-  const to = add(pivot, rotate(sub(free, pivot), delta));
-  const handle = moveB ? 'b' : 'a';
-  const label = `Snap to π/${n}`;
-  if (source.owner) return { label, moves: [{ nodeId: source.owner, handle, to }] };
-  return { label, params: [{ nodeId, params: { line: { ...source.line, [handle]: to } } }] };
-}
-
-/** KF407: adjacent line mirrors of the kept region that do not meet at π/n. */
-function angleDiagnostics(mirrors: readonly Mirror[], graph: MirrorGraph): Diagnostic[] {
-  const sides = mirrors.map((m) => m.side);
-  const size = Math.max(
-    1,
-    ...sides.map((s) => (s.kind === 'half-plane' ? Math.hypot(...s.q) : Math.hypot(...s.c) + s.r)),
-  );
-  const eps = 1e-6 * size;
-  const inRegion = (p: Vec2) => sides.every((s) => depthInSide(s, p) > 0);
-  const out: Diagnostic[] = [];
-  for (let j = 0; j < mirrors.length; j++) {
-    const sj = sides[j];
-    if (sj.kind !== 'half-plane') continue;
-    for (let i = 0; i < j; i++) {
-      const si = sides[i];
-      if (si.kind !== 'half-plane') continue;
-      const den = si.n[0] * sj.n[1] - si.n[1] * sj.n[0];
-      if (Math.abs(den) < 1e-9) continue; // parallel: they never meet
-      // Corner V: n_i·V = n_i·q_i and n_j·V = n_j·q_j (Cramer's rule).
-      const ci = dot(si.n, si.q);
-      const cj = dot(sj.n, sj.q);
-      const corner: Vec2 = [(ci * sj.n[1] - cj * si.n[1]) / den, (si.n[0] * cj - sj.n[0] * ci) / den];
-      // Along each line from V into the other's kept side, just inside: both must border the region.
-      const along = (s: typeof si, o: typeof si): Vec2 => {
-        const d: Vec2 = [s.n[1], -s.n[0]];
-        return dot(d, o.n) >= 0 ? d : scale(d, -1);
-      };
-      const ti = along(si, sj);
-      const tj = along(sj, si);
-      const edgeI = add(corner, scale(add(ti, scale(si.n, 0.01)), eps));
-      const edgeJ = add(corner, scale(add(tj, scale(sj.n, 0.01)), eps));
-      if (!inRegion(edgeI) || !inRegion(edgeJ)) continue;
-      const angle = wedgeAngle(si.n, sj.n);
-      const n = Math.max(2, Math.round(Math.PI / angle));
-      if (Math.abs(angle - Math.PI / n) <= ANGLE_TOLERANCE) continue;
-      // The later mirror turns, unless only the earlier one has a free point.
-      const [moving, fixed] =
-        lineSource(graph, mirrors[j].nodeId) || !lineSource(graph, mirrors[i].nodeId) ? [j, i] : [i, j];
-      const [sm, sf] = moving === j ? [sj, si] : [si, sj];
-      const fix = snapFix(graph, mirrors[moving].nodeId, sm.n, sf.n, corner, n);
-      const text = `${mirrors[moving].name} meets ${mirrors[fixed].name} at ${formatPiOver(angle)}, not π/n: their images overlap and the picture is not a tiling (nearest: π/${n})`;
-      out.push({ ...diag('mirrorAngle', { nodeId: mirrors[moving].nodeId }, text), ...(fix ? { fix } : {}) });
-    }
-  }
-  return out;
 }
 
 /** Every KF406/KF407 warning for the render's elements (angles only once the sides are right). */

@@ -11,6 +11,8 @@ interface Props {
   readonly edges: number;
   readonly saveState: string;
   onSelectNode(id: string): void;
+  /** The node's title as people see it (ids are internal); the id when not given. */
+  nodeName?(id: string): string;
   /** Runs a diagnostic's one-click fix. */
   onFix(fix: DiagnosticFix): void;
 }
@@ -40,7 +42,16 @@ function useRenderAnnouncement(render: RenderInfo | null): string {
   return said;
 }
 
-export function StatusBar({ diagnostics, render, nodes, edges, saveState, onSelectNode, onFix }: Props) {
+export function StatusBar({
+  diagnostics,
+  render,
+  nodes,
+  edges,
+  saveState,
+  onSelectNode,
+  nodeName,
+  onFix,
+}: Props) {
   const [open, setOpen] = useState(false);
   const errors = diagnostics.filter((d) => d.severity === 'error').length;
   const warnings = diagnostics.filter((d) => d.severity === 'warning').length;
@@ -88,7 +99,7 @@ export function StatusBar({ diagnostics, render, nodes, edges, saveState, onSele
               <code>{d.code}</code>{' '}
               {d.nodeId ? (
                 <button type="button" className="kf-link" onClick={() => onSelectNode(d.nodeId!)}>
-                  {d.nodeId}
+                  {nodeName ? nodeName(d.nodeId) : d.nodeId}
                 </button>
               ) : (
                 d.path && <code>{d.path}</code>

@@ -11,7 +11,12 @@ export function distinctFixes(diagnostics: readonly Diagnostic[]): DiagnosticFix
 export function FixButton({ fix, onFix }: { fix: DiagnosticFix; onFix(fix: DiagnosticFix): void }) {
   return (
     // nodrag: a click on the button inside a graph node must not start moving the node.
-    <button type="button" className="kf-fix nodrag" onClick={() => onFix(fix)} title="Fix it (one undo step)">
+    <button
+      type="button"
+      className="kf-fix nodrag"
+      onClick={() => onFix(fix)}
+      title={`${fix.label} (one undo step)`}
+    >
       {fix.label}
     </button>
   );

@@ -9,6 +9,7 @@ import { memo } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import { portSpec } from '../../nodes/core/port-lookup.ts';
 import { canConnect, PORT_TYPE_INFO, type PortType } from '../../nodes/core/ports.ts';
+import { stemOf } from '../state/titles.ts';
 import { inHandle, outHandle, portOfHandle } from './connection.ts';
 import { useEditorActions } from './editor-context.ts';
 import { distinctFixes, FixButton } from './FixButton.tsx';
@@ -151,7 +152,10 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
         {node.label ? (
           <>
             <span className="kf-node__title">{node.label}</span>
-            <span className="kf-node__type">{def?.label ?? node.type}</span>
+            {/* "Line reflection 2" already says its type. */}
+            {stemOf(node.label) !== def?.label && (
+              <span className="kf-node__type">{def?.label ?? node.type}</span>
+            )}
           </>
         ) : (
           <span className="kf-node__title">{def?.label ?? `Unknown “${node.type}”`}</span>

@@ -16,6 +16,7 @@ import {
 import { migrateNodes } from '../../nodes/graph/migrate.ts';
 import { registry as appRegistry } from '../../nodes/types/index.ts';
 import { idAllocator } from './ids.ts';
+import { titleAllocator, withTitle } from './titles.ts';
 
 export const CLIPBOARD_FORMAT = 'kleinflow-clipboard';
 
@@ -51,7 +52,7 @@ export function parseClipboard(text: string, registry: NodeRegistry = appRegistr
 }
 
 /**
- * New nodes/edges for pasting `data` into `doc`: fresh ids, positions shifted so the group's
+ * New nodes/edges for pasting `data` into `doc`: fresh ids and titles, positions shifted so the group's
  * top-left corner lands at `at` (or `offset` from the originals when `at` is absent).
  */
 export function preparePaste(
@@ -59,8 +60,11 @@ export function preparePaste(
   data: ClipboardData,
   at?: readonly [number, number],
   offset: readonly [number, number] = [40, 40],
+  registry: NodeRegistry = appRegistry,
 ): { nodes: GraphNode[]; edges: GraphEdge[] } {
   const next = idAllocator(doc);
+  // A pasted node whose title is taken gets a free one, so copies are told apart too.
+  const title = titleAllocator(doc.nodes, registry);
   const ids = new Map<string, string>();
   const minX = Math.min(...data.nodes.map((n) => n.position[0]));
   const minY = Math.min(...data.nodes.map((n) => n.position[1]));
@@ -70,7 +74,8 @@ export function preparePaste(
     .map((n) => {
       const id = next(n.type);
       ids.set(n.id, id);
-      return { ...n, id, position: [n.position[0] + dx, n.position[1] + dy] as [number, number] };
+      const position: [number, number] = [n.position[0] + dx, n.position[1] + dy];
+      return withTitle({ ...n, id, position }, title);
     });
   const edges = data.edges
     .filter((e) => ids.has(e.from.node) && ids.has(e.to.node))

@@ -140,3 +140,13 @@ export async function emptyCanvasPoint(page: Page): Promise<{ x: number; y: numb
   if (!found) throw new Error('no empty canvas left in the graph pane');
   return found;
 }
+
+/** The status line's diagnostics count (a button that opens the list). */
+export const statusLine = (page: Page) => page.getByTestId('diagnostics-count');
+export const diagnosticsList = (page: Page) => page.getByRole('list', { name: 'Diagnostics' });
+
+/** Opens the status line's list of diagnostics (if closed) and returns its text. */
+export async function listedDiagnostics(page: Page): Promise<string> {
+  if ((await statusLine(page).getAttribute('aria-expanded')) !== 'true') await statusLine(page).click();
+  return (await diagnosticsList(page).textContent()) ?? '';
+}

@@ -2,7 +2,7 @@
  * Mirrors that cannot silently break the picture, end to end in real Chromium: a teacher wires a
  * triangle's mirrors in the natural order AB, AC, BC — the AC mirror keeps the outside — sees the
  * warning naming it, clicks its fix and gets the tiling; a corner that is not π/n shows its angle as
- * π/x and "Snap to π/n" fixes it.
+ * π/x and one "Snap to (p, q, r)" makes the whole triangle exact.
  */
 
 import { mkdirSync } from 'node:fs';
@@ -11,17 +11,17 @@ import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { openAppSession, repoRoot, type ServedApp } from './app-server.ts';
 import {
-  addNode,
-  connect,
-  edgeCount,
-  nodeCount,
+  diagnosticsList as listedList,
+  listedDiagnostics as listedText,
   nodeEl,
   type PixelStats,
   renderPixels,
   setField,
+  statusLine,
   thumbDiff,
   waitRendered,
 } from './editor-page.ts';
+import { buildTriangle } from './triangle-page.ts';
 
 let app: ServedApp;
 let page: Page;
@@ -35,14 +35,9 @@ afterAll(async () => {
   await app?.close();
 });
 
-const status = () => page.getByTestId('diagnostics-count');
-const diagnosticsList = () => page.getByRole('list', { name: 'Diagnostics' });
-
-/** Opens the status line's list of diagnostics (if closed) and returns its text. */
-async function listedDiagnostics(): Promise<string> {
-  if ((await status().getAttribute('aria-expanded')) !== 'true') await status().click();
-  return (await diagnosticsList().textContent()) ?? '';
-}
+const status = () => statusLine(page);
+const diagnosticsList = () => listedList(page);
+const listedDiagnostics = () => listedText(page);
 
 async function zoomedOutPixels(): Promise<PixelStats> {
   await waitRendered(page);
@@ -51,7 +46,7 @@ async function zoomedOutPixels(): Promise<PixelStats> {
 
 describe('mirrors', () => {
   // An equilateral triangle, anticlockwise: A, B along the bottom, C on top.
-  const corners: [string, string][] = [
+  const corners: (readonly [string, string])[] = [
     ['-1', '-0.5774'],
     ['1', '-0.5774'],
     ['0', '1.1547'],
@@ -60,32 +55,10 @@ describe('mirrors', () => {
   const mirrors: string[] = [];
 
   it('AB, AC, BC: the AC mirror is named, its fix flips it, and the picture becomes the *333 tiling', async () => {
-    await expect.poll(() => nodeCount(page)).toBeGreaterThan(0);
-    await page.getByRole('button', { name: 'New' }).click();
-    await expect.poll(() => nodeCount(page)).toBe(0);
-    const rows = [30, 220, 410];
-    for (const [i, y] of rows.entries()) {
-      const p = await addNode(page, 'point', 30, y);
-      await setField(page, p, 'x', corners[i][0]);
-      await setField(page, p, 'y', corners[i][1]);
-      points.push(p);
-    }
-    const pairs = [
-      [0, 1],
-      [0, 2],
-      [1, 2],
-    ]; // AB, AC, BC: the order a teacher writes them in
-    const render = await addNode(page, 'render', 900, 160);
-    for (const [i, [from, to]] of pairs.entries()) {
-      const line = await addNode(page, 'line', 320, rows[i]);
-      const mirror = await addNode(page, 'line reflection', 610, rows[i]);
-      await connect(page, points[from], 'point', line, 'a');
-      await connect(page, points[to], 'point', line, 'b');
-      await connect(page, line, 'line', mirror, 'line');
-      await connect(page, mirror, 'element', render, 'elements');
-      mirrors.push(mirror);
-    }
-    await expect.poll(() => edgeCount(page)).toBe(12);
+    // AB, AC, BC: the order a teacher writes them in.
+    const built = await buildTriangle(page, corners);
+    points.push(...built.points);
+    mirrors.push(...built.mirrors);
     // The overlay hatches each mirror's back, so the kept side is visible in the picture.
     await expect.poll(() => page.locator(`[data-kept-side="${mirrors[1]}"]`).count()).toBeGreaterThan(0);
 
@@ -93,7 +66,8 @@ describe('mirrors', () => {
     await expect.poll(() => status().textContent()).toMatch(/1 warning/);
     const text = await listedDiagnostics();
     expect(text).toContain('KF406');
-    expect(text).toContain(`“${mirrors[1]}” keeps the wrong side`);
+    // Named by its title ("Line reflection 2": new nodes of a type get distinct ones), not its id.
+    expect(text).toContain('“Line reflection 2” keeps the wrong side');
     expect(await nodeEl(page, mirrors[0]).getByRole('button', { name: /^Flip/ }).count()).toBe(0);
     const pane = (await page.getByTestId('render-pane').boundingBox())!;
     await page.mouse.move(pane.x + pane.width / 2, pane.y + pane.height / 2);
@@ -103,9 +77,7 @@ describe('mirrors', () => {
     await page.screenshot({ path: join(repoRoot, 'test-artifacts', 'mirrors-wrong-side.png') });
 
     // One click on the node's fix: the flip toggle turns on, the warning goes, the tiling appears.
-    await nodeEl(page, mirrors[1])
-      .getByRole('button', { name: `Flip Line reflection “${mirrors[1]}”` })
-      .click();
+    await nodeEl(page, mirrors[1]).getByRole('button', { name: 'Flip “Line reflection 2”' }).click();
     await expect.poll(() => status().textContent()).toMatch(/No problems/);
     expect(await nodeEl(page, mirrors[1]).getByRole('checkbox', { name: 'flip' }).isChecked()).toBe(true);
     const tiling = await zoomedOutPixels();
@@ -125,21 +97,19 @@ describe('mirrors', () => {
     expect(problems).toEqual([]);
   }, 240_000);
 
-  it('a corner that is not π/n shows π/x, and "Snap to π/n" makes it exact', async () => {
+  it('a corner that is not π/n shows π/x, and one "Snap to (p, q, r)" makes the triangle exact', async () => {
     // Lift C: the corners at A and B open beyond π/3 and C closes below it.
     await setField(page, points[2], 'y', '1.45');
     // Poll the list itself: the status line may count a warning a moment before the list shows it.
     await expect.poll(listedDiagnostics).toContain('KF407');
     const text = await listedDiagnostics();
     expect(text).toMatch(/at π\/\d\.\d+ \(\d+\.\d°\), not π\/n/);
+    // The triangle snaps whole: the fix says the triple and which point moves where.
     const snap = diagnosticsList()
-      .getByRole('button', { name: /^Snap to π\/\d+$/ })
+      .getByRole('button', { name: /^Snap to / })
       .first();
     const label = (await snap.textContent()) ?? '';
-    expect(label).toMatch(/^Snap to π\/[23]$/);
-    // The warning the button belongs to names the corner: "… “m” meets Line reflection “n” at π/x …".
-    const item = (await snap.locator('xpath=..').textContent()) ?? '';
-    const corner = item.match(/(“[^”]+” meets [^“]*“[^”]+”)/)![1];
+    expect(label).toMatch(/^Snap to \(3, 3, 3\): moves “Point \d” to \(-?[\d.]+, -?[\d.]+\)$/);
     const coords = () =>
       Promise.all(
         points.flatMap((p) =>
@@ -150,9 +120,9 @@ describe('mirrors', () => {
     // The status list re-renders while the picture refines, so under load the button is rarely
     // "stable" for Playwright's pointer click: send the click to the button itself.
     await snap.dispatchEvent('click');
-    // That corner is exact now: its warning is gone (others may remain or change), and the fix
-    // moved an upstream point node — the node that owns the value, as a drag in the render does.
-    await expect.poll(listedDiagnostics).not.toContain(corner);
+    // One click leaves no warning at all, and the fix moved an upstream point node — the node that
+    // owns the value, as a drag in the render does.
+    await expect.poll(() => status().textContent()).toMatch(/No problems/);
     // (The graph's nodes redraw a frame after the status list: poll.)
     await expect.poll(coords).not.toEqual(before);
     expect(problems).toEqual([]);

@@ -29,10 +29,10 @@ describe('diagnosticAtLevel', () => {
       code: 'KF301',
       severity: 'error',
       nodeId: 'A',
-      message: 'in group ‘Outer’ → group ‘Group’ (g2) → node ‘Circle’ (c): radius must be > 0',
+      message: 'in group ‘Outer’ → group ‘Group’ → node ‘Circle’: radius must be > 0',
     });
     expect(diagnosticAtLevel(problem, nested, origin, ['A'], registry)?.message).toBe(
-      'in group ‘Group’ (g2) → node ‘Circle’ (c): radius must be > 0',
+      'in group ‘Group’ → node ‘Circle’: radius must be > 0',
     );
     expect(diagnosticAtLevel(problem, nested, origin, ['A', 'g2'], registry)).toEqual({
       ...problem,

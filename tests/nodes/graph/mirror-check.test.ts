@@ -58,7 +58,7 @@ describe('mirror check (KF406 kept sides, KF407 angles)', () => {
     expect(mirrorWarnings(applyFix(d, ws[0].fix!))).toEqual([]);
   });
 
-  it('a corner that is not π/n shows π/x, and snapping makes it exact', () => {
+  it('a corner that is not π/n shows π/x, and one snap makes the whole triangle exact', () => {
     const d = triangleDoc(
       [
         [0, 0],
@@ -72,11 +72,35 @@ describe('mirror check (KF406 kept sides, KF407 angles)', () => {
     const w = ws[0];
     expect(w.code).toBe('KF407');
     expect(w.message).toMatch(/at π\/\d+\.\d+ \(\d+\.\d°\), not π\/n/);
-    expect(w.fix?.label).toMatch(/^Snap to π\/\d+$/);
-    // The corner named is now exact: no warning about that pair remains.
-    const pair = w.message.match(/^(“\w+”) meets (“\w+”)/)!;
-    const after = mirrorWarnings(applyFix(d, w.fix!));
-    expect(after.filter((x) => x.message.startsWith(`${pair[1]} meets ${pair[2]}`))).toEqual([]);
+    expect(w.message).toMatch(/the nearest tiling triangle is \(\d, \d, \d\), π\/\d here/);
+    expect(w.fix?.label).toMatch(/^Snap to \(\d, \d, \d\): moves “[ABC]” to \(-?[\d.]+, -?[\d.]+\)$/);
+    // Every corner's warning offers the same fix, and after it no angle warning is left.
+    expect(new Set(ws.map((x) => x.fix?.label)).size).toBe(1);
+    expect(mirrorWarnings(applyFix(d, w.fix!))).toEqual([]);
+  });
+
+  it('issue #23: C lifted off √3 snaps back in one click, keeping A and B and the right angle', () => {
+    const d = triangleDoc(
+      [
+        [0, 0],
+        [1, 0],
+        [0, 1.5],
+      ],
+      ['AB', 'AC', 'BC'],
+      ['AC'],
+    );
+    const ws = mirrorWarnings(d);
+    expect(ws.map((x) => x.code)).toEqual(['KF407', 'KF407']);
+    expect(ws[0].fix?.label).toBe('Snap to (2, 3, 6): moves “C” to (0, 1.732)');
+    expect(ws[1].fix).toEqual(ws[0].fix);
+    expect(ws[0].fix?.moves).toHaveLength(1);
+    const after = applyFix(d, ws[0].fix!);
+    expect(mirrorWarnings(after)).toEqual([]);
+    const at = (id: string) => after.nodes.find((n) => n.id === id)!.params;
+    expect(at('A')).toEqual({ x: 0, y: 0 });
+    expect(at('B')).toEqual({ x: 1, y: 0 });
+    expect(at('C').x).toBeCloseTo(0, 12);
+    expect(at('C').y).toBeCloseTo(Math.sqrt(3), 12);
   });
 
   it('formats angles as π/x with degrees', () => {
@@ -84,7 +108,7 @@ describe('mirror check (KF406 kept sides, KF407 angles)', () => {
     expect(formatPiOver(Math.PI / 2.5)).toBe('π/2.5 (72.0°)');
   });
 
-  it('property: any triangle wired in any order gets a flip fix or none, and after it only angle warnings', () => {
+  it('property: any triangle wired in any order gets a flip fix or none, then one snap leaves no warning', () => {
     const coord = fc.double({ min: -3, max: 3, noNaN: true });
     const orders = [
       ['AB', 'BC', 'CA'],
@@ -104,6 +128,9 @@ describe('mirror check (KF406 kept sides, KF407 angles)', () => {
           const kept = mirrorWarnings(d).filter((w) => w.code === 'KF406');
           if (kept.length > 0) d = applyFix(d, kept[0].fix!);
           expect(mirrorWarnings(d).filter((w) => w.code === 'KF406')).toEqual([]);
+          // Then one click on the angle fix leaves no warning at all (issue #23: it used to loop).
+          const angles = mirrorWarnings(d);
+          if (angles.length > 0) expect(mirrorWarnings(applyFix(d, angles[0].fix!))).toEqual([]);
         },
       ),
       SEED,

@@ -34,7 +34,7 @@ describe('clipboard', () => {
     expect(parseClipboard('{"format":"kleinflow-clipboard","nodes":[{"id":1}],"edges":[]}')).toBeNull();
   });
 
-  it('pastes with fresh ids, edges rewired between the copies, offset positions, labels and params kept', () => {
+  it('pastes with fresh ids and titles, edges rewired between the copies, offset positions, params kept', () => {
     const data = copyNodes(doc, ['point1', 'point2', 'line1'])!;
     const { nodes, edges } = preparePaste(doc, data);
     const oldIds = new Set(doc.nodes.map((n) => n.id));
@@ -42,7 +42,11 @@ describe('clipboard', () => {
     expect(new Set(nodes.map((n) => n.id)).size).toBe(3);
     expect(nodes[0].position).toEqual([40, 40]);
     expect(nodes[0].params).toEqual({ x: 1 });
-    expect(nodes[2].label).toBe('AB');
+    // Titles taken in the document get the next free number, so copies are told apart.
+    expect(nodes.map((n) => n.label)).toEqual(['Point 2', 'Point 3', 'AB 2']);
+    // Into a document without those titles, the first keeps its type's name, 'AB' its label.
+    const elsewhere = preparePaste({ ...doc, nodes: [], edges: [] }, data).nodes;
+    expect(elsewhere.map((n) => n.label)).toEqual([undefined, 'Point 2', 'AB']);
     expect(edges).toHaveLength(2);
     const ids = new Set(nodes.map((n) => n.id));
     for (const e of edges) expect(ids.has(e.from.node) && ids.has(e.to.node)).toBe(true);

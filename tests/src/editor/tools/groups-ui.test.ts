@@ -85,7 +85,8 @@ describe('scopeDiagnostics', () => {
     const flatId = fromRenderer[0].nodeId!;
     const top = scopeDiagnostics(fromRenderer, ev, [], d);
     expect(top).toMatchObject([{ code: 'KF405', nodeId: 'g' }]);
-    expect(top[0].message).toMatch(new RegExp(`^in group ‘Group’ \\(g\\) → node ‘[^’]+’ \\(${flatId}\\): `));
+    // Named by title, never by id (an unlabelled node is unique at its level here).
+    expect(top[0].message).toMatch(/^in group ‘Group’ → node ‘Circle inversion’: /);
     expect(scopeDiagnostics(fromRenderer, ev, ['g'], d)).toMatchObject([{ code: 'KF405', nodeId: flatId }]);
   });
 });

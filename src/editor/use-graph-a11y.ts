@@ -25,6 +25,8 @@ interface Inputs {
 
 /** More new problems than this at once (a file opened) are summed up, not read one by one. */
 const MAX_READ_OUT = 3;
+/** Frames to wait for a new node to be drawn before giving up focusing it. */
+const FOCUS_FRAMES = 10;
 
 const nodeName = (doc: GraphDoc, registry: NodeRegistry, id: string | undefined) => {
   const node = id ? doc.nodes.find((n) => n.id === id) : undefined;
@@ -38,23 +40,35 @@ export function useGraphA11y(o: Inputs): KeyboardWire {
   const wire = useKeyboardWire((c) => checkConnection(getDoc(), registry, c), onConnect);
 
   // A node added from the palette (or pasted) while the focus fell to the page: focus the node, so
-  // Tab goes on into its ports and fields instead of starting over at the top bar.
+  // Tab goes on into its ports and fields instead of starting over at the top bar. The document
+  // and the selection change in two steps, so the ids new in the last document are kept for it.
   const known = useRef<ReadonlySet<string> | null>(null);
+  const added = useRef<ReadonlySet<string>>(new Set());
   useEffect(() => {
+    const ids = new Set(doc.nodes.map((n) => n.id));
     const before = known.current;
-    known.current = new Set(doc.nodes.map((n) => n.id));
-    if (!before || selection.size !== 1) return;
+    if (before) added.current = new Set([...ids].filter((id) => !before.has(id)));
+    known.current = ids;
+  }, [doc]);
+  useEffect(() => {
     const [id] = selection;
-    if (before.has(id) || !known.current.has(id)) return;
-    const frame = requestAnimationFrame(() => {
+    if (selection.size !== 1 || !added.current.has(id)) return;
+    added.current = new Set();
+    let frame = 0;
+    let tries = FOCUS_FRAMES;
+    const focus = () => {
       const lost = document.activeElement === null || document.activeElement === document.body;
       const el = wrapper.current?.querySelector<HTMLElement>(
         `.react-flow__node[data-id="${CSS.escape(id)}"]`,
       );
-      if (lost && el) el.focus();
-    });
+      if (!lost) return;
+      el?.focus();
+      // React Flow shows the node (until then hidden: no focus) a frame or two after the document has it.
+      if (document.activeElement !== el && --tries > 0) frame = requestAnimationFrame(focus);
+    };
+    frame = requestAnimationFrame(focus);
     return () => cancelAnimationFrame(frame);
-  }, [doc, selection, wrapper]);
+  }, [selection, wrapper]);
 
   // New warnings and errors, said once each (the first evaluation is what was opened: not read).
   const said = useRef<ReadonlySet<string> | null>(null);

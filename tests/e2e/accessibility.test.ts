@@ -4,13 +4,17 @@
  * violation may remain. axe's own source is injected into the page, so it audits the real DOM
  * with the browser's computed styles (contrast needs those).
  */
-import { readFileSync } from 'node:fs';
+import { mkdirSync, readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
+import { join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { type ServedApp, serveApp } from './app-server.ts';
+import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { waitRendered } from './editor-page.ts';
+import { openViaPicker } from './io-page.ts';
 
 const axeSource = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+const shots = join(repoRoot, 'test-artifacts');
 const TAGS = ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa'];
 
 interface Violation {
@@ -69,6 +73,7 @@ describe('accessibility audit (axe-core, WCAG 2.1 A/AA)', () => {
   let app: ServedApp;
   let page: Page;
   beforeAll(async () => {
+    mkdirSync(shots, { recursive: true });
     app = await serveApp();
     page = await (await app.newContext({ width: 1280, height: 720 })).newPage();
     await openExample(page, app);
@@ -77,6 +82,11 @@ describe('accessibility audit (axe-core, WCAG 2.1 A/AA)', () => {
 
   it('the editor with an example', async () => {
     await expectClean(page);
+    // The focus ring on a port, as a keyboard user sees it (Tab, so it is :focus-visible).
+    await page.locator('.react-flow__handle.kf-port').first().focus();
+    await page.keyboard.press('Shift+Tab');
+    await page.keyboard.press('Tab');
+    await page.screenshot({ path: join(shots, 'a11y-editor-1280.png') });
   }, 60_000);
 
   it('the examples gallery', async () => {
@@ -93,6 +103,8 @@ describe('accessibility audit (axe-core, WCAG 2.1 A/AA)', () => {
     await page.getByRole('button', { name: 'Help' }).click();
     const help = page.getByRole('dialog', { name: 'Help' });
     await help.waitFor();
+    // The keys for building without a pointer are documented where a pupil looks for them.
+    expect(await help.getByRole('table', { name: 'Keyboard only' }).textContent()).toMatch(/Enter on a port/);
     await expectClean(page, async () => {
       await page.keyboard.press('Escape');
       await help.waitFor({ state: 'detached' });
@@ -114,8 +126,40 @@ describe('accessibility audit (axe-core, WCAG 2.1 A/AA)', () => {
     await phone.getByRole('tab', { name: 'Graph' }).click();
     await phone.locator('.react-flow__node').first().waitFor();
     await expectClean(phone);
+    await phone.screenshot({ path: join(shots, 'a11y-phone-graph.png') });
     await phone.getByRole('button', { name: 'Menu' }).click();
     await phone.getByRole('menu').waitFor();
     await expectClean(phone);
   }, 120_000);
+
+  it('prefers-reduced-motion: an animated example opens paused and stays still until Play', async () => {
+    const still = await (await app.newContext({ width: 1280, height: 720 })).newPage();
+    await still.emulateMedia({ reducedMotion: 'reduce' });
+    await still.goto(`${app.url}?test`);
+    const example = join(repoRoot, 'examples', 'animated-breathing-loxodromic.kleinflow.json');
+    await openViaPicker(still, 'animated.kleinflow.json', readFileSync(example));
+    await waitRendered(still);
+    const clock = () =>
+      still.evaluate(() => {
+        const s = window.__kleinflow!.store.getState();
+        return { playing: s.playing, time: s.time };
+      });
+    expect(await clock()).toEqual({ playing: false, time: 0 });
+    // Nothing starts later either: the picture is done and the clock has not moved.
+    await still
+      .getByTestId('render-progress')
+      .filter({ hasText: /^Rendered/ })
+      .waitFor();
+    expect(await clock()).toEqual({ playing: false, time: 0 });
+    // No transitions: a port's hover growth happens at once.
+    const transition = await still
+      .locator('.react-flow__handle.kf-port')
+      .first()
+      .evaluate((el) => getComputedStyle(el).transitionDuration);
+    expect(transition.split(',').every((d) => Number.parseFloat(d) === 0)).toBe(true);
+    // The reader's own Play still plays.
+    await still.getByRole('button', { name: 'Play animation' }).focus();
+    await still.keyboard.press('Enter');
+    await expect.poll(async () => (await clock()).time, { timeout: 20_000 }).toBeGreaterThan(0);
+  }, 180_000);
 });

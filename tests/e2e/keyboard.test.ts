@@ -144,6 +144,10 @@ describe('keyboard only: a mirror triangle from New', () => {
     // The focus stays on the handle, and Shift moves it five times as far.
     await page.keyboard.press('Shift+ArrowUp');
     await expect.poll(async () => (await paramsOf(page, p.id)).y).toBeCloseTo(before.y + 5 * step, 4);
+    // The focus stays on the handle (drawn with the focus ring) while it moves.
+    expect(await knob.evaluate((el) => el === document.activeElement && el.matches(':focus-visible'))).toBe(
+      true,
+    );
     await page.screenshot({ path: join(shots, 'keyboard-handle-focus.png') });
     await page.keyboard.press('Control+z');
     await expect.poll(async () => (await paramsOf(page, p.id)).y).toBeCloseTo(before.y, 6);

@@ -27,6 +27,24 @@ export const SHORTCUTS: readonly { group: string; items: readonly Shortcut[] }[]
     ],
   },
   {
+    group: 'Keyboard only',
+    items: [
+      {
+        keys: ['Tab', 'Shift Tab'],
+        action: 'Go through the nodes, their ports and fields, and the render handles',
+      },
+      { keys: ['Enter'], action: 'Select the focused node (then ← ↑ → ↓ move it)' },
+      {
+        keys: ['Enter on a port'],
+        action: 'Pick up a wire; Enter on a port of another node connects it (Esc drops it)',
+      },
+      {
+        keys: ['← ↑ → ↓ on a render handle'],
+        action: 'Move the point (Shift: 5× as far; each press is one undo step)',
+      },
+    ],
+  },
+  {
     group: 'Values',
     items: [
       { keys: ['Drag a field label'], action: 'Scrub a number (Shift: finer)' },

@@ -25,7 +25,8 @@ import { idAllocator } from '../state/ids.ts';
 import { StoreContext, useEditorState, useStore } from '../state/use-store.ts';
 import { checkConnection, portOfHandle } from './connection.ts';
 import { fixPatches } from './diagnostic-fix.ts';
-import { type EditorActions, EditorContext } from './editor-context.ts';
+import { EditorProviders } from './EditorProviders.tsx';
+import type { EditorActions } from './editor-context.ts';
 import { diagnosticsByNode, type KfNode, type KfNodeData, toFlowEdges, toFlowNodes } from './flow-model.ts';
 import { GraphToolbar } from './GraphToolbar.tsx';
 import { InspectorDock } from './InspectorDock.tsx';
@@ -40,6 +41,7 @@ import { RerouteEdge } from './tools/RerouteEdge.tsx';
 import { insertVia } from './tools/reroute.ts';
 import { useFrames } from './tools/use-frames.ts';
 import { useFrameGraph } from './use-frame-graph.ts';
+import { useGraphA11y } from './use-graph-a11y.ts';
 import { useGraphKeys } from './use-graph-keys.ts';
 import { usePalette } from './use-palette.ts';
 import { useRememberedFlag } from './use-remembered-flag.ts';
@@ -249,6 +251,16 @@ function GraphCanvas({
     [store],
   );
 
+  const keyboardWire = useGraphA11y({
+    doc,
+    getDoc: useCallback(() => store.getState().doc, [store]),
+    registry,
+    selection,
+    diagnostics: evaluation.diagnostics,
+    onConnect,
+    wrapper,
+  });
+
   const {
     palette,
     openPalette,
@@ -292,7 +304,7 @@ function GraphCanvas({
   useKeepInView(inspectorOpen && !inspectorTab ? inspected?.id : undefined, wrapper);
 
   return (
-    <EditorContext.Provider value={actions}>
+    <EditorProviders actions={actions} wire={keyboardWire}>
       <div className={inspectorTab ? 'kf-graph-area kf-graph-area--inspector-tab' : 'kf-graph-area'}>
         <GraphToolbar
           nodes={nodes}
@@ -405,6 +417,6 @@ function GraphCanvas({
           onClose={closePalette}
         />
       )}
-    </EditorContext.Provider>
+    </EditorProviders>
   );
 }

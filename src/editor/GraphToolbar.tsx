@@ -3,10 +3,12 @@
  * search palette, for touch screens without a keyboard), Tidy, the Inspector toggle, and the tools
  * for the selected nodes (Mute, Frame, Group, Ungroup).
  */
+
 import { type Edge, useReactFlow } from '@xyflow/react';
 import type { RefObject } from 'react';
 import type { GraphNode } from '../../nodes/graph/document.ts';
 import { registry } from '../../nodes/types/index.ts';
+import { motionMs } from '../app/animation.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
 import type { KfNode } from './flow-model.ts';
 import { FIT_VIEW, sizer, tidyPositions } from './layout.ts';
@@ -36,7 +38,7 @@ export function GraphToolbar({ nodes, inspectorOpen, inspectorButton, toggleInsp
       return m?.width && m.height ? { width: m.width, height: m.height } : estimate(n);
     };
     store.dispatch({ type: 'move-nodes', moves: tidyPositions(current, size) }, 'tidy layout');
-    requestAnimationFrame(() => void flow.fitView({ ...FIT_VIEW, duration: 200 }));
+    requestAnimationFrame(() => void flow.fitView({ ...FIT_VIEW, duration: motionMs(200) }));
   };
 
   return (

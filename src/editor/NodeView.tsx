@@ -14,6 +14,7 @@ import { inHandle, outHandle, portOfHandle } from './connection.ts';
 import { useEditorActions } from './editor-context.ts';
 import { distinctFixes, FixButton } from './FixButton.tsx';
 import type { KfNode, KfNodeData } from './flow-model.ts';
+import { useKeyboardWireContext } from './keyboard-wire.ts';
 import { MoreSection } from './MoreSection.tsx';
 import { type NodeField, nodeFields } from './node-fields.ts';
 import { hasInlineEditor } from './widgets/inline-editor.ts';
@@ -48,7 +49,7 @@ export function DiagnosticBadge({ diagnostics }: { diagnostics: readonly Diagnos
       className={`kf-badge kf-badge--${level}`}
       title={diagnostics.map((d) => `${d.code} ${d.message}`).join('\n')}
       role="img"
-      aria-label={`${diagnostics.length} ${level}${diagnostics.length === 1 ? '' : 's'}`}
+      aria-label={`${diagnostics.length} ${level}${diagnostics.length === 1 ? '' : 's'}: ${diagnostics.map((d) => d.message).join('; ')}`}
     >
       {level === 'error' ? '!' : level === 'warning' ? '!' : 'i'}
     </span>
@@ -56,6 +57,8 @@ export function DiagnosticBadge({ diagnostics }: { diagnostics: readonly Diagnos
 }
 
 function Port({
+  nodeId,
+  nodeName,
   side,
   port,
   label,
@@ -63,6 +66,9 @@ function Port({
   doc,
   dim,
 }: {
+  nodeId: string;
+  /** The node as a screen reader names it, so a port is "Line a input", not just "a". */
+  nodeName: string;
   side: 'in' | 'out';
   port: string;
   label: string;
@@ -71,12 +77,21 @@ function Port({
   dim: boolean;
 }) {
   const info = type ? PORT_TYPE_INFO[type] : null;
+  const wire = useKeyboardWireContext();
+  const name = `${nodeName} ${label} ${side === 'in' ? 'input' : 'output'}`;
+  const picked = wire.pending?.nodeId === nodeId && wire.pending.side === side && wire.pending.port === port;
   return (
     <Handle
+      // Focusable so a keyboard can wire: Enter picks the port up, Enter on another lays the wire.
+      tabIndex={0}
+      role="button"
+      aria-label={`${name}, ${type ?? 'unknown'}`}
+      aria-pressed={picked}
+      onKeyDown={(e) => wire.onPortKey({ nodeId, side, port, name }, e)}
       id={side === 'in' ? inHandle(port) : outHandle(port)}
       type={side === 'in' ? 'target' : 'source'}
       position={side === 'in' ? Position.Left : Position.Right}
-      className={`kf-port kf-port--${type ?? 'unknown'}${info?.many ? ' kf-port--many' : ''}${dim ? ' kf-port--dim' : ''}`}
+      className={`kf-port kf-port--${type ?? 'unknown'}${info?.many ? ' kf-port--many' : ''}${dim ? ' kf-port--dim' : ''}${picked ? ' kf-port--picked' : ''}`}
       style={{ background: info?.color ?? '#666' }}
       title={`${label}: ${type ?? 'unknown'}${info?.many ? ' (takes many wires)' : ''}${doc ? ` — ${doc}` : ''}`}
     />
@@ -87,6 +102,7 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
   const { editParam, setHoveredNode, runFix, openGroup } = useEditorActions();
   const wire = useWireInProgress();
   const { node, def, connected, evaluation, diagnostics } = data;
+  const nodeName = node.label ?? def?.label ?? node.type;
   const portDiag = (port: string) => diagnostics.filter((d) => d.port === port);
 
   /** Whether a handle on this node can take the wire being dragged (others dim). */
@@ -125,6 +141,8 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
     return (
       <div key={`i-${port}`} className={`kf-row kf-row--in${rowClass}`} title={title}>
         <Port
+          nodeId={id}
+          nodeName={nodeName}
           side="in"
           port={port}
           label={spec.label ?? port}
@@ -173,6 +191,8 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
             <div key={`o-${port}`} className="kf-row kf-row--out">
               <span className="kf-row__label">{spec.label ?? port}</span>
               <Port
+                nodeId={id}
+                nodeName={nodeName}
                 side="out"
                 port={port}
                 label={spec.label ?? port}
@@ -206,12 +226,28 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
             {data.orphanPorts.outputs.map((port) => (
               <div key={`o-${port}`} className="kf-row kf-row--out">
                 <span className="kf-row__label">{port}</span>
-                <Port side="out" port={port} label={port} type={null} dim={dims('out', null)} />
+                <Port
+                  nodeId={id}
+                  nodeName={nodeName}
+                  side="out"
+                  port={port}
+                  label={port}
+                  type={null}
+                  dim={dims('out', null)}
+                />
               </div>
             ))}
             {data.orphanPorts.inputs.map((port) => (
               <div key={`i-${port}`} className="kf-row kf-row--in">
-                <Port side="in" port={port} label={port} type={null} dim={dims('in', null)} />
+                <Port
+                  nodeId={id}
+                  nodeName={nodeName}
+                  side="in"
+                  port={port}
+                  label={port}
+                  type={null}
+                  dim={dims('in', null)}
+                />
                 <span className="kf-row__label">{port}</span>
               </div>
             ))}

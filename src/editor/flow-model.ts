@@ -71,6 +71,14 @@ function reuseData(prev: KfNodeData | undefined, next: KfNodeData): KfNodeData {
   return same ? prev : next;
 }
 
+/** What a screen reader says on reaching a node: its name, its type, and how many problems. */
+function nodeAriaLabel({ node, def, diagnostics }: KfNodeData): string {
+  const type = def?.label ?? node.type;
+  const name = node.label ? `${node.label}, ${type}` : type;
+  const problems = diagnostics.filter((d) => d.severity !== 'info').length;
+  return `${name} node${node.muted ? ', muted' : ''}${problems ? `, ${problems} problem${problems === 1 ? '' : 's'}` : ''}`;
+}
+
 export function toFlowNodes(
   doc: GraphDoc,
   registry: NodeRegistry,
@@ -114,6 +122,7 @@ export function toFlowNodes(
       position: { x, y },
       selected,
       ...(prev?.measured ? { measured: prev.measured } : {}),
+      ariaLabel: nodeAriaLabel(data),
       data,
     };
   });

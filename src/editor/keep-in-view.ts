@@ -2,8 +2,10 @@
  * Keeps the inspected node on screen: opening the docked inspector narrows the canvas, and a node
  * near its right edge would slip out of view; the graph pans just enough to show it again.
  */
+
 import { type Edge, useReactFlow } from '@xyflow/react';
 import { type RefObject, useEffect } from 'react';
+import { motionMs } from '../app/animation.ts';
 import type { KfNode } from './flow-model.ts';
 
 /** A node is brought this far inside the canvas's edges (css px). */
@@ -32,7 +34,8 @@ export function useKeepInView(nodeId: string | undefined, pane: RefObject<HTMLEl
       const at = node.internals.positionAbsolute;
       const dx = shiftIntoView(at.x * zoom + x, (node.measured.width ?? 0) * zoom, el.clientWidth);
       const dy = shiftIntoView(at.y * zoom + y, (node.measured.height ?? 0) * zoom, el.clientHeight);
-      if (dx !== 0 || dy !== 0) void flow.setViewport({ x: x + dx, y: y + dy, zoom }, { duration: 150 });
+      if (dx !== 0 || dy !== 0)
+        void flow.setViewport({ x: x + dx, y: y + dy, zoom }, { duration: motionMs(150) });
     });
     return () => cancelAnimationFrame(frame);
   }, [nodeId, flow, pane]);

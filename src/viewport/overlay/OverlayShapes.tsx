@@ -3,7 +3,7 @@
  * outline (so it reads on any picture), with constant pixel widths at every zoom, labels, and the
  * grab handles on top. The hovered node's geometry is drawn wider with a soft halo.
  */
-import type { JSX } from 'react';
+import type { JSX, KeyboardEvent } from 'react';
 import type { HandleItem } from '../../../nodes/core/scene.ts';
 import type { Vec2 } from '../../../nodes/core/values.ts';
 import type { HandleRef } from '../../../nodes/graph/drag-patches.ts';
@@ -23,6 +23,7 @@ export interface OverlayShapesProps {
   readonly hoverHandle: HandleItem | null;
   readonly dragTarget: HandleItem | null;
   readonly showLabels: boolean;
+  readonly keyboard?: HandleKnobsProps<HandleItem>['keyboard'];
 }
 
 const sameHandle = (a: HandleRef | null, b: HandleRef) => a?.nodeId === b.nodeId && a.handle === b.handle;
@@ -183,6 +184,7 @@ export function OverlayShapes(props: OverlayShapesProps): JSX.Element {
         hoveredNodeIds={hoveredNodeIds}
         hoverHandle={hoverHandle}
         dragTarget={dragTarget}
+        keyboard={props.keyboard}
       />
     </>
   );
@@ -193,6 +195,11 @@ export interface HandleKnobsProps<T extends HandleRef> {
   readonly hoveredNodeIds: ReadonlySet<string>;
   readonly hoverHandle: T | null;
   readonly dragTarget: T | null;
+  /** When set, each knob is focusable and takes keys (arrow keys move it): its name and its keys. */
+  readonly keyboard?: {
+    readonly name: (item: T) => string;
+    readonly onKey: (item: T, at: Vec2, e: KeyboardEvent<SVGCircleElement>) => void;
+  };
 }
 
 /** The grab handles (2D and 3D overlays): bigger when hovered, dragged, or their node is hovered. */
@@ -208,8 +215,15 @@ export function HandleKnobs<T extends HandleRef>(props: HandleKnobsProps<T>): JS
         return (
           <g key={`${item.nodeId}/${item.handle}`}>
             <circle cx={at[0]} cy={at[1]} r={r + OVERLAY_PX.outline} fill={OUTLINE_COLOR} />
+            {/* biome-ignore lint/a11y/noStaticElementInteractions: role "button" comes with the key handler (both only when `keyboard` is set) */}
             <circle
               data-handle={`${item.nodeId}/${item.handle}`}
+              className="kf-overlay-knob"
+              tabIndex={props.keyboard ? 0 : undefined}
+              role={props.keyboard ? 'button' : undefined}
+              aria-roledescription={props.keyboard ? 'movable handle' : undefined}
+              aria-label={props.keyboard?.name(item)}
+              onKeyDown={props.keyboard && ((e) => props.keyboard?.onKey(item, at, e))}
               cx={at[0]}
               cy={at[1]}
               r={r}

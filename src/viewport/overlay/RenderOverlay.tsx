@@ -22,6 +22,7 @@ import { SnapGuides } from './SnapGuides.tsx';
 import { placeHandles, placeOverlays, pxPerWorld, type Screen, toWorld } from './screen.ts';
 import { snapHandle } from './snap-rules.ts';
 import { useClickToPlace } from './use-click-to-place.ts';
+import { useHandleKeyboard } from './use-handle-keyboard.ts';
 import { type DragPlacer, useOverlayPointer } from './use-overlay-pointer.ts';
 
 export type { NodePatch } from '../../../nodes/graph/drag-patches.ts';
@@ -112,6 +113,7 @@ export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
     onCommit: props.onCommit,
     inspecting: props.inspecting ?? false,
   });
+  const keyboard = useHandleKeyboard(props, screen, !readOnly && !props.inspecting);
   const cursor = props.inspecting
     ? 'crosshair'
     : drag
@@ -128,11 +130,12 @@ export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
       width={width}
       height={height}
       viewBox={`0 0 ${width} ${height}`}
-      role="img"
+      // A group when its handles take the focus (an img's children are hidden from screen readers).
+      role={keyboard ? 'group' : 'img'}
       aria-label={
         readOnly
           ? 'Construction overlay (read-only)'
-          : 'Construction overlay: drag the handles to move points and circles'
+          : 'Construction overlay: drag the handles, or focus one and use the arrow keys, to move points and circles'
       }
       style={{
         position: 'absolute',
@@ -157,6 +160,7 @@ export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
         hoverHandle={hoverHandle}
         dragTarget={drag?.target ?? null}
         showLabels={showLabels}
+        keyboard={keyboard}
       />
       {drag?.snap && <SnapGuides screen={screen} guide={drag.snap.guide} at={drag.snap.at} />}
     </svg>

@@ -26,6 +26,7 @@ import { ExamplesGallery } from './gallery/ExamplesGallery.tsx';
 import { HelpDialog } from './help/HelpDialog.tsx';
 import { loadedMessage, PRESENTING_READ_ONLY, useDocumentIo } from './io/use-document-io.tsx';
 import { LiveSourceSection } from './LiveSourceSection.tsx';
+import { nodeTitle } from './node-title.ts';
 import { PictureFileSection } from './PictureFileSection.tsx';
 import { Presentation } from './present/Presentation.tsx';
 import { type RenderInfo, RenderPane } from './RenderPane.tsx';
@@ -252,6 +253,7 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
         nodes={doc.nodes.length}
         edges={doc.edges.length}
         saveState={saveState}
+        titleOf={(id) => nodeTitle(doc, id, registry)}
         onSelectNode={(id) => store.setSelection([id])}
         onFix={(fix) =>
           store.dispatch({ type: 'set-params', patches: fixPatches(evaluation, fix) }, fix.label)

@@ -290,7 +290,7 @@ export function RenderPane({
         />
       )}
       {inspected.inspection && (
-        <InspectPanel inspection={inspected.inspection} side={inspected.side} onClose={inspected.close} />
+        <InspectPanel inspection={inspected.inspection} place={inspected.place} onClose={inspected.close} />
       )}
       {(bounds || is3d) && (
         <button

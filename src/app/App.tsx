@@ -16,10 +16,11 @@ import { GraphEditor } from '../editor/GraphEditor.tsx';
 import { InspectorExtrasContext } from '../editor/inspector-extras.ts';
 import { scopeDiagnostics } from '../editor/tools/scope-evaluation.ts';
 import { isTyping } from '../editor/typing.ts';
+import { sharePayload } from '../io/share-url.ts';
 import type { AutosaveHold } from '../state/autosave.ts';
 import { createEvaluator } from '../state/evaluation.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
-import { fitSquareView } from '../viewport/fit-view.ts';
+import { fitSquareView, openingView, pictureBounds } from '../viewport/fit-view.ts';
 import type { Viewport } from '../viewport/viewport.ts';
 import { useAnimationClock } from './animation.ts';
 import { Banner, type Message } from './Banner.tsx';
@@ -28,6 +29,7 @@ import { ExamplesGallery } from './gallery/ExamplesGallery.tsx';
 import { HelpDialog } from './help/HelpDialog.tsx';
 import { loadedMessage, PRESENTING_READ_ONLY, useDocumentIo } from './io/use-document-io.tsx';
 import { LiveSourceSection } from './LiveSourceSection.tsx';
+import { nodeTitle } from './node-title.ts';
 import { PictureFileSection } from './PictureFileSection.tsx';
 import { Presentation } from './present/Presentation.tsx';
 import { type RenderInfo, RenderPane } from './RenderPane.tsx';
@@ -87,7 +89,10 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
   const [renderInfo, setRenderInfo] = useState<RenderInfo | null>(null);
   const [messages, setMessages] = useState<readonly Message[]>(initialMessages);
   const [help, setHelp] = useState(false);
-  const [welcome, setWelcome] = useState(() => !welcomeSeen(storage()));
+  // A link that brings a document (#g=…) shows that document, not the first-visit card over it.
+  const [welcome, setWelcome] = useState(
+    () => !welcomeSeen(storage()) && sharePayload(window.location.hash) === null,
+  );
   const [walkthrough, setWalkthrough] = useState(false);
   const [gallery, setGallery] = useState(false);
   const [presenting, setPresenting] = useState(false);
@@ -139,16 +144,19 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
   const openExample = useCallback(
     (ex: (typeof EXAMPLES)[number]) => {
       const replacing = store.getState().doc.nodes.length > 0;
-      // Examples are framed for a square pane: in a tall one, zoom out so none of it is cropped.
-      // One undo step with the load, so Ctrl+Z restores the previous graph and its view together.
-      const { center, scale } = fitSquareView(ex.doc.view, renderPaneSize());
+      // Examples are framed for a square pane: in a tall one, zoom out so none of it is cropped, and
+      // never open cropped where Fit would frame more (openingView). One undo step with the load,
+      // so Ctrl+Z restores the previous graph and its view together.
+      const shown = evaluate(ex.doc, 0);
+      const bounds = shown.scene3d ? null : pictureBounds(shown.scene);
+      const { center, scale } = openingView(ex.doc.view, bounds, renderPaneSize());
       load({ ...ex.doc, view: { center: [center[0], center[1]], scale } }, `open ${ex.title}`);
       if (replacing) notify(loadedMessage(`“${ex.title}”`));
       setHelp(false);
       setGallery(false);
       dismissWelcome();
     },
-    [store, load, notify, dismissWelcome],
+    [store, load, notify, dismissWelcome, evaluate],
   );
   const startWalkthrough = useCallback(() => {
     if (store.getState().doc.nodes.length > 0) load(emptyDocument('My *333 kaleidoscope'), 'new document');
@@ -259,8 +267,8 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
         nodes={doc.nodes.length}
         edges={doc.edges.length}
         saveState={saveState}
+        titleOf={(id) => names.get(id) ?? nodeTitle(doc, id, registry)}
         onSelectNode={(id) => store.setSelection([id])}
-        nodeName={(id) => names.get(id) ?? id}
         onFix={(fix) =>
           store.dispatch({ type: 'set-params', patches: fixPatches(evaluation, fix) }, fix.label)
         }

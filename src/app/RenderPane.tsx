@@ -234,7 +234,12 @@ export function RenderPane({
     onModeOff: onInspectingOff,
   });
 
-  const hint = useMemo(() => renderHint(doc, evaluation, registry), [doc, evaluation]);
+  // The hints tell an editor what to wire next: nothing for an audience (read-only), where a
+  // presentation's early steps have no mirrors yet by design.
+  const hint = useMemo(
+    () => (readOnly ? null : renderHint(doc, evaluation, registry)),
+    [readOnly, doc, evaluation],
+  );
   const hoveredNodeIds = useMemo(() => nodesUnder(evaluation, hovered), [evaluation, hovered]);
   const onHoverNode = (id: string | null) => onHover(id === null ? null : pathOf(evaluation.origin, id));
   const patchChange = (patches: NodePatch[]) => ({ type: 'set-params' as const, patches });
@@ -285,7 +290,7 @@ export function RenderPane({
         />
       )}
       {inspected.inspection && (
-        <InspectPanel inspection={inspected.inspection} side={inspected.side} onClose={inspected.close} />
+        <InspectPanel inspection={inspected.inspection} place={inspected.place} onClose={inspected.close} />
       )}
       {(bounds || is3d) && (
         <button

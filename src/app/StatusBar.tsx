@@ -1,8 +1,9 @@
 /** The status line: diagnostics (click for the list), render progress and autosave state. */
-import { useEffect, useState } from 'react';
+import { type CSSProperties, useEffect, useLayoutEffect, useRef, useState } from 'react';
 import type { Diagnostic, DiagnosticFix } from '../../nodes/core/diagnostics.ts';
 import { FixButton } from '../editor/FixButton.tsx';
 import type { RenderInfo } from './RenderPane.tsx';
+import { useNarrow } from './use-narrow.ts';
 
 interface Props {
   readonly diagnostics: readonly Diagnostic[];
@@ -10,9 +11,13 @@ interface Props {
   readonly nodes: number;
   readonly edges: number;
   readonly saveState: string;
+  /**
+   * The node's name as people see it, for the list's entries: its title, told apart by its order
+   * where several nodes share one (nodes/graph/node-names.ts); ids are internal.
+   */
+  titleOf(id: string): string;
+  /** Selects the node and brings it into view in the graph. */
   onSelectNode(id: string): void;
-  /** The node's title as people see it (ids are internal); the id when not given. */
-  nodeName?(id: string): string;
   /** Runs a diagnostic's one-click fix. */
   onFix(fix: DiagnosticFix): void;
 }
@@ -25,6 +30,11 @@ function progressText(render: RenderInfo): string {
   const done = render.samples >= render.target;
   const text = `${done ? 'Rendered' : 'Rendering'} ${render.samples}/${render.target} samples`;
   return render.band === undefined ? text : `${text} (next: ${percent(render.band)})`;
+}
+
+/** A phone's status line has no room for "Saved in this browser": "Saved" says it (title: all). */
+function shortSaveState(state: string): string {
+  return state === 'Saved in this browser' ? 'Saved' : state;
 }
 
 /**
@@ -42,22 +52,37 @@ function useRenderAnnouncement(render: RenderInfo | null): string {
   return said;
 }
 
-export function StatusBar({
-  diagnostics,
-  render,
-  nodes,
-  edges,
-  saveState,
-  onSelectNode,
-  nodeName,
-  onFix,
-}: Props) {
+/**
+ * Where the open list goes: fixed above the status line, inside the window. The status line clips
+ * what overflows it (a long line must not widen the app), so the list cannot hang from it.
+ */
+function useListPlace(open: boolean) {
+  const bar = useRef<HTMLElement>(null);
+  const [place, setPlace] = useState<CSSProperties>({});
+  // Before paint: the list never shows (nor is seen by anyone) at an unplaced spot.
+  useLayoutEffect(() => {
+    if (!open) return undefined;
+    const measure = () => {
+      const top = bar.current?.getBoundingClientRect().top ?? window.innerHeight;
+      setPlace({ bottom: window.innerHeight - top + 4, maxHeight: Math.max(120, top - 16) });
+    };
+    measure();
+    window.addEventListener('resize', measure);
+    return () => window.removeEventListener('resize', measure);
+  }, [open]);
+  return { bar, place };
+}
+
+export function StatusBar(props: Props) {
+  const { diagnostics, render, nodes, edges, saveState, titleOf, onSelectNode, onFix } = props;
   const [open, setOpen] = useState(false);
+  const { bar, place } = useListPlace(open);
+  const narrow = useNarrow();
   const errors = diagnostics.filter((d) => d.severity === 'error').length;
   const warnings = diagnostics.filter((d) => d.severity === 'warning').length;
   const announcement = useRenderAnnouncement(render);
   return (
-    <footer className="kf-status">
+    <footer className="kf-status" ref={bar}>
       <button
         type="button"
         className={`kf-status__diag${errors ? ' kf-status__diag--error' : warnings ? ' kf-status__diag--warning' : ''}`}
@@ -88,18 +113,18 @@ export function StatusBar({
         {nodes} nodes · {edges} wires
       </span>
       <span className="kf-status__sep" />
-      <span className="kf-status__item kf-status__muted" data-testid="save-state">
-        {saveState}
+      <span className="kf-status__item kf-status__muted" data-testid="save-state" title={saveState}>
+        {narrow ? shortSaveState(saveState) : saveState}
       </span>
       {open && diagnostics.length > 0 && (
-        <ul className="kf-status__list" aria-label="Diagnostics">
+        <ul className="kf-status__list" aria-label="Diagnostics" style={place}>
           {diagnostics.map((d, i) => (
             // biome-ignore lint/suspicious/noArrayIndexKey: diagnostics may repeat; their order is stable
             <li key={i} className={`kf-diag kf-diag--${d.severity}`}>
               <code>{d.code}</code>{' '}
               {d.nodeId ? (
                 <button type="button" className="kf-link" onClick={() => onSelectNode(d.nodeId!)}>
-                  {nodeName ? nodeName(d.nodeId) : d.nodeId}
+                  {titleOf(d.nodeId)}
                 </button>
               ) : (
                 d.path && <code>{d.path}</code>

@@ -27,7 +27,10 @@ interface Props {
   onInspect(): void;
 }
 
-/** Every toolbar command but Present, in groups, for the phone's menu. */
+/**
+ * Every toolbar command but Present, in groups, for the phone's menu. No keyboard hints (Ctrl S,
+ * Alt click, ?): this menu is the narrow, touch layout's, where there is usually no keyboard.
+ */
 function commandGroups(p: Props): MenuGroup[] {
   return [
     {
@@ -35,8 +38,8 @@ function commandGroups(p: Props): MenuGroup[] {
       items: [
         { label: 'Examples…', hint: 'gallery', onSelect: p.onExamples },
         { label: 'New', hint: 'empty graph', onSelect: p.onNew },
-        { label: 'Open…', hint: 'Ctrl O', onSelect: p.onOpen },
-        { label: 'Save', hint: 'Ctrl S', onSelect: p.onSave },
+        { label: 'Open…', onSelect: p.onOpen },
+        { label: 'Save', onSelect: p.onSave },
       ],
     },
     {
@@ -52,10 +55,9 @@ function commandGroups(p: Props): MenuGroup[] {
         { label: p.playing ? 'Pause animation' : 'Play animation', onSelect: p.onPlay },
         {
           label: p.inspecting ? 'Stop inspecting' : 'Inspect a pixel',
-          hint: 'Alt click',
           onSelect: p.onInspect,
         },
-        { label: 'Help', hint: '?', onSelect: p.onHelp },
+        { label: 'Help', onSelect: p.onHelp },
       ],
     },
     { label: 'Export', items: p.exportItems },

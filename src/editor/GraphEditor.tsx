@@ -301,7 +301,9 @@ function GraphCanvas({
 
   const inspected = selection.size === 1 ? doc.nodes.find((n) => selection.has(n.id)) : undefined;
   const inspectedData = inspected ? nodes.find((n) => n.id === inspected.id)?.data : undefined;
-  useKeepInView(inspectorOpen && !inspectorTab ? inspected?.id : undefined, wrapper);
+  // The selected node stays in view: one picked elsewhere (the status bar's warnings list) is
+  // panned to, and one kept inspected in the docked panel is not hidden behind it.
+  useKeepInView(inspectorTab ? undefined : inspected?.id, wrapper, inspectorOpen);
 
   return (
     <EditorProviders actions={actions} wire={keyboardWire}>

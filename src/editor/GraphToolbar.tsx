@@ -37,7 +37,7 @@ export function GraphToolbar({ nodes, inspectorOpen, inspectorButton, toggleInsp
       const m = measured.get(n.id);
       return m?.width && m.height ? { width: m.width, height: m.height } : estimate(n);
     };
-    store.dispatch({ type: 'move-nodes', moves: tidyPositions(current, size) }, 'tidy layout');
+    store.dispatch({ type: 'move-nodes', moves: tidyPositions(current, size, registry) }, 'tidy layout');
     requestAnimationFrame(() => void flow.fitView({ ...FIT_VIEW, duration: motionMs(200) }));
   };
 

@@ -21,8 +21,14 @@ export function shiftIntoView(lo: number, size: number, avail: number, margin = 
   return over > 0 ? -Math.min(over, lo - margin) : 0;
 }
 
-export function useKeepInView(nodeId: string | undefined, pane: RefObject<HTMLElement | null>): void {
+/** `layout`: whatever changes the canvas's width (the docked panel opening): the check runs again. */
+export function useKeepInView(
+  nodeId: string | undefined,
+  pane: RefObject<HTMLElement | null>,
+  layout: unknown = null,
+): void {
   const flow = useReactFlow<KfNode, Edge>();
+  // biome-ignore lint/correctness/useExhaustiveDependencies: `layout` only says when to look again
   useEffect(() => {
     if (!nodeId) return;
     // After the layout that opened the panel, so the canvas has its new width.
@@ -38,5 +44,5 @@ export function useKeepInView(nodeId: string | undefined, pane: RefObject<HTMLEl
         void flow.setViewport({ x: x + dx, y: y + dy, zoom }, { duration: motionMs(150) });
     });
     return () => cancelAnimationFrame(frame);
-  }, [nodeId, flow, pane]);
+  }, [nodeId, flow, pane, layout]);
 }

@@ -1,11 +1,12 @@
 /**
- * Tidy layout: nodes in columns by their depth in the graph (sources left, render right), stacked
- * without overlap. Used when a loaded document's nodes overlap, and by the Tidy button.
+ * Tidy layout: nodes in columns by their depth in the graph (sources left, render right, see
+ * layers.ts), stacked without overlap. Used when a loaded document's nodes overlap, and by the Tidy button.
  */
 import type { InputSpec, NodeDef } from '../../nodes/core/define-node.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc, GraphNode } from '../../nodes/graph/document.ts';
 import { nodeDef } from '../../nodes/graph/group-def.ts';
+import { layers } from './layers.ts';
 import { nodeFields } from './node-fields.ts';
 import { hasInlineEditor } from './widgets/inline-editor.ts';
 
@@ -72,38 +73,31 @@ export function nodesOverlap(doc: GraphDoc, size: SizeOf): boolean {
 }
 
 /**
- * New positions: column = longest path from a source (cycles are cut), each column sorted by the
- * nodes' current y, stacked from the top-left of the current layout.
+ * New positions: the columns and their order from layers.ts (sources left, Render alone on the
+ * right, wires one column long where they can be, few crossings), stacked from the top-left of the
+ * current layout.
  */
-export function tidyPositions(doc: GraphDoc, size: SizeOf): { nodeId: string; position: [number, number] }[] {
-  const ids = new Set(doc.nodes.map((n) => n.id));
-  const depth = new Map<string, number>(doc.nodes.map((n) => [n.id, 0]));
-  // Longest-path layering by relaxation; at most |nodes| rounds, so a cycle cannot loop forever.
-  for (let round = 0; round < doc.nodes.length; round++) {
-    let changed = false;
-    for (const e of doc.edges) {
-      if (!ids.has(e.from.node) || !ids.has(e.to.node) || e.from.node === e.to.node) continue;
-      const d = depth.get(e.from.node)! + 1;
-      if (d > depth.get(e.to.node)! && d < doc.nodes.length) {
-        depth.set(e.to.node, d);
-        changed = true;
-      }
-    }
-    if (!changed) break;
-  }
-  const columns = new Map<number, GraphNode[]>();
-  for (const n of doc.nodes) columns.set(depth.get(n.id)!, [...(columns.get(depth.get(n.id)!) ?? []), n]);
+export function tidyPositions(
+  doc: GraphDoc,
+  size: SizeOf,
+  registry: NodeRegistry,
+): { nodeId: string; position: [number, number] }[] {
+  if (doc.nodes.length === 0) return [];
+  // An output node declares no outputs: Render, the picture's node.
+  const isOutput = (n: GraphNode) => {
+    const def = nodeDef(registry, n);
+    return def !== undefined && Object.keys(def.outputs).length === 0;
+  };
   const left = Math.min(...doc.nodes.map((n) => n.position[0]));
   const top = Math.min(...doc.nodes.map((n) => n.position[1]));
   const moves: { nodeId: string; position: [number, number] }[] = [];
-  for (const [d, nodes] of [...columns].sort((a, b) => a[0] - b[0])) {
+  layers(doc, isOutput).columns.forEach((nodes, d) => {
     let y = top;
-    const sorted = [...nodes].sort((a, b) => a.position[1] - b.position[1] || (a.id < b.id ? -1 : 1));
-    for (const n of sorted) {
+    for (const n of nodes) {
       moves.push({ nodeId: n.id, position: [left + d * (NODE_WIDTH + GAP_X), y] });
       y += size(n).height + GAP_Y;
     }
-  }
+  });
   return moves;
 }
 
@@ -111,6 +105,6 @@ export function tidyPositions(doc: GraphDoc, size: SizeOf): { nodeId: string; po
 export function tidyIfOverlapping(doc: GraphDoc, registry: NodeRegistry): GraphDoc {
   const size = sizer(doc, registry);
   if (!nodesOverlap(doc, size)) return doc;
-  const to = new Map(tidyPositions(doc, size).map((m) => [m.nodeId, m.position]));
+  const to = new Map(tidyPositions(doc, size, registry).map((m) => [m.nodeId, m.position]));
   return { ...doc, nodes: doc.nodes.map((n) => ({ ...n, position: to.get(n.id) ?? n.position })) };
 }

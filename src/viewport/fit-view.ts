@@ -44,6 +44,25 @@ export function fitSquareView(view: View, pane: PaneSize): View {
 }
 
 /**
+ * The view an example opens with: its saved view (fitSquareView) when that shows the whole
+ * picture (`bounds`, what Fit frames), otherwise Fit's view — an example must not open cropped
+ * and need a Fit (the Apollonian gasket's mirror circles reach past its saved square).
+ */
+export function openingView(view: View, bounds: Bounds | null, pane: PaneSize): View {
+  const shown = fitSquareView(view, pane);
+  if (!bounds || !(pane.width > 0 && pane.height > 0)) return shown;
+  const halfH = shown.scale / 2;
+  const halfW = (halfH * pane.width) / pane.height;
+  const [cx, cy] = shown.center;
+  const inside =
+    bounds.min[0] >= cx - halfW &&
+    bounds.max[0] <= cx + halfW &&
+    bounds.min[1] >= cy - halfH &&
+    bounds.max[1] <= cy + halfH;
+  return inside ? shown : fitBounds(bounds, pane);
+}
+
+/**
  * What "the picture" is, for Fit: the render's clip disk when it has one (everything outside is
  * background); otherwise the construction — the circles and points drawn over the render and the
  * circle mirrors. Lines are infinite and count only by the points that define them. Null when the

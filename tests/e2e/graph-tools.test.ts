@@ -239,7 +239,10 @@ describe('graph tools', () => {
     expect(await badge.getAttribute('title')).toMatch(/in group ‘Mirror pair’ → node ‘Circle 2’: /);
     await page.getByTestId('diagnostics-count').click();
     const list = page.getByRole('list', { name: 'Diagnostics' });
-    await expect.poll(() => list.textContent()).toMatch(/g in group ‘Mirror pair’ → node ‘Circle 2’: /);
+    // The entry names the group by its title (the list names nodes as their headers do).
+    await expect
+      .poll(() => list.textContent())
+      .toMatch(/Mirror pair in group ‘Mirror pair’ → node ‘Circle 2’: /);
     await page.getByTestId('diagnostics-count').click();
     await nodeEl(page, 'g').getByRole('button', { name: 'Open group' }).click();
     const inner = nodeEl(page, 'c').locator('.kf-badge--error');

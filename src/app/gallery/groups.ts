@@ -91,11 +91,42 @@ const fold = (s: string) =>
     .toLowerCase()
     .replace(/\s+/g, ' ');
 
+/** `phrase` in `text` as whole words: "fig. 11" is in "fig. 11 — …", not in "fig. 110". */
+function hasPhrase(text: string, phrase: string, atStart: boolean): boolean {
+  for (let at = text.indexOf(phrase); at >= 0; at = text.indexOf(phrase, at + 1)) {
+    const before = at === 0 || !/[\p{L}\p{N}]/u.test(text[at - 1]);
+    const after = !/[\p{L}\p{N}]/u.test(text[at + phrase.length] ?? ' ');
+    if (before && after && (!atStart || at === 0)) return true;
+    if (atStart) return false;
+  }
+  return false;
+}
+
+/**
+ * How well an example answers a search, best first: its title starts with the query ("Fig. 11 —
+ * …" for "Fig. 11"), the title holds the query as a phrase, the title holds every word, and last
+ * the description or id does. So an example about Fig. 11 beats one that mentions it in passing.
+ */
+export function matchRank(e: Example, query: string): number {
+  // Punctuation aside: "Fig 11" and "fig. 11" both find "Fig. 11 — …".
+  const bare = (t: string) =>
+    fold(t)
+      .replace(/[^\p{L}\p{N}*∞]+/gu, ' ')
+      .trim();
+  const phrase = bare(query);
+  const title = bare(e.title);
+  if (!phrase) return 0;
+  if (hasPhrase(title, phrase, true)) return 3;
+  if (hasPhrase(title, phrase, false)) return 2;
+  return phrase.split(' ').every((w) => title.includes(w)) ? 1 : 0;
+}
+
 /**
  * The sections with the examples that match every word of `query` in their title or description
  * (empty sections dropped): the table's sections, then the groups examples declare (in order of
  * first appearance; a declared group with a table section's title joins it), then "More" for
- * examples neither places, so none is ever hidden.
+ * examples neither places, so none is ever hidden. With a query, the best matches (matchRank) come
+ * first in each section and the section with the best one comes first, so Enter opens it.
  */
 export function galleryGroups(examples: readonly Example[], query = ''): GalleryGroup[] {
   const words = fold(query).split(' ').filter(Boolean);
@@ -115,9 +146,15 @@ export function galleryGroups(examples: readonly Example[], query = ''): Gallery
     else sections.set(e.group, [...(sections.get(e.group) ?? []), e]);
   }
   sections.set('More', [...(sections.get('More') ?? []), ...more]);
+  const rank = new Map(examples.map((e) => [e, matchRank(e, query)]));
+  const best = (list: readonly Example[]) => Math.max(...list.map((e) => rank.get(e)!));
   return [...sections]
-    .map(([title, list]) => ({ title, examples: list.filter(matches) }))
-    .filter((s) => s.examples.length > 0);
+    .map(([title, list]) => ({
+      title,
+      examples: list.filter(matches).sort((a, b) => rank.get(b)! - rank.get(a)!),
+    }))
+    .filter((s) => s.examples.length > 0)
+    .sort((a, b) => best(b.examples) - best(a.examples));
 }
 
 /**

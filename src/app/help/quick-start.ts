@@ -13,7 +13,7 @@ export const QUICK_START: readonly QuickStep[] = [
   {
     title: 'Add a Triangle kaleidoscope',
     detail:
-      'Press Space (or double-click the graph), type “triangle” and press Enter. Its p, q, r are 2, 3, 7: the angles π/2, π/3, π/7 of a hyperbolic triangle.',
+      'Press Space (or double-click the graph), type “triangle” and press Enter. Its p, q, r are 2, 3, 7: the angles π/2, π/3, π/7 of a hyperbolic triangle. The (2,3,7) example the first visit opens has them as 7, 2, 3: p is the corner at the centre, so its seven-fold corner sits in the middle of the disk.',
   },
   {
     title: 'Add a Render node',

@@ -1,6 +1,6 @@
 /**
- * The "Explain this pixel" panel, docked in the render pane on the side away from the clicked
- * point: where the point is, why its run stopped and at which depth, the GPU's depth at the same
+ * The "Explain this pixel" panel, placed in the render pane away from the clicked point
+ * (panel-place.ts): where the point is, why its run stopped and at which depth, the GPU's depth at the same
  * pixel (agreeing, disagreeing with a note, or unavailable and why), the final point and scale, and
  * the word of elements applied — numbered like the markers on the picture. Escape closes it.
  * A 3D graph's explanation (inspection-3d.ts) shows in the same panel: the ray's hit point, the
@@ -10,11 +10,12 @@ import { type JSX, useCallback } from 'react';
 import { MAX_DRAWN_STEPS } from '../../viewport/overlay/orbit-path.ts';
 import type { GpuCheck, Inspection } from './inspection.ts';
 import type { Inspection3d } from './inspection-3d.ts';
+import type { PanelPlace } from './panel-place.ts';
 
 interface Props {
   readonly inspection: Inspection | Inspection3d;
-  /** Which side of the pane it docks on (away from the point). */
-  readonly side: 'left' | 'right';
+  /** Where it goes in the pane (away from the point). */
+  readonly place: PanelPlace;
   onClose(): void;
 }
 
@@ -59,7 +60,7 @@ function GpuLine({ gpu, depth }: { gpu: GpuCheck; depth: number }) {
   );
 }
 
-export function InspectPanel({ inspection, side, onClose }: Props): JSX.Element {
+export function InspectPanel({ inspection, place, onClose }: Props): JSX.Element {
   const { trace: t, word } = inspection;
   const shown = word.slice(0, MAX_DRAWN_STEPS);
   // Pan/zoom listens natively on the pane: a press, a drag or a wheel in the panel (Close, selecting
@@ -77,7 +78,8 @@ export function InspectPanel({ inspection, side, onClose }: Props): JSX.Element 
   return (
     <section
       ref={keepEvents}
-      className={`kf-inspect kf-inspect--${side}`}
+      className="kf-inspect"
+      style={place}
       aria-label="Explain this pixel"
       data-testid="inspect-panel"
     >

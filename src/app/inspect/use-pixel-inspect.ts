@@ -17,6 +17,7 @@ import type { PixelInspection } from '../../viewport/pixel-probe.ts';
 import type { Viewport } from '../../viewport/viewport.ts';
 import { type Inspection, inspect } from './inspection.ts';
 import { type Inspection3d, inspect3d } from './inspection-3d.ts';
+import { type PanelPlace, panelPlace } from './panel-place.ts';
 
 /** A press that moves less than this (CSS px) before release is a click. */
 const CLICK_SLOP = 4;
@@ -27,8 +28,8 @@ export interface PixelInspectState {
   /** The inspected world point (the clicked one), or null when the panel is closed. */
   readonly anchor: Vec2 | null;
   readonly inspection: Inspection | Inspection3d | null;
-  /** The panel docks on the side away from the point. */
-  readonly side: 'left' | 'right';
+  /** Where the panel goes: away from the point (panel-place.ts). */
+  readonly place: PanelPlace;
   close(): void;
 }
 
@@ -173,7 +174,7 @@ export function usePixelInspect(p: Inputs): PixelInspectState {
   return {
     anchor: space ? null : anchor,
     inspection,
-    side: css && css[0] > width / 2 ? 'left' : 'right',
+    place: panelPlace(css, width, height),
     close: () => {
       setAnchor(null);
       setPixel3d(null);

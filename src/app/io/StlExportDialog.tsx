@@ -82,12 +82,16 @@ export function StlExportDialog({ run, onClose }: Props) {
           <input
             id="kf-stl-bounds"
             type="text"
-            placeholder="auto — or x0, y0, z0, x1, y1, z1"
+            placeholder="auto"
             value={boundsText}
             disabled={busy}
             onChange={(e) => setBoundsText(e.target.value)}
           />
-          <span className="kf-export__note"> needed when plane mirrors repeat the solid without end</span>
+          {/* The format in the note, not the placeholder: a field that narrow cut it off. */}
+          <span className="kf-export__note">
+            {' '}
+            x0, y0, z0, x1, y1, z1 — needed when plane mirrors repeat the solid without end
+          </span>
         </span>
       </div>
       <ExportRunFooter

@@ -1,7 +1,8 @@
 /**
  * The classroom's step-through: the construction node by node in evaluation order
  * (evaluation.analysis.order, topological with ties by id), and the evaluation as it stands after
- * the first `count` steps — only those nodes' points, lines, circles and handles are drawn.
+ * the first `count` steps — only those nodes' points, lines, circles, handles and mirrors (the
+ * hatched kept-side bands the overlay draws from the scene's elements) are there.
  */
 import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
 
@@ -24,7 +25,11 @@ export function constructionSteps(evaluation: Evaluation): ConstructionStep[] {
   });
 }
 
-/** The evaluation with the overlay cut down to the first `count` steps (the picture is untouched). */
+/**
+ * The evaluation cut down to the first `count` steps. The mirrors (scene elements) are cut too:
+ * the overlay draws each one's hatched band, and a mirror must appear at its own step. The picture
+ * is shown only from the Render step on (renderReached), when every mirror it uses is built.
+ */
 export function evaluationUpTo(
   evaluation: Evaluation,
   steps: readonly ConstructionStep[],
@@ -37,6 +42,7 @@ export function evaluationUpTo(
     ...evaluation,
     scene: {
       ...scene,
+      elements: scene.elements.filter((e) => built.has(e.nodeId)),
       overlays: scene.overlays.filter((o) => built.has(o.nodeId)),
       handles: scene.handles.filter((h) => built.has(h.nodeId)),
     },

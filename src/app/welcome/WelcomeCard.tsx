@@ -4,6 +4,7 @@
  */
 import { useEffect } from 'react';
 import type { Example } from '../examples.ts';
+import { useNarrow } from '../use-narrow.ts';
 
 interface Props {
   readonly examples: readonly Example[];
@@ -22,6 +23,8 @@ export function WelcomeCard({ examples, onExample, onWalkthrough, onEmpty, onDis
     window.addEventListener('keydown', onKey);
     return () => window.removeEventListener('keydown', onKey);
   }, [onDismiss]);
+  // A phone shows one pane at a time: the picture is a tab there, not the right-hand side.
+  const narrow = useNarrow();
   const firsts = FIRST_EXAMPLES.flatMap((id) => examples.filter((e) => e.id === id));
   return (
     <section className="kf-welcome" aria-label="Welcome to Kleinflow">
@@ -32,8 +35,8 @@ export function WelcomeCard({ examples, onExample, onWalkthrough, onEmpty, onDis
         </button>
       </header>
       <p className="kf-welcome__lead">
-        Wire mirrors into a Render node and the picture on the right follows every change. How would you like
-        to start?
+        Wire mirrors into a Render node and the picture {narrow ? 'in the Picture tab' : 'on the right'}{' '}
+        follows every change. How would you like to start?
       </p>
       <div className="kf-welcome__choices">
         <button type="button" className="kf-button kf-button--primary" onClick={onWalkthrough}>

@@ -1,3 +1,5 @@
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { emptyDocument, type GraphDoc } from '../../../nodes/graph/document.ts';
 import { registry } from '../../../nodes/types/index.ts';
@@ -24,7 +26,7 @@ describe('tidy layout', () => {
   it('puts nodes in columns by depth, stacked without overlap', () => {
     const size = sizer(doc, registry);
     expect(nodesOverlap(doc, size)).toBe(true);
-    const at = new Map(tidyPositions(doc, size).map((m) => [m.nodeId, m.position]));
+    const at = new Map(tidyPositions(doc, size, registry).map((m) => [m.nodeId, m.position]));
     expect(at.get('p')![0]).toBe(at.get('q')![0]);
     expect(at.get('l')![0]).toBeGreaterThan(at.get('p')![0]);
     expect(at.get('r')![0]).toBeGreaterThan(at.get('l')![0]);
@@ -40,6 +42,46 @@ describe('tidy layout', () => {
       ...doc,
       edges: [...doc.edges, { id: 'e5', from: { node: 'l', port: 'line' }, to: { node: 'l', port: 'a' } }],
     };
-    expect(tidyPositions(cyclic, sizer(cyclic, registry))).toHaveLength(5);
+    expect(tidyPositions(cyclic, sizer(cyclic, registry), registry)).toHaveLength(5);
+  });
+});
+
+describe('tidy layout flows left to right', () => {
+  const k333 = JSON.parse(
+    readFileSync(
+      join(import.meta.dirname, '..', '..', '..', 'examples', 'kaleidoscope-333.kleinflow.json'),
+      'utf8',
+    ),
+  ) as GraphDoc;
+  const place = (d: GraphDoc) =>
+    new Map(tidyPositions(d, sizer(d, registry), registry).map((m) => [m.nodeId, m.position]));
+
+  it('puts Render alone on the right, each wire one column long, crossing as little as can be', () => {
+    const at = place(k333);
+    const column = (id: string) => at.get(id)![0];
+    const right = Math.max(...[...at.values()].map((p) => p[0]));
+    expect(column('out')).toBe(right);
+    expect([...at.keys()].filter((id) => column(id) === right)).toEqual(['out']);
+    for (const e of k333.edges) expect(column(e.to.node)).toBeGreaterThan(column(e.from.node));
+    // The tile feeds only Render: it sits in the column before it, not far left with a long wire.
+    expect(column('t')).toBe(column('mAB'));
+    let crossings = 0;
+    for (const [i, a] of k333.edges.entries())
+      for (const b of k333.edges.slice(i + 1)) {
+        if (column(a.from.node) !== column(b.from.node) || column(a.to.node) !== column(b.to.node)) continue;
+        const dy0 = at.get(a.from.node)![1] - at.get(b.from.node)![1];
+        const dy1 = at.get(a.to.node)![1] - at.get(b.to.node)![1];
+        if (dy0 * dy1 < 0) crossings++;
+      }
+    // Points and lines make a six-cycle (A–AB–B–BC–C–CA–A), which two columns cannot draw with
+    // fewer than two crossings; the mirrors, the tile and Render add none.
+    expect(crossings).toBe(2);
+  });
+
+  it('puts an unwired Render on the right, not at the bottom left', () => {
+    const bare: GraphDoc = { ...doc, edges: doc.edges.filter((e) => e.to.node !== 'out') };
+    const at = place(bare);
+    expect(at.get('out')![0]).toBe(Math.max(...[...at.values()].map((p) => p[0])));
+    expect(at.get('out')![0]).toBeGreaterThan(at.get('p')![0]);
   });
 });

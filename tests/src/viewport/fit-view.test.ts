@@ -3,7 +3,7 @@ import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import type { Scene } from '../../../nodes/core/scene.ts';
 import { pixelToWorld } from '../../../nodes/core/view.ts';
-import { fitBounds, fitSquareView, pictureBounds } from '../../../src/viewport/fit-view.ts';
+import { fitBounds, fitSquareView, openingView, pictureBounds } from '../../../src/viewport/fit-view.ts';
 
 describe('fitBounds', () => {
   it('shows the whole box in a pane of any shape (property: its corners map inside the pane)', () => {
@@ -55,5 +55,19 @@ describe('pictureBounds', () => {
       ],
     } as unknown as Scene;
     expect(pictureBounds(withCircle)).toEqual({ min: [-2, -2], max: [3, 2] });
+  });
+});
+
+describe('openingView', () => {
+  const pane = { width: 320, height: 650 };
+  const saved = { center: [0, 0] as [number, number], scale: 2.15 };
+  it('keeps the saved (square-fitted) view when it shows the whole picture', () => {
+    const bounds = { min: [-1, -1] as [number, number], max: [1, 1] as [number, number] };
+    expect(openingView(saved, bounds, pane)).toEqual(fitSquareView(saved, pane));
+    expect(openingView(saved, null, pane)).toEqual(fitSquareView(saved, pane));
+  });
+  it("frames the picture as Fit does when the saved view would crop it (the Apollonian gasket's mirrors)", () => {
+    const bounds = { min: [-3.46, -3.73] as [number, number], max: [3.46, 2.73] as [number, number] };
+    expect(openingView(saved, bounds, pane)).toEqual(fitBounds(bounds, pane));
   });
 });

@@ -65,3 +65,17 @@ describe('gallery sections', () => {
     expect(oneLine('Angles 1.5 and 2. Then.')).toBe('Angles 1.5 and 2.');
   });
 });
+
+describe('gallery search ranking', () => {
+  it('puts an example titled with the figure before one that mentions it in passing', () => {
+    const examples = [
+      fake('seed-picture-orbit', 'Seed picture: the orbit of a picture (Fig. 11 in the plane)'),
+      fake('fig110', 'Fig. 110 — not this one'),
+      fake('fig11-sphere', 'Fig. 11 — the orbit of a seed sphere under six sphere inversions', '', '3D'),
+      fake('about', 'Something', 'Compare Fig. 11 of the paper.'),
+    ];
+    const first = galleryGroups(examples, 'Fig. 11')[0].examples.map((e) => e.id);
+    expect(first[0]).toBe('fig11-sphere');
+    expect(galleryGroups(examples, 'fig 11')[0].examples[0].id).toBe('fig11-sphere');
+  });
+});

@@ -38,8 +38,18 @@ describe('construction steps', () => {
       const shown = evaluationUpTo(evaluation, steps, i).scene;
       expect(shown.overlays.every((o) => built.has(o.nodeId))).toBe(true);
       expect(shown.handles.every((h) => built.has(h.nodeId))).toBe(true);
-      expect(shown.elements).toBe(evaluation.scene.elements); // the picture itself is untouched
+      // A mirror appears at its own step (the overlay hatches it), never before.
+      expect(shown.elements.every((e) => built.has(e.nodeId))).toBe(true);
+      expect(shown.elements).toHaveLength(
+        evaluation.scene.elements.filter((e) => built.has(e.nodeId)).length,
+      );
     }
+    expect(evaluationUpTo(evaluation, steps, 1).scene.elements).toHaveLength(0);
+    // From the Render step on (when the picture shows) every mirror it uses is built.
+    const render = steps.findIndex((s) => s.nodeId === evaluation.scene.renderNodeId);
+    expect(evaluationUpTo(evaluation, steps, render + 1).scene.elements).toHaveLength(
+      evaluation.scene.elements.length,
+    );
   });
 
   it('reach the render node only at its own step', () => {

@@ -9,9 +9,10 @@ import type { Sphere } from '../../nodes/geometry/space/sphere.ts';
 import { glslFunction } from '../glsl/snippet.ts';
 
 export function seedDistance(seed: Seed3d, x: number, y: number, z: number): number {
+  // Indexing, not destructuring: this runs several times per march step of the CPU tracer.
   if (seed.kind === 'sphere') {
-    const [cx, cy, cz] = seed.sphere.center;
-    return Math.sqrt((x - cx) ** 2 + (y - cy) ** 2 + (z - cz) ** 2) - seed.sphere.radius;
+    const c = seed.sphere.center;
+    return Math.sqrt((x - c[0]) ** 2 + (y - c[1]) ** 2 + (z - c[2]) ** 2) - seed.sphere.radius;
   }
   const qx = Math.abs(x - seed.center[0]) - seed.halfSize[0];
   const qy = Math.abs(y - seed.center[1]) - seed.halfSize[1];

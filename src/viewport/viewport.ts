@@ -232,12 +232,15 @@ export class Viewport {
     const { width, height } = this.targets;
     const context = { is3d: is3d(scene), target, width, height, drawable: this.active !== null };
     const { finished, plan } = this.frames.step(this.gl, now, context);
+    // The next band goes first: its fence (its timing) must not wait for the whole-canvas present.
+    const band = plan?.rows && this.active ? this.active : null;
+    if (band && plan) this.drawFrame(renderer, band, scene, plan, target);
     if (finished) {
       this.present(renderer);
       if (finished.whole) this.frameDone(target);
       else this.options.onBand?.({ rows: finished.rows, of: finished.of, samples: this.frames.fullSamples });
     }
-    if (plan && this.active) this.drawFrame(renderer, this.active, scene, plan, target);
+    if (plan && this.active && !band) this.drawFrame(renderer, this.active, scene, plan, target);
     this.keepRunning(now, target);
   }
 

@@ -87,7 +87,18 @@ function Port({
       role="button"
       aria-label={`${name}, ${type ?? 'unknown'}`}
       aria-pressed={picked}
-      onKeyDown={(e) => wire.onPortKey({ nodeId, side, port, name }, e)}
+      onKeyDown={(e) => {
+        // A port focused by a press (a wire dragged with the pointer) leaves Space and Enter to the
+        // editor (Space opens the palette where the pointer is); keyboard focus wires.
+        if (!(e.currentTarget as HTMLElement).dataset.byPointer)
+          wire.onPortKey({ nodeId, side, port, name }, e);
+      }}
+      onPointerDown={(e) => {
+        (e.currentTarget as HTMLElement).dataset.byPointer = '1';
+      }}
+      onBlur={(e) => {
+        delete (e.currentTarget as HTMLElement).dataset.byPointer;
+      }}
       id={side === 'in' ? inHandle(port) : outHandle(port)}
       type={side === 'in' ? 'target' : 'source'}
       position={side === 'in' ? Position.Left : Position.Right}

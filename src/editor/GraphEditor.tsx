@@ -257,6 +257,7 @@ function GraphCanvas({
     onConnectEnd,
     addFromPalette,
     closePalette,
+    lastAdded,
   } = usePalette(wrapper);
 
   const addSavedGroup = useCallback(
@@ -289,7 +290,8 @@ function GraphCanvas({
 
   const inspected = selection.size === 1 ? doc.nodes.find((n) => selection.has(n.id)) : undefined;
   const inspectedData = inspected ? nodes.find((n) => n.id === inspected.id)?.data : undefined;
-  useKeepInView(inspectorOpen && !inspectorTab ? inspected?.id : undefined, wrapper);
+  // The inspected node, else the node just added from the palette, is kept on screen.
+  useKeepInView(inspectorOpen && !inspectorTab ? inspected?.id : lastAdded, wrapper);
 
   return (
     <EditorContext.Provider value={actions}>

@@ -29,6 +29,8 @@ import { LiveSourceSection } from './LiveSourceSection.tsx';
 import { PictureFileSection } from './PictureFileSection.tsx';
 import { Presentation } from './present/Presentation.tsx';
 import { type RenderInfo, RenderPane } from './RenderPane.tsx';
+import { RecentPanel } from './recent/RecentDialog.tsx';
+import { pictureDone, useRecent } from './recent/use-recent.ts';
 import { SplitPane } from './SplitPane.tsx';
 import { StatusBar } from './StatusBar.tsx';
 import { TopBar } from './TopBar.tsx';
@@ -92,18 +94,22 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
   useAnimationClock(store, playing);
   const say = useCallback((m: Message) => setMessages((ms) => [...ms.filter((x) => x.id !== m.id), m]), []);
   const saveState = useAutosave(store, say, autosaveHold);
+  const getViewport = useCallback(() => viewport.current, []);
+  const recent = useRecent(store, getViewport, say, pictureDone(renderInfo));
+  const { switchTo } = recent;
 
   const load = useCallback(
-    (next: GraphDoc, label: string) => {
+    (next: GraphDoc, label: string, recentId?: string) => {
+      // Another document: saved as its own Recent entry, never over the one it replaces.
+      switchTo(recentId);
       store.dispatch({ type: 'load-document', doc: next }, label);
       store.setSelection([]);
       setRenderDiagnostics([]);
       setFrameKey((k) => k + 1);
     },
-    [store],
+    [store, switchTo],
   );
 
-  const getViewport = useCallback(() => viewport.current, []);
   const io = useDocumentIo({
     store,
     scene: evaluation.scene,
@@ -216,6 +222,7 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
         onExamples={() => setGallery(true)}
         onNew={() => load(emptyDocument(), 'new document')}
         onOpen={open}
+        onRecent={() => recent.setOpen(true)}
         onSave={save}
         onUndo={store.undo}
         onRedo={store.redo}
@@ -292,6 +299,7 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
           onDismiss={dismissWelcome}
         />
       )}
+      {recent.open && <RecentPanel recent={recent} load={load} notify={notify} />}
       {walkthrough && (
         <WalkthroughPanel doc={doc} evaluation={evaluation} onClose={() => setWalkthrough(false)} />
       )}

@@ -16,6 +16,8 @@ interface Props {
   onExamples(): void;
   onNew(): void;
   onOpen(): void;
+  /** The Recent documents this browser saved (any tab). */
+  onRecent(): void;
   onSave(): void;
   onUndo(): void;
   onRedo(): void;
@@ -36,6 +38,7 @@ function commandGroups(p: Props): MenuGroup[] {
         { label: 'Examples…', hint: 'gallery', onSelect: p.onExamples },
         { label: 'New', hint: 'empty graph', onSelect: p.onNew },
         { label: 'Open…', hint: 'Ctrl O', onSelect: p.onOpen },
+        { label: 'Recent…', hint: 'saved here', onSelect: p.onRecent },
         { label: 'Save', hint: 'Ctrl S', onSelect: p.onSave },
       ],
     },
@@ -124,6 +127,15 @@ export function TopBar(p: Props) {
             title="Open a .kleinflow.json file or a Kleinflow PNG (Ctrl O)"
           >
             Open…
+          </button>
+          <button
+            type="button"
+            className="kf-button"
+            onClick={p.onRecent}
+            aria-haspopup="dialog"
+            title="Reopen a document this browser saved, from any tab"
+          >
+            Recent
           </button>
           <button
             type="button"

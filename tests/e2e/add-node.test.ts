@@ -1,7 +1,9 @@
 /**
  * The Add node button (no pointer position, the way a phone adds nodes): three Points added in a
  * row must not land on each other, and each stays in view, at 1280×720 and on a 390×844 phone. On
- * the phone, the zoom controls and minimap must leave the nodes' sockets free to tap.
+ * the phone, the zoom controls and minimap must leave the nodes' sockets free to tap. A paste with
+ * the pointer over a node goes beside it: a copy on top hid the node and its header (the editor
+ * e2e 'pastes nodes copied in another tab' then timed out clicking a covered header).
  */
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
@@ -82,6 +84,27 @@ describe.each([
     expect(await coveredSockets(page)).toEqual([]);
     mkdirSync(join(repoRoot, 'test-artifacts'), { recursive: true });
     await page.screenshot({ path: join(repoRoot, 'test-artifacts', `add-node-${device}.png`) });
+    await context.close();
+  }, 120_000);
+});
+
+describe('paste', () => {
+  it('with the pointer over a node, the copy goes beside it and the node stays reachable', async () => {
+    const context = await app.newContext({ width: 1280, height: 720 });
+    const page = await context.newPage();
+    await page.goto(app.url);
+    const k = page.locator('.react-flow__node[data-id="k"]');
+    await k.waitFor({ timeout: 30_000 });
+    const before = await nodeCount(page);
+    await k.locator('.kf-node__header').click();
+    await page.keyboard.press('Control+c');
+    const at = (await k.boundingBox())!;
+    await page.mouse.move(at.x + 30, at.y + 10);
+    await page.keyboard.press('Control+v');
+    await expect.poll(() => nodeCount(page)).toBe(before + 1);
+    const pasted = (await page.locator('.react-flow__node.selected').boundingBox())!;
+    expect(overlap(pasted, (await k.boundingBox())!)).toBe(false);
+    await k.locator('.kf-node__header').click({ timeout: 10_000 });
     await context.close();
   }, 120_000);
 });

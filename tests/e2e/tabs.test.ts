@@ -138,7 +138,10 @@ describe('two tabs', () => {
     await page.getByRole('menuitem', { name: /^Recent/ }).click();
     const dialog = page.getByRole('dialog', { name: 'Recent' });
     await dialog.waitFor({ timeout: 30_000 });
-    await page.getByRole('status').filter({ hasText: /Nothing saved yet|Recent documents/ }).waitFor();
+    await page
+      .getByRole('status')
+      .filter({ hasText: /Nothing saved yet|Recent documents/ })
+      .waitFor();
     const box = (await dialog.boundingBox())!;
     expect(box.x).toBeGreaterThanOrEqual(0);
     expect(box.x + box.width).toBeLessThanOrEqual(390);

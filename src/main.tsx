@@ -1,5 +1,5 @@
 /**
- * Entry: restores the autosaved graph (or opens the default example on the first run), creates
+ * Entry: restores this tab's autosaved graph (or opens the default example on the first run), creates
  * the store and mounts the app. An unreadable autosave is kept and offered for download.
  */
 import { StrictMode } from 'react';
@@ -23,12 +23,13 @@ import {
   restore,
 } from './state/autosave.ts';
 import { createEditorStore } from './state/store.ts';
+import { appAutosaveStorage } from './state/tab-storage.ts';
 import { StoreContext } from './state/use-store.ts';
 
 function start(): { doc: GraphDoc; messages: Message[]; hold: AutosaveHold; fresh: boolean } {
   let restored: Restored = { kind: 'none' };
   try {
-    restored = restore(window.localStorage);
+    restored = restore(appAutosaveStorage());
   } catch {
     // storage unavailable: start fresh (the autosave hook reports it)
   }
@@ -54,7 +55,7 @@ function start(): { doc: GraphDoc; messages: Message[]; hold: AutosaveHold; fres
   };
   const discardIt = (): Message => {
     try {
-      window.localStorage.removeItem(AUTOSAVE_KEY);
+      appAutosaveStorage().removeItem(AUTOSAVE_KEY);
     } catch {
       // storage unavailable: nothing left to discard
     }

@@ -33,6 +33,8 @@ import { nodeTitle } from './node-title.ts';
 import { PictureFileSection } from './PictureFileSection.tsx';
 import { Presentation } from './present/Presentation.tsx';
 import { type RenderInfo, RenderPane } from './RenderPane.tsx';
+import { RecentPanel } from './recent/RecentDialog.tsx';
+import { pictureDone, useRecent } from './recent/use-recent.ts';
 import { SplitPane } from './SplitPane.tsx';
 import { StatusBar } from './StatusBar.tsx';
 import { TopBar } from './TopBar.tsx';
@@ -104,18 +106,22 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
   useAnimationClock(store, playing);
   const say = useCallback((m: Message) => setMessages((ms) => [...ms.filter((x) => x.id !== m.id), m]), []);
   const saveState = useAutosave(store, say, autosaveHold);
+  const getViewport = useCallback(() => viewport.current, []);
+  const recent = useRecent(store, getViewport, say, pictureDone(renderInfo));
+  const { switchTo } = recent;
 
   const load = useCallback(
-    (next: GraphDoc, label: string) => {
+    (next: GraphDoc, label: string, recentId?: string) => {
+      // Another document: saved as its own Recent entry, never over the one it replaces.
+      switchTo(recentId);
       store.dispatch({ type: 'load-document', doc: next }, label);
       store.setSelection([]);
       setRenderDiagnostics([]);
       setFrameKey((k) => k + 1);
     },
-    [store],
+    [store, switchTo],
   );
 
-  const getViewport = useCallback(() => viewport.current, []);
   const io = useDocumentIo({
     store,
     scene: evaluation.scene,
@@ -231,6 +237,7 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
         onExamples={() => setGallery(true)}
         onNew={() => load(emptyDocument(), 'new document')}
         onOpen={open}
+        onRecent={() => recent.setOpen(true)}
         onSave={save}
         onUndo={store.undo}
         onRedo={store.redo}
@@ -308,6 +315,7 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
           onDismiss={dismissWelcome}
         />
       )}
+      {recent.open && <RecentPanel recent={recent} load={load} notify={notify} />}
       {walkthrough && (
         <WalkthroughPanel doc={doc} evaluation={evaluation} onClose={() => setWalkthrough(false)} />
       )}

@@ -16,6 +16,8 @@ interface Props {
   onExamples(): void;
   onNew(): void;
   onOpen(): void;
+  /** The Recent documents this browser saved (any tab). */
+  onRecent(): void;
   onSave(): void;
   onUndo(): void;
   onRedo(): void;
@@ -39,6 +41,7 @@ function commandGroups(p: Props): MenuGroup[] {
         { label: 'Examples…', hint: 'gallery', onSelect: p.onExamples },
         { label: 'New', hint: 'empty graph', onSelect: p.onNew },
         { label: 'Open…', onSelect: p.onOpen },
+        { label: 'Recent…', onSelect: p.onRecent },
         { label: 'Save', onSelect: p.onSave },
       ],
     },
@@ -126,6 +129,15 @@ export function TopBar(p: Props) {
             title="Open a .kleinflow.json file or a Kleinflow PNG (Ctrl O)"
           >
             Open…
+          </button>
+          <button
+            type="button"
+            className="kf-button"
+            onClick={p.onRecent}
+            aria-haspopup="dialog"
+            title="Reopen a document this browser saved, from any tab"
+          >
+            Recent
           </button>
           <button
             type="button"

@@ -1,18 +1,20 @@
 /**
- * Autosave wiring: every committed document change is saved (debounced) to localStorage; a full
- * storage or a refused write is shown as a message, and the status line says "Saved"/"Not saved".
+ * Autosave wiring: every committed document change is saved (debounced) to this tab's
+ * sessionStorage and to localStorage (tab-storage.ts); a full storage or a refused write is shown
+ * as a message, and the status line says "Saved"/"Not saved".
  */
 import { useEffect, useState } from 'react';
-import { type AutosaveHold, createAutosaver } from '../state/autosave.ts';
+import { type AutosaveHold, createAutosaver, type StorageLike } from '../state/autosave.ts';
 import type { EditorStore } from '../state/store.ts';
+import { appAutosaveStorage } from '../state/tab-storage.ts';
 import type { Message } from './Banner.tsx';
 
 export function useAutosave(store: EditorStore, say: (m: Message) => void, hold?: AutosaveHold): string {
   const [state, setState] = useState('Saved in this browser');
   useEffect(() => {
-    let storage: Storage;
+    let storage: StorageLike;
     try {
-      storage = window.localStorage;
+      storage = appAutosaveStorage();
     } catch {
       setState('Not saved: browser storage is disabled');
       return;

@@ -269,6 +269,7 @@ function GraphCanvas({
     onConnectEnd,
     addFromPalette,
     closePalette,
+    lastAdded,
   } = usePalette(wrapper);
 
   const addSavedGroup = useCallback(
@@ -302,8 +303,9 @@ function GraphCanvas({
   const inspected = selection.size === 1 ? doc.nodes.find((n) => selection.has(n.id)) : undefined;
   const inspectedData = inspected ? nodes.find((n) => n.id === inspected.id)?.data : undefined;
   // The selected node stays in view: one picked elsewhere (the status bar's warnings list) is
-  // panned to, and one kept inspected in the docked panel is not hidden behind it.
-  useKeepInView(inspectorTab ? undefined : inspected?.id, wrapper, inspectorOpen);
+  // panned to, one kept inspected in the docked panel is not hidden behind it, and one just added
+  // from the palette is shown.
+  useKeepInView(inspectorTab ? undefined : (inspected?.id ?? lastAdded), wrapper, inspectorOpen);
 
   return (
     <EditorProviders actions={actions} wire={keyboardWire}>

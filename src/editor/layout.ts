@@ -58,18 +58,42 @@ export function sizer(doc: GraphDoc, registry: NodeRegistry): SizeOf {
   return (node) => estimateSize(node, nodeDef(registry, node), connected.get(node.id) ?? new Set());
 }
 
+type Box = { readonly x: number; readonly y: number } & Size;
+
+const boxOf = (node: GraphNode, size: SizeOf): Box => ({
+  x: node.position[0],
+  y: node.position[1],
+  ...size(node),
+});
+const intersect = (a: Box, b: Box) =>
+  a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+
 /** Whether any two nodes' boxes intersect. */
 export function nodesOverlap(doc: GraphDoc, size: SizeOf): boolean {
-  const boxes = doc.nodes.map((n) => ({ x: n.position[0], y: n.position[1], ...size(n) }));
+  const boxes = doc.nodes.map((n) => boxOf(n, size));
   for (let i = 0; i < boxes.length; i++) {
-    for (let j = i + 1; j < boxes.length; j++) {
-      const a = boxes[i];
-      const b = boxes[j];
-      if (a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height)
-        return true;
-    }
+    for (let j = i + 1; j < boxes.length; j++) if (intersect(boxes[i], boxes[j])) return true;
   }
   return false;
+}
+
+/**
+ * How far right new nodes `placed` must move so they cover no node of `doc`: 0 where they are
+ * clear, else one node width and a gap at a time, as often as needed. A node added twice from the
+ * Add node button (no pointer position) would otherwise land exactly on the one before, and a paste
+ * under the pointer could hide the node it lands on (and its header, the handle to drag it by).
+ */
+export function clearShift(doc: GraphDoc, placed: readonly GraphNode[], size: SizeOf): number {
+  const others = doc.nodes.map((n) => boxOf(n, size));
+  const own = placed.map((n) => boxOf(n, size));
+  let dx = 0;
+  while (own.some((a) => others.some((b) => intersect({ ...a, x: a.x + dx }, b)))) dx += NODE_WIDTH + GAP_X;
+  return dx;
+}
+
+/** Where `node` goes so it covers no node of `doc` (see clearShift). */
+export function clearSpot(doc: GraphDoc, node: GraphNode, size: SizeOf): [number, number] {
+  return [node.position[0] + clearShift(doc, [node], size), node.position[1]];
 }
 
 /**

@@ -4,11 +4,12 @@
  */
 import type { NodeDef } from '../../nodes/core/define-node.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
+import { registry } from '../../nodes/types/index.ts';
 import type { Change } from '../state/changes.ts';
 import { idAllocator } from '../state/ids.ts';
 import { portOfHandle } from './connection.ts';
 import { compatiblePort, type WireFilter } from './fuzzy.ts';
-import { NODE_WIDTH } from './layout.ts';
+import { clearSpot, NODE_WIDTH, sizer } from './layout.ts';
 import { newNode } from './new-node.ts';
 
 export interface PaletteState {
@@ -18,6 +19,8 @@ export interface PaletteState {
   readonly filter?: WireFilter;
   /** The wire that opened the palette: its node, handle and which end was dragged. */
   readonly wire?: { nodeId: string; handle: string; side: 'source' | 'target' };
+  /** Opened without a pointer position (the Add node button, Space with the pointer outside): the node goes where it covers no other. */
+  readonly centred?: boolean;
 }
 
 /** The change adding `def` where the palette opened (one undo step) and the new node's id. */
@@ -28,7 +31,10 @@ export function addNodeChange(
 ): { change: Change; nodeId: string } {
   // A node fed by a wire from its right (dragged from an input) goes to the left of the cursor.
   const x = palette.wire?.side === 'target' ? palette.flow.x - NODE_WIDTH : palette.flow.x;
-  const node = newNode(doc, def, [x, palette.flow.y - 20]);
+  const placed = newNode(doc, def, [x, palette.flow.y - 20]);
+  const node = palette.centred
+    ? { ...placed, position: clearSpot(doc, placed, sizer(doc, registry)) }
+    : placed;
   const changes: Change[] = [{ type: 'add-node', node }];
   const port = palette.wire && palette.filter ? compatiblePort(def, palette.filter) : null;
   if (palette.wire && port) {

@@ -5,10 +5,12 @@
  */
 import type { Edge, ReactFlowInstance } from '@xyflow/react';
 import { type RefObject, useEffect } from 'react';
+import { registry } from '../../nodes/types/index.ts';
 import { type ClipboardData, copyNodes, preparePaste } from '../state/clipboard.ts';
 import type { EditorStore } from '../state/store.ts';
 import { lastCopied, putOnEvent, readClipboard, readEvent, writeClipboard } from './clipboard-io.ts';
 import type { KfNode } from './flow-model.ts';
+import { clearShift, sizer } from './layout.ts';
 import { groupSelection, ungroupSelection } from './tools/group-actions.ts';
 import { muteToggle } from './tools/mute.ts';
 import { isTyping } from './typing.ts';
@@ -27,10 +29,20 @@ interface Options {
   openGroup(nodeId: string): void;
 }
 
-/** Pastes clipboard nodes (new ids) with their top-left at `where` (graph coordinates), selecting them. */
+/**
+ * Pastes clipboard nodes (new ids) with their top-left at `where` (graph coordinates), or further
+ * right where they would cover a node, selecting them.
+ */
 export function pasteNodes(store: EditorStore, data: ClipboardData, where?: Point): void {
   const at = where ? ([where.x, where.y] as const) : undefined;
-  const { nodes, edges } = preparePaste(store.getState().doc, data, at);
+  const { doc } = store.getState();
+  const pasted = preparePaste(doc, data, at);
+  const dx = clearShift(doc, pasted.nodes, sizer(doc, registry));
+  const nodes = pasted.nodes.map((n) => ({
+    ...n,
+    position: [n.position[0] + dx, n.position[1]] as [number, number],
+  }));
+  const { edges } = pasted;
   store.dispatch({ type: 'paste', nodes, edges }, 'paste');
   store.setSelection(nodes.map((n) => n.id));
 }

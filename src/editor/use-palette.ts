@@ -17,6 +17,8 @@ export function usePalette(wrapper: RefObject<HTMLDivElement | null>) {
   const flow = useReactFlow<KfNode, Edge>();
   const [palette, setPalette] = useState<PaletteState | null>(null);
   const closePalette = useCallback(() => setPalette(null), []);
+  /** The node the last pick added (the editor pans to keep it in view). */
+  const [lastAdded, setLastAdded] = useState<string | undefined>(undefined);
 
   const openPalette = useCallback(
     (screen: { x: number; y: number }, extra: Partial<PaletteState> = {}) => {
@@ -54,6 +56,7 @@ export function usePalette(wrapper: RefObject<HTMLDivElement | null>) {
       const { change, nodeId } = addNodeChange(store.getState().doc, def, palette);
       store.dispatch(change, `add ${def.label}`);
       store.setSelection([nodeId]);
+      setLastAdded(nodeId);
       setPalette(null);
     },
     [palette, store],
@@ -62,7 +65,7 @@ export function usePalette(wrapper: RefObject<HTMLDivElement | null>) {
   /** Where a palette opened without a pointer position (keyboard, the Add node button) appears. */
   const openPaletteCentred = useCallback(() => {
     const rect = wrapper.current!.getBoundingClientRect();
-    openPalette({ x: rect.left + rect.width / 2, y: rect.top + rect.height / 3 });
+    openPalette({ x: rect.left + rect.width / 2, y: rect.top + rect.height / 3 }, { centred: true });
   }, [openPalette, wrapper]);
   const openPaletteAt = useCallback(
     (at: { x: number; y: number } | null) => (at ? openPalette(at) : openPaletteCentred()),
@@ -77,5 +80,6 @@ export function usePalette(wrapper: RefObject<HTMLDivElement | null>) {
     onConnectEnd,
     addFromPalette,
     closePalette,
+    lastAdded,
   };
 }

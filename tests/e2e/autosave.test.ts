@@ -33,6 +33,8 @@ describe('autosave in a full storage', () => {
     // Fill the storage with the broken save (and nothing may write the backup beside it).
     await page.evaluate((n) => {
       localStorage.clear();
+      // As a new tab sees it: no copy of its own in sessionStorage (tab-storage.ts), only the shared one.
+      sessionStorage.clear();
       localStorage.setItem('kleinflow.autosave', `{"format":"kleinflow","nodes":[${'x'.repeat(n)}`);
       // Then whatever room is left, to within 1 KB.
       let size = 1 << 22;

@@ -348,7 +348,11 @@ describe('editor', () => {
     // Let the pending autosave land first (a reload flushes it), so it cannot overwrite the broken text.
     await page.getByTestId('save-state').filter({ hasText: 'Saved' }).waitFor();
     const broken = '{"format":"kleinflow","nodes":[oops';
-    await page.evaluate((text) => localStorage.setItem('kleinflow.autosave', text), broken);
+    // Both copies: the tab's own (sessionStorage, read first on reload) and the one new tabs start from.
+    await page.evaluate((text) => {
+      localStorage.setItem('kleinflow.autosave', text);
+      sessionStorage.setItem('kleinflow.tab.doc', text);
+    }, broken);
     await page.reload();
     const banner = page.getByRole('alert').filter({ hasText: 'could not be restored' });
     await banner.waitFor();

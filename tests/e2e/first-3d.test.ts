@@ -42,14 +42,14 @@ describe('the 3D quick start', () => {
   });
 
   it('gives a quasi-sphere from New in four steps, and the view and the handle move it', async () => {
-    // Step 1: New, then Render 3D from the palette.
+    // Step 1: New, then the Sphairahedron from the palette.
     await page.getByRole('button', { name: 'New' }).click();
     await expect.poll(() => nodeCount(page)).toBe(0);
-    const render = await addNode(page, 'render 3d', 330, 40);
-    expect(await nodeEl(page, render).textContent()).toContain('Render 3D');
-    // Step 2: the Sphairahedron.
     const sph = await addNode(page, 'sphairahedron', 60, 40);
     expect(await nodeEl(page, sph).textContent()).toContain('Sphairahedron');
+    // Step 2: Render 3D.
+    const render = await addNode(page, 'render 3d', 330, 40);
+    expect(await nodeEl(page, render).textContent()).toContain('Render 3D');
     // Step 3: the two wires the step names.
     await connect(page, sph, 'elements', render, 'elements');
     await connect(page, sph, 'seed', render, 'seeds');

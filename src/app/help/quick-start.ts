@@ -38,14 +38,14 @@ export const QUICK_START: readonly QuickStep[] = [
 
 export const QUICK_START_3D: readonly QuickStep[] = [
   {
-    title: 'Start a 3D graph',
+    title: 'Start with a Sphairahedron',
     detail:
-      'Click New, press Space, type “render 3d” and press Enter. With a Render 3D node the picture becomes a 3D view.',
+      'Click New, then Add node (or press Space), type “sphairahedron” and press Enter: a polyhedron with spherical faces, turned inside out by an inversion sphere.',
   },
   {
-    title: 'Add a Sphairahedron',
+    title: 'Add a Render 3D',
     detail:
-      'Press Space, type “sphairahedron”, Enter: a polyhedron with spherical faces, turned inside out by an inversion sphere.',
+      'Add node again, type “render 3d”, Enter. It goes beside the Sphairahedron, and with a Render 3D node the picture becomes a 3D view.',
   },
   {
     title: 'Wire it into Render 3D',
@@ -55,6 +55,6 @@ export const QUICK_START_3D: readonly QuickStep[] = [
   {
     title: 'Look around and reshape it',
     detail:
-      'Scroll over it to zoom, drag to orbit, Shift-drag to pan, F to reset. Drag the inversion sphere’s centre (the handle at the top) and the quasi-sphere follows; try another type.',
+      'Scroll over it to zoom (pinch on a touch screen), drag to orbit, Shift-drag to pan, F to reset. Drag the inversion sphere’s centre (the handle at the top) and the quasi-sphere follows; try another type.',
   },
 ];

@@ -3,7 +3,14 @@ import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { emptyDocument, type GraphDoc } from '../../../nodes/graph/document.ts';
 import { registry } from '../../../nodes/types/index.ts';
-import { nodesOverlap, sizer, tidyIfOverlapping, tidyPositions } from '../../../src/editor/layout.ts';
+import {
+  clearShift,
+  NODE_WIDTH,
+  nodesOverlap,
+  sizer,
+  tidyIfOverlapping,
+  tidyPositions,
+} from '../../../src/editor/layout.ts';
 
 const doc: GraphDoc = {
   ...emptyDocument('t'),
@@ -83,5 +90,26 @@ describe('tidy layout flows left to right', () => {
     const at = place(bare);
     expect(at.get('out')![0]).toBe(Math.max(...[...at.values()].map((p) => p[0])));
     expect(at.get('out')![0]).toBeGreaterThan(at.get('p')![0]);
+  });
+});
+
+describe('a clear spot for new nodes', () => {
+  const size = sizer(doc, registry);
+  it('leaves nodes that cover nothing where they are', () => {
+    expect(clearShift(doc, [{ id: 'n', type: 'point', position: [2000, 0], params: {} }], size)).toBe(0);
+  });
+  it('moves a pasted group right, as one, until none of it covers a node', () => {
+    const pasted = [
+      { id: 'a', type: 'point', position: [0, 0] as [number, number], params: {} },
+      { id: 'b', type: 'line', position: [0, 300] as [number, number], params: {} },
+    ];
+    const dx = clearShift(doc, pasted, size);
+    expect(dx).toBeGreaterThanOrEqual(NODE_WIDTH);
+    const moved = pasted.map((n) => ({
+      ...n,
+      position: [n.position[0] + dx, n.position[1]] as [number, number],
+    }));
+    // Moved, the group covers nothing: it would not move again.
+    expect(clearShift(doc, moved, size)).toBe(0);
   });
 });

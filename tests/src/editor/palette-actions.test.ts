@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { emptyDocument, type GraphDoc } from '../../../nodes/graph/document.ts';
 import { registry } from '../../../nodes/types/index.ts';
+import { nodesOverlap, sizer } from '../../../src/editor/layout.ts';
 import { addNodeChange } from '../../../src/editor/palette-actions.ts';
 import { applyChange } from '../../../src/state/changes.ts';
 
@@ -23,6 +24,20 @@ describe('adding a node from the palette', () => {
     expect(node.type).toBe('point');
     expect(node.position).toEqual([100, 200]);
     expect(after.edges).toHaveLength(0);
+  });
+
+  it('opened without a pointer (Add node), each new node goes where it covers no other; at the cursor it stays put', () => {
+    let d = emptyDocument('t');
+    const at = { screen: { x: 0, y: 0 }, flow: { x: 100, y: 220 } };
+    for (const type of ['render-3d', 'sphairahedron', 'point']) {
+      const { change } = addNodeChange(d, registry.get(type)!, { ...at, centred: true });
+      d = applyChange(d, change, registry);
+    }
+    expect(d.nodes.map((n) => n.position[1])).toEqual([200, 200, 200]);
+    expect(nodesOverlap(d, sizer(d, registry))).toBe(false);
+    const { change } = addNodeChange(d, registry.get('point')!, at);
+    const stacked = applyChange(d, change, registry);
+    expect(stacked.nodes.at(-1)!.position).toEqual([100, 200]);
   });
 
   it('a wire dragged from an output is connected to the new node’s first fitting input', () => {

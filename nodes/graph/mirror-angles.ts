@@ -8,13 +8,13 @@
  *   turning one line about its point nearer the corner.
  * Pure.
  */
-import type { EvalContext } from '../core/define-node.ts';
 import { type Diagnostic, type DiagnosticFix, diag } from '../core/diagnostics.ts';
 import type { Vec2 } from '../core/values.ts';
 import { depthInSide, type KeptSide } from '../geometry/kept-region.ts';
 import { add, dist, dot, rotate, scale, sub } from '../geometry/vec.ts';
-import type { Analysis } from './analyze.ts';
-import { formatTriple, lineSource, triangleFix } from './mirror-triangle.ts';
+import { formatTriple, lineSource, type MirrorGraph, triangleFix } from './mirror-triangle.ts';
+
+export type { MirrorGraph } from './mirror-triangle.ts';
 
 /** Largest angle error (radians) still accepted as π/n: 1e-4 rad ≈ 0.006°, invisible in a picture. */
 export const ANGLE_TOLERANCE = 1e-4;
@@ -29,15 +29,6 @@ export interface Mirror {
 }
 
 /** What the check needs to know about the graph around the scene's mirrors. */
-export interface MirrorGraph {
-  readonly analysis: Analysis;
-  /** Each node's outputs (evaluate.ts's NodeEvaluation, structurally: no import back to it). */
-  readonly nodes: ReadonlyMap<
-    string,
-    { readonly outputs?: Readonly<Record<string, unknown>>; readonly ctx?: EvalContext }
-  >;
-}
-
 /** Kept angle of a wedge with side normals n1, n2: π − ∠(n1, n2). */
 const wedgeAngle = (n1: Vec2, n2: Vec2) => Math.PI - Math.acos(Math.max(-1, Math.min(1, dot(n1, n2))));
 

@@ -5,11 +5,23 @@
  * solver — which free points define each mirror's line, and which node moves each — and words the
  * fix so a teacher knows what will move: "Snap to (2, 3, 6): moves “C” to (0, 1.732)". Pure.
  */
+
+import type { EvalContext } from '../core/define-node.ts';
 import type { DiagnosticFix } from '../core/diagnostics.ts';
 import type { Line, Vec2 } from '../core/values.ts';
 import { type SnapLine, snapTriangle, type TriangleSnap } from '../geometry/triangle-snap.ts';
-import type { MirrorGraph } from './mirror-angles.ts';
+import type { Analysis } from './analyze.ts';
 import { nodeName } from './node-names.ts';
+
+/** What the mirror checks read of an evaluated graph (here, so the angle check and this file share it without a cycle). */
+export interface MirrorGraph {
+  readonly analysis: Analysis;
+  /** Each node's outputs (evaluate.ts's NodeEvaluation, structurally: no import back to it). */
+  readonly nodes: ReadonlyMap<
+    string,
+    { readonly outputs?: Readonly<Record<string, unknown>>; readonly ctx?: EvalContext }
+  >;
+}
 
 /** One point a mirror's line is defined by, and how the fix moves it. */
 interface LinePoint {

@@ -6,7 +6,7 @@
 
 import { type Edge, useReactFlow } from '@xyflow/react';
 import { type RefObject, useEffect } from 'react';
-import { motionMs } from '../app/animation.ts';
+import { motionMs } from '../ui/motion.ts';
 import type { KfNode } from './flow-model.ts';
 
 /** A node is brought this far inside the canvas's edges (css px). */

@@ -14,7 +14,7 @@ import {
   useMemo,
   useState,
 } from 'react';
-import { announce } from '../app/announce.ts';
+import { announce } from '../ui/announce.ts';
 import { inHandle, outHandle } from './connection.ts';
 
 export interface PortRef {

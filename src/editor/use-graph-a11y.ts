@@ -9,7 +9,7 @@ import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import type { NodeRegistry } from '../../nodes/core/registry.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { nodeDef } from '../../nodes/graph/group-def.ts';
-import { announce } from '../app/announce.ts';
+import { announce } from '../ui/announce.ts';
 import { checkConnection } from './connection.ts';
 import { type KeyboardWire, useKeyboardWire } from './keyboard-wire.ts';
 

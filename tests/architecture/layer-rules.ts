@@ -94,9 +94,10 @@ export const DOM_GLOBALS =
  * it also runs in Node (the CLI), so no UI package and no browser global.
  */
 export const SRC_RULES: Readonly<Record<string, { siblings: readonly string[]; node?: true }>> = {
-  'src/app': { siblings: ['src/editor', 'src/viewport', 'src/state', 'src/io'] },
-  'src/editor': { siblings: ['src/state'] },
-  'src/viewport': { siblings: [] },
+  'src/app': { siblings: ['src/editor', 'src/viewport', 'src/state', 'src/io', 'src/ui'] },
+  'src/editor': { siblings: ['src/state', 'src/ui'] },
+  'src/viewport': { siblings: ['src/ui'] },
+  'src/ui': { siblings: [] },
   'src/state': { siblings: [] },
   'src/io': { siblings: [], node: true },
   'src/cli': { siblings: ['src/io'], node: true },

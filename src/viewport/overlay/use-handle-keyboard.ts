@@ -8,7 +8,7 @@ import type { Vec2 } from '../../../nodes/core/values.ts';
 import type { GraphDoc } from '../../../nodes/graph/document.ts';
 import type { NodePatch } from '../../../nodes/graph/drag-patches.ts';
 import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
-import { announce } from '../../app/announce.ts';
+import { announce } from '../../ui/announce.ts';
 import { handleKeyPatches } from './handle-keys.ts';
 import type { Screen } from './screen.ts';
 

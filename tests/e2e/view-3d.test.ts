@@ -50,14 +50,19 @@ const seedParams = () =>
 const SLOW = { timeout: 90_000 };
 
 /** The render node's cost settings for SwiftShader (values, never a recompile). */
-const CHEAP = { samples: 1, occlusion: 0, shadow: 0, maxIterations: 10, marchSteps: 48 };
-/** The example's own cost (one sample): a full-size frame SwiftShader draws in many bands. */
+const CHEAP = { samples: 1, occlusion: 0, shadow: 0, maxIterations: 10, marchSteps: 48, deScale: 1 };
+/**
+ * A full-size frame SwiftShader draws in many bands: the example's shading, and march steps of a
+ * twentieth of the bound (the tracer is fast enough that the example's own cost finishes a small
+ * pane's sample before a screenshot can catch it half drawn).
+ */
 const DEAR = {
   samples: 1,
   occlusion: DEFAULT_LIGHTING_3D.occlusion,
   shadow: DEFAULT_LIGHTING_3D.shadow,
   maxIterations: 30,
-  marchSteps: LIMITS.defaultMarchSteps,
+  marchSteps: LIMITS.maxMarchSteps,
+  deScale: 0.05,
 };
 const cheapen = (p: Page = page, params: Record<string, number> = CHEAP) =>
   p.evaluate(

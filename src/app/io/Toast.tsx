@@ -7,14 +7,22 @@ export interface ToastMessage {
   readonly text: string;
 }
 
-/** How long a confirmation stays on screen. */
-const TOAST_MS = 3500;
+/** How long a confirmation stays on screen once it has been painted. */
+const TOAST_MS = 5000;
 
 export function Toast({ toast, onDone }: { toast: ToastMessage; onDone(): void }) {
   useEffect(() => {
     if (toast.kind === 'error') return undefined;
-    const t = setTimeout(onDone, TOAST_MS);
-    return () => clearTimeout(t);
+    // The countdown starts at the first frame that shows it: loading an example compiles a shader,
+    // which can hold the page for seconds, and the toast must not fade unseen meanwhile.
+    let t: ReturnType<typeof setTimeout> | undefined;
+    const frame = requestAnimationFrame(() => {
+      t = setTimeout(onDone, TOAST_MS);
+    });
+    return () => {
+      cancelAnimationFrame(frame);
+      clearTimeout(t);
+    };
   }, [toast, onDone]);
   return (
     <div

@@ -8,8 +8,6 @@ import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import { emptyDocument, type GraphDoc, type GraphNode } from '../../nodes/graph/document.ts';
 import type { NodePath } from '../../nodes/graph/flatten.ts';
-import { nodeDef } from '../../nodes/graph/group-def.ts';
-import { everyNode, nodeNames } from '../../nodes/graph/node-names.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { fixPatches } from '../editor/diagnostic-fix.ts';
 import { GraphEditor } from '../editor/GraphEditor.tsx';
@@ -80,11 +78,6 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
   const history = useEditorState((s) => s.history);
   const evaluate = useMemo(() => createEvaluator(registry), []);
   const evaluation = useMemo(() => evaluate(doc, time), [evaluate, doc, time]);
-  // The status list names nodes by title, as the messages do (ids are internal).
-  const names = useMemo(
-    () => nodeNames(everyNode(doc.nodes), (n) => nodeDef(registry, n)?.label),
-    [doc.nodes],
-  );
   // The hovered node by its document path, so a group hovered in the graph lights up all it draws.
   const [hovered, setHovered] = useState<NodePath | null>(null);
   const [renderDiagnostics, setRenderDiagnostics] = useState<Diagnostic[]>([]);
@@ -274,7 +267,7 @@ export function App({ initialMessages, autosaveHold, fitStartView = false }: Pro
         nodes={doc.nodes.length}
         edges={doc.edges.length}
         saveState={saveState}
-        titleOf={(id) => names.get(id) ?? nodeTitle(doc, id, registry)}
+        titleOf={(id) => nodeTitle(doc, id, registry)}
         onSelectNode={(id) => store.setSelection([id])}
         onFix={(fix) =>
           store.dispatch({ type: 'set-params', patches: fixPatches(evaluation, fix) }, fix.label)

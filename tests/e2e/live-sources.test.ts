@@ -201,8 +201,9 @@ describe('video file', () => {
         const v = window.__kleinflow!.live.frameOf('video:cam')?.video;
         return v ? { time: v.currentTime, duration: v.duration, paused: v.paused } : null;
       });
+    // The video element may still be loading its metadata on a loaded machine: wait for its length.
+    await expect.poll(async () => (await videoAt())?.duration ?? 0, { timeout: 20_000 }).toBeGreaterThan(0.5);
     const duration = (await videoAt())!.duration;
-    expect(duration).toBeGreaterThan(0.5);
     expect(Number.isFinite(duration)).toBe(true);
     await page.evaluate(() => {
       const { store } = window.__kleinflow!;

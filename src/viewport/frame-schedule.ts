@@ -257,11 +257,14 @@ export class FrameSchedule {
     band.bands++;
     const of = band.size.height;
     // A band is seen finished only when a frame polls its fence: its measured time holds up to one
-    // frame interval of waiting (hundreds of ms on a loaded machine). One found finished at its first
-    // poll, or within a frame interval, took less than that: it grows instead of being paced by it.
+    // frame interval of waiting (hundreds of ms on a loaded machine), which is taken off. What is left
+    // paces the next band (on SwiftShader the poll itself may block until the band is done: then
+    // that is the band's time). A band with nothing left took under a frame: it grows, unless frames
+    // come slowly anyway (a loaded machine), where it keeps its size.
     const own = this.clock() - sent.at - this.interval;
-    band.rows =
-      sent.waited && own > 0 ? nextBandRows(sent.rows, own, of, this.bandMs) : grownBandRows(sent.rows, of);
+    if (own > 0) band.rows = nextBandRows(sent.rows, own, of, this.bandMs);
+    else if (this.interval <= 2 * this.bandMs) band.rows = grownBandRows(sent.rows, of);
+    else band.rows = sent.rows;
     this.learned = { height: of, rows: band.rows };
     const whole = band.done >= of;
     if (whole) {

@@ -125,19 +125,39 @@ describe('FrameSchedule', () => {
     expect(plan!.rows![1] - plan!.rows![0]).toBe(10);
   });
 
-  it('a band found finished at its first poll grows, whatever the frame interval made its time', () => {
+  it('a band done within a frame grows; on slow frames it keeps its size; one that held the page shrinks', () => {
     const { s, gpu, send, tick } = previewed();
-    let plan = s.step(gpu.gl, SETTLED, ctx(true)).plan;
+    let now = SETTLED;
+    let plan = s.step(gpu.gl, now, ctx(true)).plan;
     const sizes: number[] = [];
-    for (let i = 0; i < 3; i++) {
+    // Frames 16 ms apart, the band finished by the next: it took under a frame, so it doubles.
+    for (let i = 0; i < 1; i++) {
       send(plan);
       sizes.push(plan!.rows![1] - plan!.rows![0]);
-      tick(BAND_MS * 8); // a loaded machine: the next animation frame comes long after
+      tick(16);
+      now += 16;
       gpu.finish();
-      plan = s.step(gpu.gl, SETTLED, ctx(true)).plan;
+      plan = s.step(gpu.gl, now, ctx(true)).plan;
     }
-    // Paced by the 8 × BAND_MS the frames took, the bands would shrink to one row and stay there.
-    expect(sizes).toEqual([15, 30, 60]);
+    // A loaded machine: frames 400 ms apart, the band seen at the next one: it keeps its size.
+    for (let i = 0; i < 1; i++) {
+      send(plan);
+      sizes.push(plan!.rows![1] - plan!.rows![0]);
+      tick(BAND_MS * 8);
+      now += BAND_MS * 8;
+      gpu.finish();
+      plan = s.step(gpu.gl, now, ctx(true)).plan;
+    }
+    // The poll itself blocked until the band was done (SwiftShader): 600 ms past a 16 ms frame.
+    send(plan);
+    sizes.push(plan!.rows![1] - plan!.rows![0]);
+    tick(616);
+    now += 16;
+    gpu.finish();
+    plan = s.step(gpu.gl, now, ctx(true)).plan;
+    sizes.push(plan!.rows![1] - plan!.rows![0]);
+    // (The picture has 200 rows: 15 + 30 + 30 + 30 of them drawn.)
+    expect(sizes).toEqual([15, 30, 30, 3]);
   });
 
   it('a whole banded sample counts once; the next sample starts from the learned band size', () => {

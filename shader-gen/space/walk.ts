@@ -14,7 +14,7 @@
  * distance min over seeds of seedDistance(final)/factor, on which the tracer decides a hit.
  */
 import { POLE_AT_INFINITY, type Pole3d, type Walk3dState } from './elements/element-3d-kind.ts';
-import { TINY_D2 } from './elements/invert.ts';
+import { invertPoint } from './elements/invert.ts';
 import { ballDistance } from './elements/sphere-inversion.ts';
 import type { TracePlan } from './plan.ts';
 import { seedDistance } from './seeds-3d.ts';
@@ -125,8 +125,8 @@ export const composedBound = (d: number, s: number, r: number): number => d / (s
 
 /**
  * The IIS over sphere inversions only, from packed (c, r²) rows: the same steps as the elements'
- * own (sphereInversion.step and invertWalk), without a call and a destructuring per element per
- * step — the CPU tracer's hot loop for Figs. 11–12 and the sphairahedra. Returns `escaped`.
+ * own (sphereInversion.step and invertWalk), without a call and a destructuring per element tested
+ * — the CPU tracer's hot loop for Figs. 11–12 and the sphairahedra. Returns `escaped`.
  */
 function walkInversions(rows: Float64Array, maxIterations: number, st: Walk3dState): boolean {
   const pole = st.pole;
@@ -142,20 +142,8 @@ function walkInversions(rows: Float64Array, maxIterations: number, st: Walk3dSta
       const dz = st.z - cz;
       const d2 = dx * dx + dy * dy + dz * dz;
       if (!(d2 < r2)) continue;
-      const k = r2 / Math.max(d2, TINY_D2);
-      st.x = cx + dx * k;
-      st.y = cy + dy * k;
-      st.z = cz + dz * k;
-      st.s *= k;
-      if (pole) {
-        const px = pole.x - cx;
-        const py = pole.y - cy;
-        const pz = pole.z - cz;
-        const kp = r2 / Math.max(px * px + py * py + pz * pz, TINY_D2);
-        pole.x = cx + px * kp;
-        pole.y = cy + py * kp;
-        pole.z = cz + pz * kp;
-      }
+      st.s *= invertPoint(st, cx, cy, cz, r2);
+      if (pole) invertPoint(pole, cx, cy, cz, r2);
       st.depth += 1;
       continue outer;
     }

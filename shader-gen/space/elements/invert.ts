@@ -12,7 +12,7 @@ import type { Pole3d, Walk3dState } from './element-3d-kind.ts';
 export const TINY_D2 = 1e-30;
 
 /** Inverts a point in (c, r²), |d|² clamped below by TINY. Returns the factor k. */
-function invertPoint(pt: Pole3d, cx: number, cy: number, cz: number, r2: number): number {
+export function invertPoint(pt: Pole3d, cx: number, cy: number, cz: number, r2: number): number {
   const dx = pt.x - cx;
   const dy = pt.y - cy;
   const dz = pt.z - cz;

@@ -7,11 +7,15 @@ import type { Plane, Sphere } from '../../../nodes/geometry/space/sphere.ts';
 import { invertSphere, reflectInPlane } from '../../../nodes/geometry/space/sphere.ts';
 import { dist3, type Vec3 } from '../../../nodes/geometry/space/vec3.ts';
 
-/** All w(seed) for reduced words w in the inversions of length ≤ maxLength. */
-export function inversionOrbit(
-  mirrors: readonly Sphere[],
+/**
+ * All w(seed) for reduced words w of length ≤ maxLength in `mirrors` (involutions: no letter twice
+ * in a row), `image` giving the image of a ball under one of them (null: not a ball, dropped).
+ */
+function wordOrbit<M>(
+  mirrors: readonly M[],
   seeds: readonly Sphere[],
   maxLength: number,
+  image: (m: M, s: Sphere) => Sphere | null,
 ): Sphere[] {
   const all: Sphere[] = [...seeds];
   let level = seeds.map((s) => ({ s, last: -1 }));
@@ -20,8 +24,8 @@ export function inversionOrbit(
     for (const { s, last } of level) {
       mirrors.forEach((m, i) => {
         if (i === last) return;
-        const img = invertSphere(m, s);
-        if (img.kind === 'sphere') next.push({ s: img.sphere, last: i });
+        const img = image(m, s);
+        if (img) next.push({ s: img, last: i });
       });
     }
     all.push(...next.map((n) => n.s));
@@ -29,6 +33,13 @@ export function inversionOrbit(
   }
   return all;
 }
+
+/** All w(seed) for reduced words w in the inversions of length ≤ maxLength. */
+export const inversionOrbit = (mirrors: readonly Sphere[], seeds: readonly Sphere[], maxLength: number) =>
+  wordOrbit(mirrors, seeds, maxLength, (m, s) => {
+    const img = invertSphere(m, s);
+    return img.kind === 'sphere' ? img.sphere : null;
+  });
 
 /** Images of the seeds under G^k, |k| ≤ n, G = I_S2 ∘ I_S1 (a two-sphere generator). */
 export function generatorOrbit(s1: Sphere, s2: Sphere, seeds: readonly Sphere[], n: number): Sphere[] {
@@ -70,27 +81,11 @@ export function involutionImage(m: Involution, b: Sphere): Sphere | null {
 }
 
 /** All w(seed) for reduced words w of length ≤ maxLength in mixed involutions (sphere inversions, plane reflections). */
-export function involutionOrbit(
+export const involutionOrbit = (
   mirrors: readonly Involution[],
   seeds: readonly Sphere[],
   maxLength: number,
-): Sphere[] {
-  const all: Sphere[] = [...seeds];
-  let level = seeds.map((s) => ({ s, last: -1 }));
-  for (let k = 0; k < maxLength; k++) {
-    const next: { s: Sphere; last: number }[] = [];
-    for (const { s, last } of level) {
-      mirrors.forEach((m, i) => {
-        if (i === last) return;
-        const img = involutionImage(m, s);
-        if (img) next.push({ s: img, last: i });
-      });
-    }
-    all.push(...next.map((n) => n.s));
-    level = next;
-  }
-  return all;
-}
+) => wordOrbit(mirrors, seeds, maxLength, involutionImage);
 
 /**
  * Images of the seeds under G^k, |k| ≤ n, for a generator G that is a chain of inversions

@@ -242,7 +242,7 @@ describe('graph tools', () => {
     // The entry names the group by its title (the list names nodes as their headers do).
     await expect
       .poll(() => list.textContent())
-      .toMatch(/“Mirror pair” in group ‘Mirror pair’ → node ‘Circle 2’: /);
+      .toMatch(/Mirror pair in group ‘Mirror pair’ → node ‘Circle 2’: /);
     await page.getByTestId('diagnostics-count').click();
     await nodeEl(page, 'g').getByRole('button', { name: 'Open group' }).click();
     const inner = nodeEl(page, 'c').locator('.kf-badge--error');

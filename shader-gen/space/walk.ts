@@ -52,6 +52,8 @@ function seedsDistance(plan: TracePlan, x: number, y: number, z: number, nearest
 
 /** Scratch for the seed index where it is not wanted (the CPU tracer is single-threaded). */
 const unused = { seed: -1 };
+/** Scratch for the final point's nearest seed (one walk at a time: no allocation per march step). */
+const nearest = { seed: -1 };
 
 /** cover_j at (x, y, z): the content ball and the region where both are known, else the region. */
 function coverOf(plan: TracePlan, x: number, y: number, z: number, j: number): number {
@@ -213,7 +215,7 @@ export function walk3d(
   const escaped = plan.inversionRows
     ? walkInversions(plan.inversionRows, plan.scene.maxIterations, st)
     : walkElements(plan, st);
-  const nearest = { seed: -1 };
+  nearest.seed = -1;
   out.imageDistance = seedsDistance(plan, st.x, st.y, st.z, nearest) / st.s;
   out.de = pole
     ? composedBound(endDistance(plan, st.x, st.y, st.z), st.s, poleDistance(st, pole))

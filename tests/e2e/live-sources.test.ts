@@ -201,9 +201,23 @@ describe('video file', () => {
         const v = window.__kleinflow!.live.frameOf('video:cam')?.video;
         return v ? { time: v.currentTime, duration: v.duration, paused: v.paused } : null;
       });
-    // The video element may still be loading its metadata on a loaded machine: wait for its length.
-    await expect.poll(async () => (await videoAt())?.duration ?? 0, { timeout: 20_000 }).toBeGreaterThan(0.5);
-    const duration = (await videoAt())!.duration;
+    // The source reports no frame while the video seeks, loads its metadata or wraps round its loop
+    // (frameOf is null then), so each read waits for a moment it has one.
+    type VideoNow = NonNullable<Awaited<ReturnType<typeof videoAt>>>;
+    const videoWhen = async (ok: (v: VideoNow) => boolean): Promise<VideoNow> => {
+      const seen: { last: VideoNow | null } = { last: null };
+      await expect
+        .poll(
+          async () => {
+            seen.last = await videoAt();
+            return seen.last !== null && ok(seen.last);
+          },
+          { timeout: 20_000 },
+        )
+        .toBe(true);
+      return seen.last!;
+    };
+    const { duration } = await videoWhen((v) => v.duration > 0.5);
     expect(Number.isFinite(duration)).toBe(true);
     await page.evaluate(() => {
       const { store } = window.__kleinflow!;
@@ -211,7 +225,7 @@ describe('video file', () => {
       store.setTime(0.4);
     });
     await expect.poll(async () => (await videoAt())?.time ?? -1).toBeCloseTo(0.4, 1);
-    expect((await videoAt())!.paused).toBe(true);
+    expect((await videoWhen(() => true)).paused).toBe(true);
     await page.evaluate((t) => window.__kleinflow!.store.setTime(t), 0.3 + 2 * duration);
     await expect.poll(async () => (await videoAt())?.time ?? -1).toBeCloseTo(0.3, 1);
     expect((await stats(page)).compiles).toBe(before.compiles);

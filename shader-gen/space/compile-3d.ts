@@ -31,7 +31,7 @@ import { declaration, SceneValues, type UniformEntry } from '../glsl/values.ts';
 import { sampleOffsetGlsl } from '../glsl/view.glsl.ts';
 import { cameraRayGlsl } from './camera-3d.ts';
 import { backgroundGlsl, shadeGlsl, traceGlsl } from './glsl/trace.glsl.ts';
-import { emitWalk, placeWalk, walkFunctions } from './glsl/walk.glsl.ts';
+import { emitSceneGlobals, emitWalk, placeWalk, walkFunctions } from './glsl/walk.glsl.ts';
 import { prepareTrace3d } from './plan.ts';
 
 export type Variant3d = 'color' | 'probe';
@@ -82,7 +82,9 @@ function emitScene(
   const trace = traceGlsl(plan, v);
   const shade = variant === 'color' ? shadeGlsl(plan, v) : null;
   const background = variant === 'color' ? backgroundGlsl(scene, v) : null;
+  let loadsScene = false;
   const emitFunctions = () => {
+    loadsScene = emitSceneGlobals(out, placed);
     for (const code of collectFunctions([...walkFunctions(placed), cameraRayGlsl, ...extra]))
       out.push(code, '');
     emitWalk(out, placed, true);
@@ -107,7 +109,7 @@ function emitScene(
       '',
     );
   };
-  return { emitFunctions };
+  return { emitFunctions, loadsScene: () => loadsScene };
 }
 
 export function compile3d(scene: Scene3d, options: Compile3dOptions = {}): Compiled3d {
@@ -115,7 +117,7 @@ export function compile3d(scene: Scene3d, options: Compile3dOptions = {}): Compi
   const v = new SceneValues(options.bake ?? false);
   const out = new SourceBuilder();
   // Registers the scene's uniforms in v; the text comes after the header.
-  const { emitFunctions } = emitScene(out, scene, v, variant);
+  const { emitFunctions, loadsScene } = emitScene(out, scene, v, variant);
   const uniforms = v.entries();
   out.push('#version 300 es', ...HEADER, '', '// Frame uniforms (set by the runtime).');
   for (const u of FRAME_UNIFORMS_3D) out.push(`uniform ${u.type} ${u.name}; // ${u.doc}`);
@@ -130,6 +132,7 @@ export function compile3d(scene: Scene3d, options: Compile3dOptions = {}): Compi
   emitFunctions();
   out.push(
     'void main() {',
+    ...(loadsScene() ? ['  loadScene();'] : []),
     '  vec2 px = floor(gl_FragCoord.xy) + u_pixelOffset;',
     `  ${variant === 'color' ? 'outColor' : 'outProbe'} = renderSample(px + u_jitter, u_resolution, u_cameraPosition, u_cameraTarget, u_cameraFov, u_bgAlpha);`,
     '}',
@@ -148,11 +151,12 @@ export function shadertoySource3d(scene: Scene3d): string {
     '// Kleinflow: a 3D Iterated Inversion System, sphere traced; generated from a node graph. Paste into Shadertoy.',
     '',
   );
-  const { emitFunctions } = emitScene(out, scene, v, 'color', [toSrgbGlsl, sampleOffsetGlsl]);
+  const { emitFunctions, loadsScene } = emitScene(out, scene, v, 'color', [toSrgbGlsl, sampleOffsetGlsl]);
   emitFunctions();
   const { position, target, fovDeg } = scene.camera;
   out.push(
     'void mainImage(out vec4 fragColor, in vec2 fragCoord) {',
+    ...(loadsScene() ? ['  loadScene();'] : []),
     '  vec3 sum = vec3(0.0);',
     `  for (int k = 0; k < ${intLiteral(count)}; ++k) {`,
     `    sum += renderSample(floor(fragCoord) + sampleOffset(k), iResolution.xy, ${vecLiteral(position)}, ${vecLiteral(target)}, ${floatLiteral(fovDeg)}, 1.0).rgb;`,

@@ -6,7 +6,7 @@
  * `walkRecord` (with the pole; returns the safe DE) and `walkPlain` (the seed-image distance only,
  * for normals and occlusion). Both write info = (seed-image distance, depth, seed, factor) and the
  * final point. Element, content-ball and seed data live in `u_el` rows (or literals when baked),
- * copied into locals first (SwiftShader reloads uniform arrays read inside a loop).
+ * copied once per pixel into globals (`emitSceneGlobals`).
  */
 import type { Scene3d } from '../../../nodes/core/scene-3d.ts';
 import { GLSL_FAR } from '../../glsl/iis.glsl.ts';
@@ -86,11 +86,14 @@ function coverOf(placed: PlacedWalk, j: number): string {
   return hull ? `max(${region}, ballDistance(p, ${local(hull[0])}))` : region;
 }
 
-/** min(max(0, seeds), cover_j for j ≠ skip): ../walk.ts coverDistance. */
-function coverExpr(placed: PlacedWalk, skip: number): string {
+/**
+ * min(max(0, seeds), cover_j for j ≠ nearest): ../walk.ts coverDistance with the nearest element
+ * (the GLSL int `nearest`) left out by a select.
+ */
+function coverExceptNearest(placed: PlacedWalk): string {
   let expr = `max(0.0, ${seedsMin(placed)})`;
   placed.elements.forEach((_, j) => {
-    if (j !== skip) expr = `min(${expr}, ${coverOf(placed, j)})`;
+    expr = `min(${expr}, nearest == ${j} ? ${GLSL_FAR} : ${coverOf(placed, j)})`;
   });
   return expr;
 }
@@ -98,33 +101,51 @@ function coverExpr(placed: PlacedWalk, skip: number): string {
 /**
  * Statements setting `de` to ../walk.ts endDistance: min(seeds, covers) with the nearest cover
  * raised to its mirrored cover (the image q, L_j there, carried back) — one mirror, O(n) at run time.
+ * The nearest element's data is copied into `m<K>_*` as the minimum is found, so each mirror kind
+ * K has ONE block (not one per element: SIMD lanes whose nearest mirrors differ would run several),
+ * and that block leaves the nearest cover out with a select rather than a branch.
  */
 function endDistanceStatements(placed: PlacedWalk): string[] {
+  const kinds = [
+    ...new Set(placed.elements.flatMap(({ record }) => (record.glsl.mirror ? [record.kind] : []))),
+  ];
   const lines = [
     `  float de = max(0.0, ${seedsMin(placed)});`,
     `  float second = ${GLSL_FAR};`,
     '  int nearest = -1;',
+    '  int nearestKind = -1;',
   ];
-  placed.elements.forEach((_, j) => {
-    lines.push(
-      `  float c${j} = ${coverOf(placed, j)};`,
-      `  if (c${j} < de) { second = de; de = c${j}; nearest = ${j}; } else second = min(second, c${j});`,
-    );
+  kinds.forEach((kind, k) => {
+    const { record } = placed.elements.find((e) => e.record.kind === kind)!;
+    for (let r = 0; r < record.glsl.vec4s; r++) lines.push(`  vec4 m${k}_${r} = vec4(0.0);`);
+    lines.push(`  float m${k}_reach = ${GLSL_FAR};`);
   });
   placed.elements.forEach(({ record, rows, hull }, j) => {
-    const mirror = record.glsl.mirror;
-    if (!mirror) return;
-    const reach = hull ? `${local(hull[1])}.x` : GLSL_FAR;
+    const k = kinds.indexOf(record.kind);
+    const pick =
+      k < 0
+        ? ' nearestKind = -1;'
+        : ` nearestKind = ${k};${rows.map((r, i) => ` m${k}_${i} = ${local(r)};`).join('')} m${k}_reach = ${
+            hull ? `${local(hull[1])}.x` : GLSL_FAR
+          };`;
     lines.push(
-      `  if (nearest == ${j}) {`,
+      `  float c${j} = ${coverOf(placed, j)};`,
+      `  if (c${j} < de) { second = de; de = c${j}; nearest = ${j};${pick} } else second = min(second, c${j});`,
+    );
+  });
+  kinds.forEach((kind, k) => {
+    const { record } = placed.elements.find((e) => e.record.kind === kind)!;
+    const data = Array.from({ length: record.glsl.vec4s }, (_, r) => `m${k}_${r}`).join(', ');
+    lines.push(
+      `  if (nearestKind == ${k}) {`,
       '    vec3 q;',
       '    float far;',
-      `    float r2 = ${mirror.name}(p, ${rows.map(local).join(', ')}, q, far);`,
+      `    float r2 = ${record.glsl.mirror!.name}(p, ${data}, q, far);`,
       '    vec3 pm = p;',
       '    p = q;',
-      `    float lq = ${coverExpr(placed, j)};`,
+      `    float lq = ${coverExceptNearest(placed)};`,
       '    p = pm;',
-      `    de = max(de, r2 == 0.0 ? lq : r2 * (lq / (far * min(${reach}, far + lq))));`,
+      `    de = max(de, r2 == 0.0 ? lq : r2 * (lq / (far * min(m${k}_reach, far + lq))));`,
       '  }',
     );
   });
@@ -133,21 +154,38 @@ function endDistanceStatements(placed: PlacedWalk): string[] {
 }
 
 /**
+ * The scene's rows as globals, `el<N>` for `u_el[N]`, filled once per pixel by `loadScene()` (which
+ * main calls first). Read from the uniform array at every walk, they cost SwiftShader as much as
+ * the walk's arithmetic: the Fig. 11 probe frame took 2.4× a hand-written tracer's time with the
+ * rows copied into the walk's locals, 1.2× with them loaded once. Emits nothing when baked.
+ */
+export function emitSceneGlobals(out: SourceBuilder, placed: PlacedWalk): boolean {
+  const rows = [
+    ...placed.elements.flatMap((e) => [...e.rows, ...(e.hull ?? [])]),
+    ...placed.seeds.flatMap((s) => [...s]),
+  ].filter((r) => local(r) !== r);
+  const literalLimit = /^\d+$/.test(placed.maxIter);
+  if (rows.length === 0 && literalLimit) return false;
+  out.push(
+    ...rows.map((r) => `vec4 ${local(r)};`),
+    ...(literalLimit ? [] : ['int maxIter;']),
+    'void loadScene() {',
+    ...rows.map((r) => `  ${local(r)} = ${r};`),
+    ...(literalLimit ? [] : [`  maxIter = ${placed.maxIter};`]),
+    '}',
+    '',
+  );
+  return true;
+}
+
+/**
  * `float walk<Name>(vec3 start, out vec4 info, out vec3 fin)`. Recording: the walk also moves the
  * pole, and the function returns the safe bound.
  */
 export function emitWalk(out: SourceBuilder, placed: PlacedWalk, record: boolean): void {
-  const rows = [
-    ...placed.elements.flatMap((e) => [...e.rows, ...(e.hull ?? [])]),
-    ...placed.seeds.flatMap((s) => [...s]),
-  ];
-  const hoisted = rows.filter((r) => local(r) !== r).map((r) => `  vec4 ${local(r)} = ${r};`);
-  const literalLimit = /^\d+$/.test(placed.maxIter);
-  const limit = literalLimit ? placed.maxIter : 'maxIter';
+  const limit = /^\d+$/.test(placed.maxIter) ? placed.maxIter : 'maxIter';
   out.push(
     `float walk${record ? 'Record' : 'Plain'}(vec3 start, out vec4 info, out vec3 fin) {`,
-    ...hoisted,
-    ...(literalLimit ? [] : [`  int maxIter = ${placed.maxIter};`]),
     '  vec3 p = start;',
     '  float s = 1.0;',
     '  int depth = 0;',

@@ -7,7 +7,7 @@
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
 import { linearToSrgb, toLinear } from '../srgb.ts';
 import { sampleOffset } from '../view.ts';
-import { cameraBasis, pixelAngle, rayDirection } from './camera-3d.ts';
+import { type CameraBasis, cameraBasis, pixelAngle, rayDirection } from './camera-3d.ts';
 import { prepareTrace3d, type TracePlan } from './plan.ts';
 import { shadeHit } from './shade-3d.ts';
 import { type Hit3d, traceRay } from './trace-3d.ts';
@@ -29,8 +29,14 @@ export interface Raster3d {
 }
 
 /** Traces the ray through image point (px, py) (py from the bottom) of a width × height image. */
-export function tracePixel(plan: TracePlan, width: number, height: number, px: number, py: number) {
-  const basis = cameraBasis(plan.scene.camera);
+export function tracePixel(
+  plan: TracePlan,
+  width: number,
+  height: number,
+  px: number,
+  py: number,
+  basis: CameraBasis = cameraBasis(plan.scene.camera),
+) {
   const d = rayDirection(basis, width, height, px, py);
   const angle = pixelAngle(basis, height);
   return { o: basis.origin, d, angle, hit: traceRay(plan, basis.origin, d, angle) };
@@ -44,6 +50,7 @@ export function tracePixel(plan: TracePlan, width: number, height: number, px: n
  */
 export interface Render3dFrame {
   readonly plan: TracePlan;
+  readonly basis: CameraBasis;
   readonly width: number;
   readonly height: number;
   readonly samples: number;
@@ -59,6 +66,7 @@ export function render3dFrame(
 ): Render3dFrame {
   return {
     plan: prepareTrace3d(scene),
+    basis: cameraBasis(scene.camera),
     width,
     height,
     samples: Math.max(1, Math.round(options.samples ?? scene.samples)),
@@ -73,7 +81,7 @@ export function renderPixel3d(f: Render3dFrame, px: number, row: number, data: U
   const sum = [0, 0, 0, 0];
   for (let k = 0; k < f.samples; k++) {
     const [jx, jy] = sampleOffset(k);
-    const { o: origin, d, angle, hit } = tracePixel(f.plan, f.width, f.height, px + jx, py + jy);
+    const { o: origin, d, angle, hit } = tracePixel(f.plan, f.width, f.height, px + jx, py + jy, f.basis);
     const c = hit.hit ? shadeHit(f.plan, origin, d, angle, hit) : f.bg;
     const a = hit.hit ? 1 : f.bgAlpha;
     for (let i = 0; i < 3; i++) sum[i]! += c[i]! * a;
@@ -125,10 +133,11 @@ export function probeScene3d(
   jitter: readonly [number, number] = [0.5, 0.5],
 ): Float32Array {
   const plan = prepareTrace3d(scene);
+  const basis = cameraBasis(scene.camera);
   const out = new Float32Array(width * height * 4);
   for (let py = 0; py < height; py++) {
     for (let px = 0; px < width; px++) {
-      const h: Hit3d = tracePixel(plan, width, height, px + jitter[0], py + jitter[1]).hit;
+      const h: Hit3d = tracePixel(plan, width, height, px + jitter[0], py + jitter[1], basis).hit;
       out.set([h.hit ? 1 : 0, h.t, h.depth, h.seed], 4 * (py * width + px));
     }
   }

@@ -58,8 +58,8 @@ export function traceRay(plan: TracePlan, o: Vec3, d: Vec3, angle: number): Hit3
   let t = span[0];
   const w = walkResult();
   for (let i = 0; i < plan.scene.marchSteps; i++) {
-    walk3d(plan, o[0] + d[0] * t, o[1] + d[1] * t, o[2] + d[2] * t, true, w);
     const eps = hitTolerance(plan, angle, t);
+    walk3d(plan, o[0] + d[0] * t, o[1] + d[1] * t, o[2] + d[2] * t, true, w, eps);
     if (w.imageDistance < eps) {
       return {
         hit: true,

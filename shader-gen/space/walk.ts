@@ -14,7 +14,7 @@
  * distance min over seeds of seedDistance(final)/factor, on which the tracer decides a hit.
  */
 import { POLE_AT_INFINITY, type Pole3d, type Walk3dState } from './elements/element-3d-kind.ts';
-import { invertPoint } from './elements/invert.ts';
+import { TINY_D2 } from './elements/invert.ts';
 import { ballDistance } from './elements/sphere-inversion.ts';
 import type { TracePlan } from './plan.ts';
 import { seedDistance } from './seeds-3d.ts';
@@ -55,36 +55,37 @@ const unused = { seed: -1 };
 /** Scratch for the final point's nearest seed (one walk at a time: no allocation per march step). */
 const nearest = { seed: -1 };
 
+/**
+ * cover_j from packed (c, r, hull centre, hull radius) rows: max(0, d(x, B_j), d(x, H_j)) — or,
+ * when that is at least `cap`, possibly just `cap` (callers only take minima below cap): the ball
+ * test on squared distances then skips both square roots, as it does for most far elements.
+ */
+function packedCover(rows: Float64Array, x: number, y: number, z: number, j: number, cap: number): number {
+  const o = 8 * j;
+  const b2 = (x - rows[o]!) ** 2 + (y - rows[o + 1]!) ** 2 + (z - rows[o + 2]!) ** 2;
+  const bCap = cap + rows[o + 3]!;
+  if (b2 >= bCap * bCap) return cap; // d(x, B_j) ≥ cap (cap ≥ 0, so bCap > 0)
+  const h2 = (x - rows[o + 4]!) ** 2 + (y - rows[o + 5]!) ** 2 + (z - rows[o + 6]!) ** 2;
+  const hCap = cap + rows[o + 7]!;
+  if (h2 >= hCap * hCap) return cap;
+  return Math.max(0, Math.sqrt(b2) - rows[o + 3]!, Math.sqrt(h2) - rows[o + 7]!);
+}
+
 /** cover_j at (x, y, z): the content ball and the region where both are known, else the region. */
 function coverOf(plan: TracePlan, x: number, y: number, z: number, j: number): number {
-  const rows = plan.coverRows;
-  if (rows) {
-    // max(d(x, B_j), d(x, H_j)) from the packed (c, r, hull centre, hull radius) row.
-    const o = 8 * j;
-    const b =
-      Math.sqrt((x - rows[o]!) ** 2 + (y - rows[o + 1]!) ** 2 + (z - rows[o + 2]!) ** 2) - rows[o + 3]!;
-    const h =
-      Math.sqrt((x - rows[o + 4]!) ** 2 + (y - rows[o + 5]!) ** 2 + (z - rows[o + 6]!) ** 2) - rows[o + 7]!;
-    return Math.max(0, b, h);
-  }
+  if (plan.coverRows) return packedCover(plan.coverRows, x, y, z, j, Number.POSITIVE_INFINITY);
   const h = plan.hulls[j];
   const region = plan.records[j]!.cpu.regionDistance(plan.scene.elements[j]!, x, y, z);
   return h ? Math.max(region, ballDistance(x, y, z, h.center, h.radius)) : region;
 }
 
-/** min(seeds, cover_j for j ≠ skip): a lower bound of the distance to the orbit outside element `skip`. */
-function coverDistance(plan: TracePlan, x: number, y: number, z: number, skip: number): number {
-  let d = Math.max(0, seedsDistance(plan, x, y, z, unused));
-  for (let j = 0; j < plan.records.length; j++) if (j !== skip) d = Math.min(d, coverOf(plan, x, y, z, j));
-  return d;
-}
-
 /**
  * D at the final point: min(seeds, covers), the nearest cover raised to its mirrored cover (where
  * that is larger) — the others are not the minimum, so one mirror, O(n) in all, is what can help.
+ * `seeds` is min over seeds of seedDistance there (the walk has it already).
  */
-function endDistance(plan: TracePlan, x: number, y: number, z: number): number {
-  let best = Math.max(0, seedsDistance(plan, x, y, z, unused));
+function endDistance(plan: TracePlan, x: number, y: number, z: number, seeds: number): number {
+  let best = Math.max(0, seeds);
   let second = Number.POSITIVE_INFINITY;
   let nearest = -1;
   for (let j = 0; j < plan.records.length; j++) {
@@ -96,8 +97,12 @@ function endDistance(plan: TracePlan, x: number, y: number, z: number): number {
     } else second = Math.min(second, c);
   }
   if (nearest < 0) return best;
-  return Math.min(second, Math.max(best, mirroredCover(plan, x, y, z, nearest)));
+  return Math.min(second, Math.max(best, mirroredCover(plan, x, y, z, nearest, best)));
 }
+
+/** L at p* carried back through the mirror: r²·L/(F·min(M, F + L)); L itself for a reflection (r² = 0). */
+const carryBack = (l: number, r2: number, far: number, reach: number): number =>
+  r2 === 0 ? l : r2 * (l / (far * Math.min(reach, far + l)));
 
 /** Scratch state for the mirror image p* (the CPU tracer is single-threaded). */
 const mirrorImage: Walk3dState = { x: 0, y: 0, z: 0, s: 1, depth: 0, pole: null };
@@ -107,15 +112,76 @@ const mirrorImage: Walk3dState = { x: 0, y: 0, z: 0, s: 1, depth: 0, pole: null 
  * involution ι (docs/math-3d.md "§8 The tracer's distance bound"): orbit ∩ region_j =
  * ι(orbit \ region_j), so it is L_j at p* = ι(p) (the seeds and the other covers) carried back
  * through ι: r²·L/(F·min(M_j, F + L)), F = |p* − c| (unchanged for a reflection). 0 for the other kinds.
+ * That value grows with L and L only falls as covers are taken in, so once it is ≤ `floor` (the
+ * caller keeps the larger of the two) the rest of the covers cannot matter: it returns `floor` then.
  */
-function mirroredCover(plan: TracePlan, x: number, y: number, z: number, j: number): number {
+function mirroredCover(plan: TracePlan, x: number, y: number, z: number, j: number, floor: number): number {
   const cpu = plan.records[j]!.cpu;
   if (!cpu.mirror) return 0;
   const r2 = cpu.mirror(plan.scene.elements[j]!, x, y, z, mirrorImage);
-  const local = coverDistance(plan, mirrorImage.x, mirrorImage.y, mirrorImage.z, j);
-  if (r2 === 0) return local;
   const far = Math.sqrt(mirrorImage.s * r2); // |p* − c| = r²/|p − c|, the factor s being r²/|p − c|²
-  return r2 * (local / (far * Math.min(plan.reach[j]!, far + local)));
+  const reach = plan.reach[j]!;
+  const { x: qx, y: qy, z: qz } = mirrorImage;
+  let local = Math.max(0, seedsDistance(plan, qx, qy, qz, unused));
+  if (carryBack(local, r2, far, reach) <= floor) return floor;
+  for (let k = 0; k < plan.records.length; k++) {
+    if (k === j) continue;
+    local = Math.min(local, coverOf(plan, qx, qy, qz, k));
+    if (carryBack(local, r2, far, reach) <= floor) return floor;
+  }
+  return carryBack(local, r2, far, reach);
+}
+
+/**
+ * endDistance for scenes of sphere inversions only (packed `inversionRows` and `coverRows`): the
+ * same minimum, nearest cover and mirrored cover, with the mirror inversion written out and no
+ * per-element record lookups — the other half of the CPU tracer's hot path.
+ */
+function packedEndDistance(
+  plan: TracePlan,
+  inv: Float64Array,
+  covers: Float64Array,
+  x: number,
+  y: number,
+  z: number,
+  seeds: number,
+): number {
+  const n = inv.length >> 2;
+  let best = Math.max(0, seeds);
+  let second = Number.POSITIVE_INFINITY;
+  let nearest = -1;
+  for (let j = 0; j < n; j++) {
+    const c = packedCover(covers, x, y, z, j, second);
+    if (c < best) {
+      second = best;
+      best = c;
+      nearest = j;
+    } else if (c < second) second = c;
+  }
+  if (nearest < 0) return best;
+  // p* = the inversion of p in sphere `nearest` (k = r²/|p − c|²); F = |p* − c| = √(k·r²).
+  const o = 4 * nearest;
+  const cx = inv[o]!;
+  const cy = inv[o + 1]!;
+  const cz = inv[o + 2]!;
+  const r2 = inv[o + 3]!;
+  const dx = x - cx;
+  const dy = y - cy;
+  const dz = z - cz;
+  const k = r2 / Math.max(dx * dx + dy * dy + dz * dz, TINY_D2);
+  const qx = cx + dx * k;
+  const qy = cy + dy * k;
+  const qz = cz + dz * k;
+  const far = Math.sqrt(k * r2);
+  const reach = plan.reach[nearest]!;
+  let local = Math.max(0, seedsDistance(plan, qx, qy, qz, unused));
+  let mirrored = carryBack(local, r2, far, reach);
+  for (let j = 0; j < n && mirrored > best; j++) {
+    if (j === nearest) continue;
+    local = Math.min(local, packedCover(covers, qx, qy, qz, j, local));
+    mirrored = carryBack(local, r2, far, reach);
+  }
+  return Math.min(second, Math.max(best, mirrored));
 }
 
 /** |x_f − W(∞)| (about 10¹⁸ while W is an isometry: the bound is then D/s to float precision). */
@@ -131,27 +197,56 @@ export const composedBound = (d: number, s: number, r: number): number => d / (s
  * — the CPU tracer's hot loop for Figs. 11–12 and the sphairahedra. Returns `escaped`.
  */
 function walkInversions(rows: Float64Array, maxIterations: number, st: Walk3dState): boolean {
+  // The state lives in locals for the loop (V8 keeps them in registers; fields are reloaded and
+  // stored at every step) and goes back to `st` at the end.
   const pole = st.pole;
   const n = rows.length;
-  outer: while (st.depth < maxIterations) {
+  let { x, y, z, s, depth } = st;
+  let px = pole ? pole.x : 0;
+  let py = pole ? pole.y : 0;
+  let pz = pole ? pole.z : 0;
+  let escaped = false;
+  outer: while (depth < maxIterations) {
     for (let o = 0; o < n; o += 4) {
       const cx = rows[o]!;
       const cy = rows[o + 1]!;
       const cz = rows[o + 2]!;
       const r2 = rows[o + 3]!;
-      const dx = st.x - cx;
-      const dy = st.y - cy;
-      const dz = st.z - cz;
+      const dx = x - cx;
+      const dy = y - cy;
+      const dz = z - cz;
       const d2 = dx * dx + dy * dy + dz * dz;
       if (!(d2 < r2)) continue;
-      st.s *= invertPoint(st, cx, cy, cz, r2);
-      if (pole) invertPoint(pole, cx, cy, cz, r2);
-      st.depth += 1;
+      // invertPoint's formula, inline: k = r²/max(|d|², TINY), x ← c + k·d, s ← s·k.
+      const k = r2 / Math.max(d2, TINY_D2);
+      x = cx + dx * k;
+      y = cy + dy * k;
+      z = cz + dz * k;
+      s *= k;
+      const ex = px - cx;
+      const ey = py - cy;
+      const ez = pz - cz;
+      const kp = r2 / Math.max(ex * ex + ey * ey + ez * ez, TINY_D2);
+      px = cx + ex * kp;
+      py = cy + ey * kp;
+      pz = cz + ez * kp;
+      depth += 1;
       continue outer;
     }
-    return true;
+    escaped = true;
+    break;
   }
-  return false;
+  st.x = x;
+  st.y = y;
+  st.z = z;
+  st.s = s;
+  st.depth = depth;
+  if (pole) {
+    pole.x = px;
+    pole.y = py;
+    pole.z = pz;
+  }
+  return escaped;
 }
 
 /** The IIS over the scene's elements, each by its kind's step. Returns `escaped`. */
@@ -188,8 +283,9 @@ export const walkResult = (): Walk3dResult => ({
 });
 
 /**
- * Walks (x, y, z). `bound`: also form the safe distance bound `de` (else it is ∞). The result is
- * written to `out` (hot loops pass one they reuse, so a march allocates nothing) and returned.
+ * Walks (x, y, z). `bound`: also form the safe distance bound `de` (else it is ∞; also when the
+ * seed-image distance is below `hitBelow`, a hit for the tracer). The result is written to `out`
+ * (hot loops pass one they reuse, so a march allocates nothing) and returned.
  */
 export function walk3d(
   plan: TracePlan,
@@ -198,6 +294,7 @@ export function walk3d(
   z: number,
   bound: boolean,
   out: Walk3dResult = walkResult(),
+  hitBelow = Number.NEGATIVE_INFINITY,
 ): Walk3dResult {
   const st = scratch;
   st.x = x;
@@ -216,10 +313,19 @@ export function walk3d(
     ? walkInversions(plan.inversionRows, plan.scene.maxIterations, st)
     : walkElements(plan, st);
   nearest.seed = -1;
-  out.imageDistance = seedsDistance(plan, st.x, st.y, st.z, nearest) / st.s;
-  out.de = pole
-    ? composedBound(endDistance(plan, st.x, st.y, st.z), st.s, poleDistance(st, pole))
-    : Number.POSITIVE_INFINITY;
+  const seeds = seedsDistance(plan, st.x, st.y, st.z, nearest);
+  out.imageDistance = seeds / st.s;
+  // A hit needs no bound: the tracer stops there.
+  out.de =
+    pole && !(out.imageDistance < hitBelow)
+      ? composedBound(
+          plan.inversionRows && plan.coverRows
+            ? packedEndDistance(plan, plan.inversionRows, plan.coverRows, st.x, st.y, st.z, seeds)
+            : endDistance(plan, st.x, st.y, st.z, seeds),
+          st.s,
+          poleDistance(st, pole),
+        )
+      : Number.POSITIVE_INFINITY;
   out.depth = st.depth;
   out.seed = nearest.seed;
   out.x = st.x;

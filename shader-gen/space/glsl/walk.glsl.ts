@@ -87,7 +87,7 @@ function coverOf(placed: PlacedWalk, j: number): string {
 }
 
 /**
- * min(max(0, seeds), cover_j for j ≠ nearest): ../walk.ts coverDistance with the nearest element
+ * min(max(0, seeds), cover_j for j ≠ nearest): ../walk.ts mirroredCover's L with the nearest element
  * (the GLSL int `nearest`) left out by a select.
  */
 function coverExceptNearest(placed: PlacedWalk): string {

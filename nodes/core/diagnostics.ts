@@ -169,6 +169,11 @@ export const DIAGNOSTICS = table({
     text: (port: string, inner: string) =>
       `the group's port "${port}" names inner node "${inner}", which is not in the group: the port is not wired`,
   },
+  formula: {
+    code: 'KF327',
+    severity: 'error',
+    text: (message: string, at: string) => `formula, ${at}: ${message}`,
+  },
   drawnInstead: { code: 'KF315', severity: 'info', text: (detail: string) => detail },
   cameraInside: {
     code: 'KF316',

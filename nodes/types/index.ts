@@ -7,6 +7,7 @@ import { circleCenterPointNode } from './circle-center-point.ts';
 import { colorNode, cosinePaletteNode } from './colour.ts';
 import { compoundLoxodromic3dNode } from './compound-loxodromic-3d.ts';
 import { compoundParabolic3dNode } from './compound-parabolic-3d.ts';
+import { formulaNode } from './formula.ts';
 import { hyperbolicPolygonNode } from './hyperbolic-polygon.ts';
 import { imageNode } from './image.ts';
 import { intersectCirclesNode, intersectLineCircleNode, intersectLinesNode } from './intersections.ts';
@@ -64,6 +65,7 @@ export const NODE_TYPES = [
   reflectPointNode,
   angleNode,
   distanceNode,
+  formulaNode,
   inversionNode,
   reflectionNode,
   mobiusNode,

@@ -2,10 +2,12 @@
  * Help: the one-minute quick starts (2D and 3D), the guided walkthrough, a few examples to open,
  * what the socket colours mean, and the keyboard shortcuts.
  */
+
 import { PORT_TYPE_INFO, PORT_TYPES } from '../../../nodes/core/ports.ts';
 import type { Example } from '../examples.ts';
 import { SHORTCUTS } from '../shortcuts.ts';
 import { useModalDialog } from '../use-modal-dialog.ts';
+import { FormulaHelp } from './FormulaHelp.tsx';
 import { QUICK_START, QUICK_START_3D, type QuickStep } from './quick-start.ts';
 
 /** Examples worth opening first, by id (a missing one is skipped). */
@@ -95,6 +97,8 @@ export function HelpDialog({ examples, onExample, onWalkthrough, onClose }: Prop
           ))}
         </ul>
       </section>
+
+      <FormulaHelp />
 
       <section aria-labelledby="kf-help-keys">
         <h3 id="kf-help-keys">Keyboard shortcuts</h3>

@@ -8,7 +8,7 @@ import type { Circle, Line, Vec2 } from '../../../nodes/core/values.ts';
 import type { OnEdit } from './edit.ts';
 import { isVec2, isVec3 } from './inline-editor.ts';
 import { NumberField } from './NumberField.tsx';
-import { ColorField, EnumField, ToggleField } from './simple-fields.tsx';
+import { ColorField, EnumField, TextField, ToggleField } from './simple-fields.tsx';
 
 const AXES = ['x', 'y', 'z'] as const;
 
@@ -189,15 +189,12 @@ export function ParamWidget({ name, spec, value, onEdit }: ParamProps) {
       );
     case 'string':
       return (
-        <label className="kf-field nodrag" title={spec.doc}>
-          <span className="kf-field__label">{label}</span>
-          <input
-            className="kf-input"
-            aria-label={label}
-            defaultValue={typeof value === 'string' ? value : spec.default}
-            onBlur={(e) => onEdit(e.target.value, true)}
-          />
-        </label>
+        <TextField
+          label={label}
+          title={spec.doc}
+          value={typeof value === 'string' ? value : spec.default}
+          onEdit={onEdit}
+        />
       );
   }
 }

@@ -96,3 +96,46 @@ export function ColorField({
     </label>
   );
 }
+
+/**
+ * A one-line text (a formula, a file name): typed freely, committed as one undo step on Enter or
+ * when focus leaves, Esc puts the saved text back; an undo or another tab's edit shows at once.
+ */
+export function TextField({
+  label,
+  value,
+  onEdit,
+  title,
+}: {
+  label: string;
+  value: string;
+  onEdit: OnEdit<string>;
+  title?: string;
+}) {
+  const input = useRef<HTMLInputElement>(null);
+  useEffect(() => {
+    if (input.current && document.activeElement !== input.current) input.current.value = value;
+  }, [value]);
+  const commit = (el: HTMLInputElement) => {
+    if (el.value !== value) onEdit(el.value, true);
+  };
+  return (
+    <label className="kf-field kf-field--text nodrag" title={title}>
+      <span className="kf-field__label">{label}</span>
+      <input
+        ref={input}
+        className="kf-input"
+        aria-label={label}
+        spellCheck={false}
+        defaultValue={value}
+        onBlur={(e) => commit(e.currentTarget)}
+        onKeyDown={(e) => {
+          if (e.key === 'Enter') commit(e.currentTarget);
+          else if (e.key === 'Escape') e.currentTarget.value = value;
+          else return;
+          e.stopPropagation();
+        }}
+      />
+    </label>
+  );
+}

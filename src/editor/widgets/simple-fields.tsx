@@ -2,17 +2,15 @@
 import { useEffect, useRef } from 'react';
 import type { OnEdit } from './edit.ts';
 
-export function ToggleField({
-  label,
-  value,
-  onEdit,
-  title,
-}: {
+/** What every simple field takes: its label, value, edit callback and tooltip. */
+interface FieldProps<T> {
   label: string;
-  value: boolean;
-  onEdit: OnEdit<boolean>;
+  value: T;
+  onEdit: OnEdit<T>;
   title?: string;
-}) {
+}
+
+export function ToggleField({ label, value, onEdit, title }: FieldProps<boolean>) {
   return (
     <label className="kf-field kf-toggle nodrag" title={title}>
       <span className="kf-field__label">{label}</span>
@@ -33,13 +31,7 @@ export function EnumField({
   options,
   onEdit,
   title,
-}: {
-  label: string;
-  value: string;
-  options: readonly string[];
-  onEdit: OnEdit<string>;
-  title?: string;
-}) {
+}: FieldProps<string> & { options: readonly string[] }) {
   return (
     <label className="kf-field nodrag" title={title}>
       <span className="kf-field__label">{label}</span>
@@ -60,17 +52,7 @@ export function EnumField({
 }
 
 /** Live preview while the picker is open (input events), one commit when it closes (change event). */
-export function ColorField({
-  label,
-  value,
-  onEdit,
-  title,
-}: {
-  label: string;
-  value: string;
-  onEdit: OnEdit<string>;
-  title?: string;
-}) {
+export function ColorField({ label, value, onEdit, title }: FieldProps<string>) {
   const ref = useRef<HTMLInputElement>(null);
   const onEditRef = useRef(onEdit);
   onEditRef.current = onEdit;
@@ -101,17 +83,7 @@ export function ColorField({
  * A one-line text (a formula, a file name): typed freely, committed as one undo step on Enter or
  * when focus leaves, Esc puts the saved text back; an undo or another tab's edit shows at once.
  */
-export function TextField({
-  label,
-  value,
-  onEdit,
-  title,
-}: {
-  label: string;
-  value: string;
-  onEdit: OnEdit<string>;
-  title?: string;
-}) {
+export function TextField({ label, value, onEdit, title }: FieldProps<string>) {
   const input = useRef<HTMLInputElement>(null);
   useEffect(() => {
     if (input.current && document.activeElement !== input.current) input.current.value = value;

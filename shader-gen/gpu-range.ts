@@ -31,7 +31,9 @@ export function firstOutOfGpuRange(scene: Scene, max: number = LIMITS.gpuMaxMagn
     const value =
       seed.kind === 'disk'
         ? firstBeyond([seed.c, seed.r], max)
-        : firstBeyond([seed.center, seed.width, seed.height, seed.rotation], max);
+        : seed.kind === 'shape'
+          ? firstBeyond([seed.numbers, seed.points], max)
+          : firstBeyond([seed.center, seed.width, seed.height, seed.rotation], max);
     if (value !== undefined) return { nodeId: seed.nodeId, value };
   }
   const coloring = tile.coloring;

@@ -70,7 +70,8 @@ export type Measure = (typeof MEASURES)[number];
 /**
  * An orbit seed (docs/math.md "orbit seeds", the paper's Figs. 2 and 11): tested at the start of every
  * step, so every image of the seed under the group is painted. A disk paints its colour; an image
- * rectangle (centre, width × height world units, turned by `rotation` radians) paints its picture.
+ * rectangle (centre, width × height world units, turned by `rotation` radians) paints its picture; a
+ * shape paints its colour where its formula is negative.
  */
 export type SeedSpec =
   | {
@@ -88,6 +89,16 @@ export type SeedSpec =
       readonly height: number;
       readonly rotation: number;
       readonly image: ImageRef;
+    }
+  | {
+      /** The region where a formula of z = (x, y) is negative (docs/formula.md "Seed shapes"). */
+      readonly kind: 'shape';
+      readonly nodeId: string;
+      readonly formula: string;
+      /** The formula's numbers a, b, c and the time t, and its points p = (x, y), q = (z, w). */
+      readonly numbers: readonly [number, number, number, number];
+      readonly points: readonly [number, number, number, number];
+      readonly color: Color;
     };
 export type SeedKind = SeedSpec['kind'];
 

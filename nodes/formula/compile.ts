@@ -177,7 +177,16 @@ export function compileFormula(f: Formula, names: Readonly<Record<string, Formul
         const forms = fn.signatures.map((s) => usage(f.fn, s)).join(' or ');
         throw new FormulaError(`${f.fn} takes ${forms}, not (${args.map((a) => a.type).join(', ')})`, f.span);
       }
-      return { type: signature.result, run: (env) => signature.run(args.map((a) => a.run(env))) };
+      // One argument buffer per call site, filled at each run (no array per call: a seed shape
+      // runs at every IIS step of every pixel). Safe: a call site never runs inside its own arguments.
+      const buffer: FormulaValue[] = new Array(args.length);
+      return {
+        type: signature.result,
+        run: (env) => {
+          for (let i = 0; i < args.length; i++) buffer[i] = args[i]!.run(env);
+          return signature.run(buffer);
+        },
+      };
     }
   }
 }

@@ -7,49 +7,10 @@
 
 import { defineNode } from '../core/define-node.ts';
 import { diag } from '../core/diagnostics.ts';
-import { type CompiledFormula, compileFormula } from '../formula/compile.ts';
-import type { FormulaType } from '../formula/functions.ts';
-import { FormulaError, MAX_FORMULA_LENGTH, parseFormula } from '../formula/parse.ts';
+import { checkedFormula, formulaPlace } from '../formula/checked.ts';
+import { FORMULA_NAMES } from '../formula/names.ts';
+import { FormulaError, MAX_FORMULA_LENGTH } from '../formula/parse.ts';
 import { fail, fmt, pointInput } from './shared.ts';
-
-/** The names a formula may use besides the constants, and their types. */
-export const FORMULA_NAMES: Readonly<Record<string, FormulaType>> = {
-  a: 'number',
-  b: 'number',
-  c: 'number',
-  p: 'point',
-  q: 'point',
-  t: 'number',
-};
-
-/** Checked formulas by text: a drag re-evaluates the node every frame with the same text. */
-const cache = new Map<string, CompiledFormula | FormulaError>();
-const CACHE_SIZE = 256;
-
-function compiled(text: string): CompiledFormula | FormulaError {
-  const hit = cache.get(text);
-  if (hit) return hit;
-  let result: CompiledFormula | FormulaError;
-  try {
-    result = compileFormula(parseFormula(text), FORMULA_NAMES);
-  } catch (e) {
-    if (!(e instanceof FormulaError)) throw e;
-    result = e;
-  }
-  if (cache.size >= CACHE_SIZE) cache.delete(cache.keys().next().value!);
-  cache.set(text, result);
-  return result;
-}
-
-/** Where in the text: “characters 5–7 (“foo”)”, or “at the end”. */
-export function formulaPlace(text: string, [start, end]: readonly [number, number]): string {
-  if (start >= text.length) return 'at the end';
-  const piece = text.slice(start, Math.max(end, start + 1));
-  const shown = piece.length > 24 ? `${piece.slice(0, 23)}…` : piece;
-  return end - start > 1
-    ? `characters ${start + 1}–${end} (“${shown}”)`
-    : `character ${start + 1} (“${shown}”)`;
-}
 
 export const formulaNode = defineNode({
   type: 'formula',
@@ -92,7 +53,7 @@ export const formulaNode = defineNode({
   },
   evaluate: ({ nodeId, inputs, params, time }) => {
     const text = params.formula;
-    const formula = compiled(text);
+    const formula = checkedFormula(text, FORMULA_NAMES);
     if (formula instanceof FormulaError)
       return {
         diagnostics: [diag('formula', { nodeId }, formula.message, formulaPlace(text, formula.span))],

@@ -37,6 +37,7 @@ import { renderNode } from './render.ts';
 import { render3dNode } from './render-3d.ts';
 import { rotationNode } from './rotation.ts';
 import { seedBoxNode } from './seed-box.ts';
+import { seedShapeNode } from './seed-shape.ts';
 import { seedSphereNode } from './seed-sphere.ts';
 import { seedDiskNode, seedImageNode } from './seeds.ts';
 import { sphairahedronNode } from './sphairahedron.ts';
@@ -87,6 +88,7 @@ export const NODE_TYPES = [
   tileNode,
   seedDiskNode,
   seedImageNode,
+  seedShapeNode,
   imageNode,
   colorNode,
   cosinePaletteNode,

@@ -42,7 +42,7 @@ export function colourValue(v: SceneValues, name: string, c: Color, space: Colou
 export function shadesWithoutBlending(tile: TileSpec): boolean {
   const mode = tile.coloring.mode;
   const seeds = tile.seeds ?? [];
-  if (seeds.length > 0 && (tile.seedFade || seeds.some((s) => s.kind !== 'disk'))) return false;
+  if (seeds.length > 0 && (tile.seedFade || seeds.some((s) => s.kind === 'image'))) return false;
   if (tile.seedsOnly) return true;
   return tile.edgeWidth <= 0 && mode !== 'limit-set' && mode !== 'image' && mode !== 'measure';
 }

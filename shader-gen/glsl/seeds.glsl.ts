@@ -6,8 +6,11 @@
  */
 import { pictureKey } from '../../nodes/core/live-source.ts';
 import type { SeedSpec } from '../../nodes/core/scene.ts';
+import { checkedFormula } from '../../nodes/formula/checked.ts';
+import { SHAPE_NAMES } from '../../nodes/formula/names.ts';
 import { rotationPair } from '../placement.ts';
 import { type ColourSpace, colourValue } from './colour.glsl.ts';
+import { formulaGlsl } from './formula.glsl.ts';
 import { placeUvGlsl } from './placement.glsl.ts';
 import { type GlslFunction, glslFunction } from './snippet.ts';
 import type { SceneValues } from './values.ts';
@@ -20,6 +23,36 @@ bool seedDiskInside(vec2 p, vec4 d) {
   return (p.x - d.x) * (p.x - d.x) + (p.y - d.y) * (p.y - d.y) < d.z * d.z;
 }`,
 );
+
+/**
+ * `float seedShape<i>(vec2 z, vec4 k, vec4 pts)`: the shape seed's formula (docs/formula.md "Seed
+ * shapes"), negative inside, with a, b, c, t in k and p, q in pts — uniforms, so moving a wired
+ * point or number recompiles nothing; only a new formula text does.
+ */
+function seedShapeGlsl(seed: Extract<SeedSpec, { kind: 'shape' }>, i: number): GlslFunction {
+  const f = checkedFormula(seed.formula, SHAPE_NAMES);
+  // The node refuses a formula that does not check, so a scene never holds one; hold nothing then.
+  const body =
+    'run' in f
+      ? formulaGlsl(f.tree, {
+          a: 'k.x',
+          b: 'k.y',
+          c: 'k.z',
+          t: 'k.w',
+          p: 'pts.xy',
+          q: 'pts.zw',
+          z: 'z',
+          x: 'z.x',
+          y: 'z.y',
+        })
+      : { expr: '1.0', deps: [] };
+  const name = `seedShape${i}`;
+  return glslFunction(
+    name,
+    `float ${name}(vec2 z, vec4 k, vec4 pts) {\n  return ${body.expr};\n}`,
+    body.deps,
+  );
+}
 
 /** One argument of seedAt after p: its type and the expression the caller passes (uniform or literal). */
 export interface SeedArg {
@@ -52,12 +85,23 @@ export function seedsGlsl(
     return `a${args.length - 1}`;
   };
   const at: string[] = [];
+  const shapes: GlslFunction[] = [];
   const colour = ['vec3 seedColour(int seed, vec2 p) {'];
   seeds.forEach((seed, i) => {
     if (seed.kind === 'disk') {
       const d = v.vec(`u_seed${i}`, [seed.c[0], seed.c[1], seed.r, 0]);
       const c = colourValue(v, `u_seedColor${i}`, seed.color, space);
       at.push(`  if (seedDiskInside(p, ${param('vec4', d)})) return ${i};`);
+      colour.push(`  if (seed == ${i}) return ${c};`);
+    } else if (seed.kind === 'shape') {
+      const shape = seedShapeGlsl(seed, i);
+      shapes.push(shape);
+      const numbers = v.vec(`u_seed${i}`, seed.numbers);
+      const points = v.vec(`u_seedPts${i}`, seed.points);
+      const c = colourValue(v, `u_seedColor${i}`, seed.color, space);
+      at.push(
+        `  if (${shape.name}(p, ${param('vec4', numbers)}, ${param('vec4', points)}) < 0.0) return ${i};`,
+      );
       colour.push(`  if (seed == ${i}) return ${c};`);
     } else {
       const rect = v.vec(`u_seed${i}`, [seed.center[0], seed.center[1], seed.width, seed.height]);
@@ -76,7 +120,7 @@ export function seedsGlsl(
   at.push('  return -1;', '}');
   colour.push('  return vec3(0.0);', '}');
   return {
-    seedAt: glslFunction('seedAt', at.join('\n'), [seedDiskInsideGlsl, placeUvGlsl]),
+    seedAt: glslFunction('seedAt', at.join('\n'), [seedDiskInsideGlsl, placeUvGlsl, ...shapes]),
     seedAtArgs: args,
     seedColour: glslFunction('seedColour', colour.join('\n'), [placeUvGlsl]),
   };

@@ -248,10 +248,14 @@ export function vectorPicture(scene: Scene, options: VectorOptions): VectorPictu
   const seeds: VectorSeed[] = [];
   for (const s of scene.tile.seeds ?? []) {
     if (s.kind !== 'disk') {
+      const what =
+        s.kind === 'image'
+          ? 'a seed picture: its images are pictures'
+          : 'a seed shape: its images are curved regions';
       return {
         ok: false,
         nodeId: s.nodeId,
-        message: `node "${s.nodeId}" is a seed picture: its images are pictures, not circles and lines, so the picture has no vector form (export a PNG instead)`,
+        message: `node "${s.nodeId}" is ${what}, not circles and lines, so the picture has no vector form (export a PNG instead)`,
       };
     }
     const images = orbit([{ kind: 'circle', c: [...s.c], r: s.r }], generators, bounds, cap);

@@ -2,7 +2,7 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { CONSTANTS, FUNCTIONS } from '../../nodes/formula/functions.ts';
-import { FORMULA_NAMES } from '../../nodes/types/formula.ts';
+import { FORMULA_NAMES } from '../../nodes/formula/names.ts';
 
 const text = readFileSync(new URL('../../docs/formula.md', import.meta.url), 'utf8');
 const section = (title: string) => text.split(`## ${title}\n`)[1]!.split('\n## ')[0]!;

@@ -19,7 +19,7 @@ import { type PreparedElements, prepare, runIis } from '../../shader-gen/interpr
 import { type MarginResult, pathMargin } from '../../shader-gen/path-margin.ts';
 import { placeUv } from '../../shader-gen/placement.ts';
 import { sampleColour, sampleContext } from '../../shader-gen/raster.ts';
-import { seedAt } from '../../shader-gen/seeds.ts';
+import { seedAt, seedShapeValue } from '../../shader-gen/seeds.ts';
 import { linearToSrgb } from '../../shader-gen/srgb.ts';
 import type { ProbeImage } from './gpu-probe.ts';
 
@@ -178,6 +178,14 @@ const level = (linear: number) => Math.round(linearToSrgb(Math.min(1, Math.max(0
 /** Distance from (x, y) to the edge of a seed (disk rim or picture rectangle), in world units. */
 function seedEdgeDistance(seed: SeedSpec, x: number, y: number): number {
   if (seed.kind === 'disk') return Math.abs(Math.hypot(x - seed.c[0], y - seed.c[1]) - seed.r);
+  if (seed.kind === 'shape') {
+    // First order: |f| / |∇f| (central differences) estimates the distance to the zero set f = 0.
+    const f = (px: number, py: number) => seedShapeValue(seed, px, py);
+    const h = 1e-6 * Math.max(1, Math.abs(x), Math.abs(y));
+    const gx = (f(x + h, y) - f(x - h, y)) / (2 * h);
+    const gy = (f(x, y + h) - f(x, y - h)) / (2 * h);
+    return Math.abs(f(x, y)) / Math.max(Math.hypot(gx, gy), 1e-12);
+  }
   const [u, v] = placeUv(
     seed.center[0],
     seed.center[1],

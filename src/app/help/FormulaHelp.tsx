@@ -3,7 +3,7 @@
  * tables (nodes/formula/functions.ts, the node's names), so it cannot drift from what is accepted.
  */
 import { CONSTANTS, FUNCTIONS } from '../../../nodes/formula/functions.ts';
-import { FORMULA_NAMES } from '../../../nodes/types/formula.ts';
+import { FORMULA_NAMES } from '../../../nodes/formula/names.ts';
 
 const forms = (name: string) =>
   FUNCTIONS[name]!.signatures.map((s) => `${name}(${s.args.join(', ')}${s.repeats ? ', …' : ''})`).join(

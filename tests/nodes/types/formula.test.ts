@@ -55,7 +55,10 @@ describe('formula node', () => {
 
   it('an input wired to the output the formula leaves empty says why', () => {
     const ev = evaluateGraph(
-      doc([node('f', 'formula', { formula: 'a * 2' }), node('c', 'circle')], [edge('e1', 'f.point', 'c.center')]),
+      doc(
+        [node('f', 'formula', { formula: 'a * 2' }), node('c', 'circle')],
+        [edge('e1', 'f.point', 'c.center')],
+      ),
       registry,
     );
     expect(ev.nodes.get('c')!.diagnostics.length).toBeGreaterThan(0);

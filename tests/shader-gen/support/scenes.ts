@@ -212,6 +212,25 @@ export const SEED_PICTURE: SeedSpec = {
   image: BUILTIN_PICTURE,
 };
 
+/** Seed shapes (formulas): a flower round p, and a turned box joined with a disk written with ** and pow. */
+export const SEED_FLOWER: SeedSpec = {
+  kind: 'shape',
+  nodeId: 'sf',
+  formula: 'length(z - p) - a * (1 + c * cos(b * atan2(y - p.y, x - p.x)))',
+  numbers: [0.32, 5, 0.35, 0],
+  points: [1.5, -0.8, 0, 0],
+  color: [1, 0.5, 0.7],
+};
+export const SEED_BOX_SHAPE: SeedSpec = {
+  kind: 'shape',
+  nodeId: 'sb',
+  formula:
+    'min(max(abs(rotate(z - q, t).x) - a, abs(rotate(z - q, t).y) - b), (x - q.x - 0.3) ** 2 + pow(y - q.y, 2) - c * c)',
+  numbers: [0.3, 0.15, 0.12, 0.4],
+  points: [0, 0, -1.4, 1.3],
+  color: [0.3, 0.9, 0.6],
+};
+
 /** Named hand-made scenes covering every element kind, colouring mode, edges and clip. */
 export const HAND_MADE_SCENES: Readonly<Record<string, Scene>> = {
   'triangle-333-parity-clip': makeScene(TRIANGLE_333, {
@@ -243,6 +262,11 @@ export const HAND_MADE_SCENES: Readonly<Record<string, Scene>> = {
     maxIterations: 60,
     scale: 5,
     tile: { fill: [0, 0, 0], seeds: [SEED_DISK, SEED_PICTURE] },
+  }),
+  'schottky-seed-shapes': makeScene(SCHOTTKY, {
+    maxIterations: 60,
+    scale: 5,
+    tile: { seeds: [SEED_FLOWER, SEED_BOX_SHAPE] },
   }),
   'schottky-seeds-only': makeScene(SCHOTTKY, {
     maxIterations: 60,

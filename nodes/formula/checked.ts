@@ -1,0 +1,46 @@
+/**
+ * Parsed and type-checked formulas by text, for every place that runs one (the Formula node, the
+ * seed shape node, the CPU renderer): a drag re-evaluates the graph every frame with the same
+ * text, and a render tests a seed shape at every pixel. A mistake is cached as its FormulaError.
+ */
+import { type CompiledFormula, compileFormula } from './compile.ts';
+import type { FormulaType } from './functions.ts';
+import { type Formula, FormulaError, parseFormula } from './parse.ts';
+
+export interface CheckedFormula extends CompiledFormula {
+  readonly tree: Formula;
+}
+
+const cache = new Map<string, CheckedFormula | FormulaError>();
+const CACHE_SIZE = 256;
+
+/** The checked formula for `text` with these names, or the FormulaError that says what is wrong. */
+export function checkedFormula(
+  text: string,
+  names: Readonly<Record<string, FormulaType>>,
+): CheckedFormula | FormulaError {
+  const key = `${Object.entries(names).join(';')}\n${text}`;
+  const hit = cache.get(key);
+  if (hit) return hit;
+  let result: CheckedFormula | FormulaError;
+  try {
+    const tree = parseFormula(text);
+    result = { tree, ...compileFormula(tree, names) };
+  } catch (e) {
+    if (!(e instanceof FormulaError)) throw e;
+    result = e;
+  }
+  if (cache.size >= CACHE_SIZE) cache.delete(cache.keys().next().value!);
+  cache.set(key, result);
+  return result;
+}
+
+/** Where in the text: “characters 5–7 (“foo”)”, “character 3 (“+”)”, or “at the end”. */
+export function formulaPlace(text: string, [start, end]: readonly [number, number]): string {
+  if (start >= text.length) return 'at the end';
+  const piece = text.slice(start, Math.max(end, start + 1));
+  const shown = piece.length > 24 ? `${piece.slice(0, 23)}…` : piece;
+  return end - start > 1
+    ? `characters ${start + 1}–${end} (“${shown}”)`
+    : `character ${start + 1} (“${shown}”)`;
+}

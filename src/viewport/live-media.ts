@@ -19,6 +19,8 @@ interface Source {
   frames: number;
   /** The video file's name (video sources), or '' for the camera. */
   name: string;
+  /** A 'seeked' listener will follow the clock again (set while a seek runs). */
+  followAfterSeek?: boolean;
   /** What the camera stream or object URL holds, released on stop. */
   release(): void;
 }
@@ -158,9 +160,25 @@ export class LiveMedia {
       return;
     }
     if (!v.paused) v.pause();
+    // While a seek runs, the next is set when it ends (a time set meanwhile would be lost: the
+    // timeline may not tick again).
+    if (v.seeking) {
+      if (!s.followAfterSeek) {
+        s.followAfterSeek = true;
+        v.addEventListener(
+          'seeked',
+          () => {
+            s.followAfterSeek = false;
+            this.follow(s);
+          },
+          { once: true },
+        );
+      }
+      return;
+    }
     const t = timelinePosition(this.clock, v.duration);
     // A seek per timeline tick, but not for differences below a frame (seeking is not free).
-    if (t !== null && Math.abs(v.currentTime - t) > 1 / 120 && !v.seeking) v.currentTime = t;
+    if (t !== null && Math.abs(v.currentTime - t) > 1 / 120) v.currentTime = t;
   }
 
   private put(

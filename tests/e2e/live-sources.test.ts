@@ -224,10 +224,10 @@ describe('video file', () => {
       store.dispatch({ type: 'add-node', node: { id: 'T', type: 'time', position: [0, 500], params: {} } });
       store.setTime(0.4);
     });
-    await expect.poll(async () => (await videoAt())?.time ?? -1).toBeCloseTo(0.4, 1);
+    await expect.poll(async () => (await videoAt())?.time ?? -1, { timeout: 20_000 }).toBeCloseTo(0.4, 1);
     expect((await videoWhen(() => true)).paused).toBe(true);
     await page.evaluate((t) => window.__kleinflow!.store.setTime(t), 0.3 + 2 * duration);
-    await expect.poll(async () => (await videoAt())?.time ?? -1).toBeCloseTo(0.3, 1);
+    await expect.poll(async () => (await videoAt())?.time ?? -1, { timeout: 20_000 }).toBeCloseTo(0.3, 1);
     expect((await stats(page)).compiles).toBe(before.compiles);
 
     // Export animation plays the video in the file: frame i shows it at t = i / fps (the graph
@@ -250,7 +250,7 @@ describe('video file', () => {
     expect(countGifFrames(gif)).toBe(4);
     const distinct = new Set(gifFrameBlocks(gif).map((b) => Buffer.from(b).toString('base64')));
     expect(distinct.size).toBe(4);
-    await expect.poll(async () => (await videoAt())?.time ?? -1).toBeCloseTo(0.3, 1);
+    await expect.poll(async () => (await videoAt())?.time ?? -1, { timeout: 20_000 }).toBeCloseTo(0.3, 1);
     await context.close();
   }, 180_000);
 });

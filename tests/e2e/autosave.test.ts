@@ -55,7 +55,10 @@ describe('autosave in a full storage', () => {
     expect(text).not.toMatch(/kept under/);
     expect(text).toMatch(/autosave is paused/);
     expect(await page.evaluate(() => localStorage.getItem('kleinflow.autosave.unreadable'))).toBeNull();
-    expect(await page.getByTestId('save-state').textContent()).toMatch(/paused/);
+    // The status may show "Saving…" for a moment first (the tab's own copy): wait for the state.
+    await expect
+      .poll(() => page.getByTestId('save-state').textContent(), { timeout: 20_000 })
+      .toMatch(/paused/);
 
     // An edit, then time for its autosave: the only copy of the broken session is untouched.
     await page.evaluate(() =>
@@ -71,7 +74,7 @@ describe('autosave in a full storage', () => {
     await page.getByRole('button', { name: 'Discard it' }).click();
     await expect.poll(async () => (await stored()).length).toBeLessThan(BROKEN_CHARS);
     expect((await stored()).start).toMatch(/^\{"format":"kleinflow"/);
-    expect(await page.getByTestId('save-state').textContent()).toMatch(/Saved/);
+    await expect.poll(() => page.getByTestId('save-state').textContent()).toMatch(/Saved/);
     // The banner no longer says autosave is paused: it says what happened.
     expect(await page.getByRole('alert').filter({ hasText: 'could not be restored' }).count()).toBe(0);
     await expect

@@ -63,12 +63,26 @@ export async function setField(page: Page, nodeId: string, label: string, value:
 export const edgeCount = (page: Page) => page.locator('.react-flow__edge').count();
 export const nodeCount = (page: Page) => page.locator('.react-flow__node').count();
 
-/** Waits until the status line says the picture has all its samples. */
+/**
+ * Waits until the status line says the picture has all its samples. When it never does, the error
+ * says what the status line and the viewport's counters showed (a stalled render is then told
+ * apart from a slow one).
+ */
 export async function waitRendered(page: Page, timeout = 60_000) {
-  await page
-    .getByTestId('render-progress')
-    .filter({ hasText: /^Rendered/ })
-    .waitFor({ timeout });
+  try {
+    await page
+      .getByTestId('render-progress')
+      .filter({ hasText: /^Rendered/ })
+      .waitFor({ timeout });
+  } catch (e) {
+    const seen = await page
+      .evaluate(() => ({
+        status: document.querySelector('[data-testid="render-progress"]')?.textContent ?? null,
+        stats: window.__kleinflow?.viewport ? JSON.stringify(window.__kleinflow.viewport.stats) : null,
+      }))
+      .catch(() => null);
+    throw new Error(`not rendered within ${timeout} ms; status ${JSON.stringify(seen)}`, { cause: e });
+  }
 }
 
 export interface PixelStats {

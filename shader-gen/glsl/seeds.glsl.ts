@@ -29,23 +29,23 @@ bool seedDiskInside(vec2 p, vec4 d) {
  * shapes"), negative inside, with a, b, c, t in k and p, q in pts — uniforms, so moving a wired
  * point or number recompiles nothing; only a new formula text does.
  */
+/** The shape formula's names in `seedShape<i>(vec2 z, vec4 k, vec4 pts)`. */
+export const SHAPE_GLSL_NAMES: Readonly<Record<string, string>> = {
+  a: 'k.x',
+  b: 'k.y',
+  c: 'k.z',
+  t: 'k.w',
+  p: 'pts.xy',
+  q: 'pts.zw',
+  z: 'z',
+  x: 'z.x',
+  y: 'z.y',
+};
+
 function seedShapeGlsl(seed: Extract<SeedSpec, { kind: 'shape' }>, i: number): GlslFunction {
   const f = checkedFormula(seed.formula, SHAPE_NAMES);
   // The node refuses a formula that does not check, so a scene never holds one; hold nothing then.
-  const body =
-    'run' in f
-      ? formulaGlsl(f.tree, {
-          a: 'k.x',
-          b: 'k.y',
-          c: 'k.z',
-          t: 'k.w',
-          p: 'pts.xy',
-          q: 'pts.zw',
-          z: 'z',
-          x: 'z.x',
-          y: 'z.y',
-        })
-      : { expr: '1.0', deps: [] };
+  const body = 'run' in f ? formulaGlsl(f.tree, SHAPE_GLSL_NAMES) : { expr: '1.0', deps: [] };
   const name = `seedShape${i}`;
   return glslFunction(
     name,

@@ -9,20 +9,12 @@ import { checkedFormula } from '../../../nodes/formula/checked.ts';
 import { FUNCTIONS } from '../../../nodes/formula/functions.ts';
 import { SHAPE_NAMES } from '../../../nodes/formula/names.ts';
 import { formulaGlsl } from '../../../shader-gen/glsl/formula.glsl.ts';
+import { SHAPE_GLSL_NAMES } from '../../../shader-gen/glsl/seeds.glsl.ts';
 import { collectFunctions } from '../../../shader-gen/glsl/snippet.ts';
 import { validateShaders } from '../support/glslang.ts';
 
-const NAMES = {
-  a: 'k.x',
-  b: 'k.y',
-  c: 'k.z',
-  t: 'k.w',
-  p: 'pts.xy',
-  q: 'pts.zw',
-  z: 'z',
-  x: 'z.x',
-  y: 'z.y',
-};
+/** The names as a seed shape's GLSL function has them (k = a, b, c, t; pts = p, q). */
+const NAMES = SHAPE_GLSL_NAMES;
 
 /** A number formula using every function once, and every operator. */
 const EVERY = [

@@ -14,7 +14,7 @@
  * distance min over seeds of seedDistance(final)/factor, on which the tracer decides a hit.
  */
 import { POLE_AT_INFINITY, type Pole3d, type Walk3dState } from './elements/element-3d-kind.ts';
-import { TINY_D2 } from './elements/invert.ts';
+import { invertPoint, TINY_D2 } from './elements/invert.ts';
 import { ballDistance } from './elements/sphere-inversion.ts';
 import type { TracePlan } from './plan.ts';
 import { seedDistance } from './seeds-3d.ts';
@@ -161,17 +161,12 @@ function packedEndDistance(
   if (nearest < 0) return best;
   // p* = the inversion of p in sphere `nearest` (k = r²/|p − c|²); F = |p* − c| = √(k·r²).
   const o = 4 * nearest;
-  const cx = inv[o]!;
-  const cy = inv[o + 1]!;
-  const cz = inv[o + 2]!;
   const r2 = inv[o + 3]!;
-  const dx = x - cx;
-  const dy = y - cy;
-  const dz = z - cz;
-  const k = r2 / Math.max(dx * dx + dy * dy + dz * dz, TINY_D2);
-  const qx = cx + dx * k;
-  const qy = cy + dy * k;
-  const qz = cz + dz * k;
+  mirrorImage.x = x;
+  mirrorImage.y = y;
+  mirrorImage.z = z;
+  const k = invertPoint(mirrorImage, inv[o]!, inv[o + 1]!, inv[o + 2]!, r2);
+  const { x: qx, y: qy, z: qz } = mirrorImage;
   const far = Math.sqrt(k * r2);
   const reach = plan.reach[nearest]!;
   let local = Math.max(0, seedsDistance(plan, qx, qy, qz, unused));

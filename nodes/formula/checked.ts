@@ -3,7 +3,8 @@
  * seed shape node, the CPU renderer): a drag re-evaluates the graph every frame with the same
  * text, and a render tests a seed shape at every pixel. A mistake is cached as its FormulaError.
  */
-import { type CompiledFormula, compileFormula } from './compile.ts';
+import { type Diagnostic, diag } from '../core/diagnostics.ts';
+import { type CompiledFormula, compileFormula, typeName } from './compile.ts';
 import type { FormulaType } from './functions.ts';
 import { type Formula, FormulaError, parseFormula } from './parse.ts';
 
@@ -43,4 +44,24 @@ export function formulaPlace(text: string, [start, end]: readonly [number, numbe
   return end - start > 1
     ? `characters ${start + 1}–${end} (“${shown}”)`
     : `character ${start + 1} (“${shown}”)`;
+}
+
+/**
+ * A node's formula, checked with `names`, or what the node says when it cannot use it: KF327
+ * naming the characters of a formula that does not check, or KF327 for one whose type is not
+ * among `accepts` (`needs` says what the node takes).
+ */
+export function formulaFor(
+  nodeId: string,
+  text: string,
+  names: Readonly<Record<string, FormulaType>>,
+  accepts: readonly FormulaType[],
+  needs: string,
+): { readonly formula: CheckedFormula } | { readonly problem: Diagnostic } {
+  const f = checkedFormula(text, names);
+  if (f instanceof FormulaError)
+    return { problem: diag('formula', { nodeId }, f.message, formulaPlace(text, f.span)) };
+  if (!accepts.includes(f.type))
+    return { problem: diag('formula', { nodeId }, `${needs}, not ${typeName(f.type)}`, 'as a whole') };
+  return { formula: f };
 }

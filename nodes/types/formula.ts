@@ -6,10 +6,9 @@
  */
 
 import { defineNode } from '../core/define-node.ts';
-import { diag } from '../core/diagnostics.ts';
-import { checkedFormula, formulaPlace } from '../formula/checked.ts';
+import { formulaFor } from '../formula/checked.ts';
 import { FORMULA_NAMES } from '../formula/names.ts';
-import { FormulaError, MAX_FORMULA_LENGTH } from '../formula/parse.ts';
+import { MAX_FORMULA_LENGTH } from '../formula/parse.ts';
 import { fail, fmt, pointInput } from './shared.ts';
 
 export const formulaNode = defineNode({
@@ -53,11 +52,15 @@ export const formulaNode = defineNode({
   },
   evaluate: ({ nodeId, inputs, params, time }) => {
     const text = params.formula;
-    const formula = checkedFormula(text, FORMULA_NAMES);
-    if (formula instanceof FormulaError)
-      return {
-        diagnostics: [diag('formula', { nodeId }, formula.message, formulaPlace(text, formula.span))],
-      };
+    const checked = formulaFor(
+      nodeId,
+      text,
+      FORMULA_NAMES,
+      ['number', 'point'],
+      'the formula gives a number or a point (c ? x : y chooses one by a comparison)',
+    );
+    if ('problem' in checked) return { diagnostics: [checked.problem] };
+    const { formula } = checked;
     const value = formula.run({ ...inputs, t: time });
     if (formula.type === 'number') {
       const n = value as number;
@@ -65,21 +68,9 @@ export const formulaNode = defineNode({
         return fail(`the formula gives ${n} here (a division by 0, or sqrt/log of a negative?)`);
       return { outputs: { value: n }, readout: fmt(n) };
     }
-    if (formula.type === 'point') {
-      const [x, y] = value as readonly [number, number];
-      if (!Number.isFinite(x) || !Number.isFinite(y))
-        return fail(`the formula gives the point (${x}, ${y}) here (a division by 0?)`);
-      return { outputs: { point: [x, y] }, readout: `(${fmt(x)}, ${fmt(y)})` };
-    }
-    return {
-      diagnostics: [
-        diag(
-          'formula',
-          { nodeId },
-          'the formula is a comparison: give c ? x : y a number or point to choose',
-          'as a whole',
-        ),
-      ],
-    };
+    const [x, y] = value as readonly [number, number];
+    if (!Number.isFinite(x) || !Number.isFinite(y))
+      return fail(`the formula gives the point (${x}, ${y}) here (a division by 0?)`);
+    return { outputs: { point: [x, y] }, readout: `(${fmt(x)}, ${fmt(y)})` };
   },
 });

@@ -7,9 +7,8 @@
  */
 
 import { defineNode } from '../core/define-node.ts';
-import { diag } from '../core/diagnostics.ts';
 import type { SeedSpec } from '../core/tile-spec.ts';
-import { checkedFormula, formulaPlace } from '../formula/checked.ts';
+import { formulaFor } from '../formula/checked.ts';
 import { SHAPE_NAMES } from '../formula/names.ts';
 import { MAX_FORMULA_LENGTH } from '../formula/parse.ts';
 import { pointHandles } from './construction-shared.ts';
@@ -47,20 +46,14 @@ export const seedShapeNode = defineNode({
   },
   evaluate: ({ nodeId, inputs, params, time }) => {
     const text = params.formula;
-    const f = checkedFormula(text, SHAPE_NAMES);
-    if (!('run' in f))
-      return { diagnostics: [diag('formula', { nodeId }, f.message, formulaPlace(text, f.span))] };
-    if (f.type !== 'number')
-      return {
-        diagnostics: [
-          diag(
-            'formula',
-            { nodeId },
-            `a seed shape's formula gives a number (negative inside), not ${f.type === 'point' ? 'a point' : 'a comparison'}`,
-            'as a whole',
-          ),
-        ],
-      };
+    const checked = formulaFor(
+      nodeId,
+      text,
+      SHAPE_NAMES,
+      ['number'],
+      "a seed shape's formula gives a number (negative inside)",
+    );
+    if ('problem' in checked) return { diagnostics: [checked.problem] };
     const seed: SeedSpec = {
       kind: 'shape',
       nodeId,

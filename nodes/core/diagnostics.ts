@@ -109,7 +109,7 @@ export const DIAGNOSTICS = table({
   upstreamMissing: {
     code: 'KF302',
     severity: 'error',
-    text: (port: string, node: string) => `input "${port}" has no value because node "${node}" failed`,
+    text: (port: string, node: string) => `input "${port}" has no value because ${node} failed`,
   },
   degenerate: { code: 'KF303', severity: 'error', text: (detail: string) => detail },
   notATiling: { code: 'KF304', severity: 'warning', text: (detail: string) => detail },
@@ -132,7 +132,7 @@ export const DIAGNOSTICS = table({
     code: 'KF308',
     severity: 'info',
     text: (port: string, node: string, output: string) =>
-      `input "${port}" gets no value: node "${node}" has no "${output}" output in its current set-up`,
+      `input "${port}" gets no value: ${node} has no "${output}" output in its current set-up`,
   },
   nodeVersion: { code: 'KF309', severity: 'error', text: (detail: string) => detail },
   pictureTooBig: {
@@ -155,7 +155,7 @@ export const DIAGNOSTICS = table({
     code: 'KF313',
     severity: 'info',
     text: (port: string, node: string) =>
-      `input "${port}" is muted: node "${node}" is muted (or fed by a muted node) and passes nothing on`,
+      `input "${port}" is muted: ${node} is muted (or fed by a muted node) and passes nothing on`,
   },
   outsideMaskitSlice: {
     code: 'KF325',

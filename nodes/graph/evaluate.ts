@@ -17,6 +17,7 @@ import { documentPath, type Flattened, flattenGroups, hasGroups } from './flatte
 import { nodeVersion, nodeVersionProblem } from './migrate.ts';
 import { mirrorDiagnostics } from './mirror-check.ts';
 import { mutedOutputs } from './mute.ts';
+import { nodeName } from './node-names.ts';
 import { checkNumber, resolveParams } from './params.ts';
 
 export interface NodeEvaluation {
@@ -217,20 +218,28 @@ function evaluateNode(
       if (value === undefined && source?.muted) {
         // A muted source that passes nothing here: a quiet note, and the node itself goes quiet
         // unless the input may be empty — no error cascade (docs/architecture.md "Muted nodes").
-        diagnostics.push(diag('inputMuted', { nodeId, port }, port, edge.from.node));
+        diagnostics.push(
+          diag('inputMuted', { nodeId, port }, port, nodeName(analysis.nodes, edge.from.node)),
+        );
         if (!many && !spec.optional) silenced = true;
         continue;
       }
       if (value === undefined && source?.outputs) {
         // The source worked but leaves this output empty in its current set-up (a kaleidoscope's
         // disk when it is not hyperbolic): an optional input is then simply unconnected.
-        const d = diag('noPortValue', { nodeId, port }, port, edge.from.node, edge.from.port);
+        const d = diag(
+          'noPortValue',
+          { nodeId, port },
+          port,
+          nodeName(analysis.nodes, edge.from.node),
+          edge.from.port,
+        );
         diagnostics.push(spec.optional ? d : { ...d, severity: 'error' });
         continue;
       }
       if (value === undefined) {
         // One broken source of a many-input is a warning (the others still draw); otherwise an error.
-        const d = diag('upstreamMissing', { nodeId, port }, port, edge.from.node);
+        const d = diag('upstreamMissing', { nodeId, port }, port, nodeName(analysis.nodes, edge.from.node));
         diagnostics.push(many ? { ...d, severity: 'warning' } : d);
         continue;
       }

@@ -52,15 +52,17 @@ describe('evaluateGraph', () => {
     expect(only(ev.diagnostics, 'KF301')).toEqual([
       expect.objectContaining({ nodeId: 'cB', port: 'radius' }),
     ]);
-    // the single-input dependant: an error naming the failed node
+    // the single-input dependant: an error naming the failed node by the title people see (its
+    // place among the nodes titled alike), never by its internal id
     const inv = only(ev.diagnostics, 'KF302').find((d) => d.nodeId === 'iB')!;
     expect(inv).toMatchObject({ severity: 'error', port: 'circle' });
-    expect(inv.message).toContain('"cB"');
+    expect(inv.message).toBe('input "circle" has no value because “Circle” (2nd) failed');
     expect(ev.nodes.get('iB')?.outputs).toBeUndefined();
     // the render: a warning naming its broken source
     const render = only(ev.diagnostics, 'KF302').find((d) => d.nodeId === 'out')!;
     expect(render).toMatchObject({ severity: 'warning', port: 'elements' });
-    expect(render.message).toContain('"iB"');
+    expect(render.message).toContain('“Circle inversion” (2nd)');
+    expect(render.message).not.toContain('iB');
     expect(ev.scene.renderNodeId).toBe('out');
   });
 

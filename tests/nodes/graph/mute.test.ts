@@ -53,7 +53,7 @@ describe('muted nodes', () => {
     expect(i.diagnostics).toEqual([
       expect.objectContaining({ code: 'KF313', severity: 'info', port: 'circle', nodeId: 'i' }),
     ]);
-    expect(i.diagnostics[0].message).toContain('"c" is muted');
+    expect(i.diagnostics[0].message).toContain('“Circle” is muted');
     // The render takes many elements: the quiet inversion simply adds none; nothing is an error.
     expect(ev.diagnostics.filter((d) => d.severity !== 'info')).toEqual([]);
     expect(ev.scene.elements).toEqual([]);

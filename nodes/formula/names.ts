@@ -4,6 +4,7 @@
  * z = (x, y).
  */
 import type { FormulaType } from './functions.ts';
+import { type Formula, parseFormula } from './parse.ts';
 
 export const FORMULA_NAMES: Readonly<Record<string, FormulaType>> = {
   a: 'number',
@@ -20,3 +21,35 @@ export const SHAPE_NAMES: Readonly<Record<string, FormulaType>> = {
   x: 'number',
   y: 'number',
 };
+
+/** The node types whose `formula` param is a formula of FORMULA_NAMES (and the time t among them). */
+export const FORMULA_NODE_TYPES: ReadonlySet<string> = new Set(['formula', 'seed-shape']);
+
+/** Whether `text` reads the name `name` anywhere (false for a formula that does not parse). */
+export function formulaUses(text: string, name: string): boolean {
+  let tree: Formula;
+  try {
+    tree = parseFormula(text);
+  } catch {
+    return false;
+  }
+  const uses = (f: Formula): boolean => {
+    switch (f.kind) {
+      case 'number':
+        return false;
+      case 'name':
+        return f.name === name;
+      case 'unary':
+        return uses(f.arg);
+      case 'binary':
+        return uses(f.left) || uses(f.right);
+      case 'call':
+        return f.args.some(uses);
+      case 'field':
+        return uses(f.of);
+      case 'choose':
+        return uses(f.test) || uses(f.yes) || uses(f.no);
+    }
+  };
+  return uses(tree);
+}

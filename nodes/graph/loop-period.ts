@@ -8,8 +8,10 @@
  * after the least common multiple of those periods. The LCM exists when the periods are rational
  * multiples of each other: with P_i = a_i/b_i in lowest terms, lcm = lcm(a_i) / gcd(b_i).
  * A Time output wired anywhere else (a rotation angle, a sine's period…) grows without bound, so
- * the graph has no loop; that is reported with the node to blame, never guessed.
+ * the graph has no loop; that is reported with the node to blame, never guessed. So is a formula
+ * (Formula, Seed shape) that reads the time t itself: t grows without bound there too.
  */
+import { FORMULA_NODE_TYPES, formulaUses } from '../formula/names.ts';
 import type { GraphDoc } from './document.ts';
 import type { Evaluation } from './evaluate.ts';
 
@@ -108,6 +110,18 @@ export function loopPeriod(doc: GraphDoc, evaluation: Evaluation): LoopPeriod {
         e.to.port === port &&
         (driven.has(e.from.node) || types.get(e.from.node) === TIME_TYPE),
     );
+  const clock = doc.nodes.find(
+    (n) =>
+      FORMULA_NODE_TYPES.has(n.type) &&
+      typeof n.params?.formula === 'string' &&
+      formulaUses(n.params.formula, 't'),
+  );
+  if (clock)
+    return {
+      kind: 'none',
+      nodeId: clock.id,
+      reason: `${label(doc, clock.id)} reads the time t in its formula, so the animation never repeats: wire a Sine wave or Circular motion into its a, b, c, p or q instead`,
+    };
   const sources: CycleSource[] = [];
   for (const e of doc.edges) {
     if (types.get(e.from.node) !== TIME_TYPE) continue;

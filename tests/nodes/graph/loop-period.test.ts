@@ -99,6 +99,17 @@ describe('loopPeriod', () => {
     expect(period(wiredPeriod)).toMatchObject({ kind: 'none', nodeId: 'a' });
   });
 
+  it('a formula that reads the time t never repeats (it is not static), and the node is named', () => {
+    const shape = node('s', 'seed-shape', { formula: 'length(z) - 0.2 * (1 + 0.3 * sin(t))' });
+    const p = period(doc([shape]));
+    expect(p).toMatchObject({ kind: 'none', nodeId: 's' });
+    expect(p.kind === 'none' && p.reason).toMatch(/reads the time t in its formula.*Sine wave/);
+    // t as a letter inside another name, or a formula without t, is no clock
+    expect(period(doc([node('f', 'formula', { formula: 'sqrt(a) + tan(b)' })]))).toEqual({ kind: 'static' });
+    // a formula that does not parse is the node's own error, not a clock
+    expect(period(doc([node('f', 'formula', { formula: 't +' })]))).toEqual({ kind: 'static' });
+  });
+
   it('the animated example loops every 10 s', () => {
     const text = readFileSync('examples/animated-breathing-loxodromic.kleinflow.json', 'utf8');
     const g = docSchema.parse(JSON.parse(text));

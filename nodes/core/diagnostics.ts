@@ -174,6 +174,18 @@ export const DIAGNOSTICS = table({
     severity: 'error',
     text: (message: string, at: string) => `formula, ${at}: ${message}`,
   },
+  formulaSlope: {
+    code: 'KF330',
+    severity: 'warning',
+    text: (slope: string, divisor: string) =>
+      `the formula is not a distance bound: its slope reaches ${slope} (sampled in the bounding ball, where a distance's is at most 1), so the tracer divides it by ${divisor}; thin parts may still be missed — a formula that is a true distance draws faster and safer`,
+  },
+  formulaUndefined: {
+    code: 'KF331',
+    severity: 'warning',
+    text: (at: string) =>
+      `the formula is not a number at some points of the bounding ball, e.g. ${at} from the centre: the tracer cannot tell how far the surface is there and draws those points as surface`,
+  },
   drawnInstead: { code: 'KF315', severity: 'info', text: (detail: string) => detail },
   cameraInside: {
     code: 'KF316',

@@ -36,6 +36,22 @@ export type Seed3d = (
       readonly halfSize: Vec3;
       readonly color: Color;
     }
+  /**
+   * A solid written as a formula of x, y, z (relative to `center`) and a, b, c, negative inside,
+   * kept within the ball of `radius` about the centre (docs/formula.md "3D seed shapes"). Its
+   * distance is f / `slope` (slope ≥ 1: 1 for a true distance, more where the sampled check found
+   * the formula steeper), cut to the ball.
+   */
+  | {
+      readonly kind: 'formula';
+      readonly nodeId: string;
+      readonly center: Vec3;
+      readonly radius: number;
+      readonly formula: string;
+      readonly numbers: readonly [number, number, number];
+      readonly slope: number;
+      readonly color: Color;
+    }
 ) & {
   /**
    * Set when only the seed's part in the fundamental domain is meant and it reaches into mirror

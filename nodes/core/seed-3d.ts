@@ -2,16 +2,20 @@
  * Facts about a 3D orbit seed that the nodes, the CLI and tests share: its signed distance and the
  * points that stand for it when checking where it lies (docs/math-3d.md §7).
  */
+import { solidSeedDistance } from '../formula/solid.ts';
 import { boxSignedDistance } from '../geometry/space/box.ts';
 import { type Iis3dResult, iis3d } from '../geometry/space/iis-3d.ts';
 import { add3, dist3, scale3 } from '../geometry/space/vec3.ts';
 import type { Scene3d, Seed3d, Vec3 } from './scene-3d.ts';
 
-/** Signed distance from x to the seed's surface (negative inside): |x − c| − r for a sphere, a box's own. */
+/**
+ * Signed distance from x to the seed's surface (negative inside): |x − c| − r for a sphere, a box's
+ * own; a solid's formula bound (nodes/formula/solid.ts, a lower bound of the distance outside).
+ */
 export function seedSignedDistance(seed: Seed3d, x: Vec3): number {
-  return seed.kind === 'sphere'
-    ? dist3(x, seed.sphere.center) - seed.sphere.radius
-    : boxSignedDistance(seed.center, seed.halfSize, x);
+  if (seed.kind === 'sphere') return dist3(x, seed.sphere.center) - seed.sphere.radius;
+  if (seed.kind === 'formula') return solidSeedDistance(seed, x[0], x[1], x[2]);
+  return boxSignedDistance(seed.center, seed.halfSize, x);
 }
 
 const AXES: readonly Vec3[] = [
@@ -25,11 +29,12 @@ const AXES: readonly Vec3[] = [
 
 /**
  * Points that stand for a seed: its centre and its extreme points (a sphere's six axis points, a
- * box's eight corners). A seed lies in the fundamental domain when no element moves any of them.
+ * box's eight corners, a solid's bounding ball's six). A seed lies in the fundamental domain when no element moves any of them.
  */
 export function seedSamplePoints(seed: Seed3d): Vec3[] {
-  if (seed.kind === 'sphere') {
-    const { center, radius } = seed.sphere;
+  if (seed.kind !== 'box') {
+    // A solid stands for its bounding ball: what the ball's points avoid, the solid avoids.
+    const { center, radius } = seed.kind === 'sphere' ? seed.sphere : seed;
     return [center, ...AXES.map((a) => add3(center, scale3(a, radius)))];
   }
   const corners: Vec3[] = [];

@@ -22,8 +22,18 @@ export const SHAPE_NAMES: Readonly<Record<string, FormulaType>> = {
   y: 'number',
 };
 
+/** A 3D seed shape's names: the point tested, x, y, z (relative to the seed's centre), and a, b, c. */
+export const SOLID_NAMES: Readonly<Record<string, FormulaType>> = {
+  a: 'number',
+  b: 'number',
+  c: 'number',
+  x: 'number',
+  y: 'number',
+  z: 'number',
+};
+
 /** The node types whose `formula` param is a formula of FORMULA_NAMES (and the time t among them). */
-export const FORMULA_NODE_TYPES: ReadonlySet<string> = new Set(['formula', 'seed-shape']);
+export const FORMULA_NODE_TYPES: ReadonlySet<string> = new Set(['formula', 'seed-shape', 'seed-solid']);
 
 /** Whether `text` reads the name `name` anywhere (false for a formula that does not parse). */
 export function formulaUses(text: string, name: string): boolean {

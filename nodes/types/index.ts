@@ -38,6 +38,7 @@ import { render3dNode } from './render-3d.ts';
 import { rotationNode } from './rotation.ts';
 import { seedBoxNode } from './seed-box.ts';
 import { seedShapeNode } from './seed-shape.ts';
+import { seedSolidNode } from './seed-solid.ts';
 import { seedSphereNode } from './seed-sphere.ts';
 import { seedDiskNode, seedImageNode } from './seeds.ts';
 import { sphairahedronNode } from './sphairahedron.ts';
@@ -107,6 +108,7 @@ export const NODE_TYPES = [
   compoundParabolic3dNode,
   seedSphereNode,
   seedBoxNode,
+  seedSolidNode,
   sphairahedronNode,
   render3dNode,
 ] as const;

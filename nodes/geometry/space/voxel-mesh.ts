@@ -42,14 +42,12 @@ export const solidAt = (scene: MeshScene, p: Vec3): boolean => {
 export function orbitBounds(scene: MeshScene): Bounds3 | null {
   if (scene.seeds.length === 0) return null;
   if (scene.elements.some((e) => e.kind !== 'sphere-inversion')) return null;
-  const boxes: [Vec3, Vec3][] = scene.seeds.map((s) =>
-    s.kind === 'sphere'
-      ? [
-          sub3(s.sphere.center, [s.sphere.radius, s.sphere.radius, s.sphere.radius]),
-          add3(s.sphere.center, [s.sphere.radius, s.sphere.radius, s.sphere.radius]),
-        ]
-      : [sub3(s.center, s.halfSize), add3(s.center, s.halfSize)],
-  );
+  const boxes: [Vec3, Vec3][] = scene.seeds.map((s) => {
+    if (s.kind === 'box') return [sub3(s.center, s.halfSize), add3(s.center, s.halfSize)];
+    // A solid lies within its bounding ball.
+    const { center, radius: r } = s.kind === 'sphere' ? s.sphere : s;
+    return [sub3(center, [r, r, r]), add3(center, [r, r, r])];
+  });
   for (const e of scene.elements)
     if (e.kind === 'sphere-inversion') {
       const r = e.sphere.radius;

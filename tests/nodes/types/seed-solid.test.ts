@@ -11,7 +11,13 @@ describe('seed-solid node', () => {
   it('gives a torus by default: a true distance, used as it is (slope 1, no warning)', () => {
     const r = checkDefaults('seed-solid');
     const seed = solidOf(r);
-    expect(seed).toMatchObject({ kind: 'formula', center: [0, 0, 0], radius: 0.5, numbers: [0.32, 0.1, 0], slope: 1 });
+    expect(seed).toMatchObject({
+      kind: 'formula',
+      center: [0, 0, 0],
+      radius: 0.5,
+      numbers: [0.32, 0.1, 0],
+      slope: 1,
+    });
     expect(r.diagnostics).toEqual([]);
     expect(seedDistance(seed, 0.32, 0, 0)).toBeCloseTo(-0.1, 12); // in the tube
     expect(seedDistance(seed, 0, 0, 0)).toBeCloseTo(0.22, 12); // the hole
@@ -32,7 +38,9 @@ describe('seed-solid node', () => {
   it('warns where the formula is not a number in its ball (KF331)', () => {
     const r = evalNode('seed-solid', { formula: 'sqrt(x) - 0.5' });
     expect(codes(r, 'warning')).toContain('KF331');
-    expect(r.diagnostics.find((d) => d.code === 'KF331')!.message).toMatch(/not a number at some points.*\(-/);
+    expect(r.diagnostics.find((d) => d.code === 'KF331')!.message).toMatch(
+      /not a number at some points.*\(-/,
+    );
   });
 
   it('refuses an empty solid, a formula that does not check or is not a number, and a bad ball', () => {

@@ -16,7 +16,8 @@ import { walk3d } from '../../../shader-gen/space/walk.ts';
 import { real, SEED, unit3 } from '../../nodes/geometry/space/arbitraries.ts';
 import { scene3d } from './scenes-3d.ts';
 
-const TORUS_TILTED = 'length(point(length(point(x, rotate(point(y, z), c).x)) - a, rotate(point(y, z), c).y)) - b';
+const TORUS_TILTED =
+  'length(point(length(point(x, rotate(point(y, z), c).x)) - a, rotate(point(y, z), c).y)) - b';
 const AXES: readonly Vec3[] = [
   [1, 0, 0],
   [-1, 0, 0],

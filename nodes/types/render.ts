@@ -20,6 +20,12 @@ export const renderNode = defineNode({
       optional: true,
       doc: 'only draw inside this disk (e.g. the Poincaré disk)',
     },
+    cayleyBase: {
+      type: 'point',
+      label: 'Cayley base',
+      optional: true,
+      doc: "the Cayley graph's base point in the fundamental tile (unwired: the tile's most interior point in the view)",
+    },
   },
   outputs: {},
   params: {
@@ -38,6 +44,21 @@ export const renderNode = defineNode({
       max: LIMITS.maxSamples,
       integer: true,
       label: 'samples / pixel',
+    },
+    cayleyDepth: {
+      kind: 'number',
+      default: 0,
+      min: 0,
+      max: LIMITS.maxCayleyDepth,
+      integer: true,
+      label: 'Cayley graph depth',
+      doc: 'draw the Cayley graph over the tiling: tile centres joined by one edge per generator, this many steps deep (0: off)',
+    },
+    limitSetDfs: {
+      kind: 'boolean',
+      default: false,
+      label: 'limit set (depth-first)',
+      doc: "draw the limit set exactly, by depth-first search of the group's words down to a pixel (Schottky-type groups: inversions, Möbius generators)",
     },
   },
   evaluate: ({ inputs, params }) => {
@@ -66,6 +87,11 @@ export const renderNode = defineNode({
         maxIterations: params.maxIterations,
         samples: params.samples,
         clip: inputs.clip ?? null,
+        figures: {
+          cayleyDepth: params.cayleyDepth,
+          cayleyBase: inputs.cayleyBase ?? null,
+          limitSetDfs: params.limitSetDfs,
+        },
       },
     };
   },

@@ -1,7 +1,9 @@
 import { defineNode } from '../core/define-node.ts';
 import { diag } from '../core/diagnostics.ts';
 import { LIMITS } from '../core/limits.ts';
+import type { SceneElement } from '../core/scene-elements.ts';
 import { DEFAULT_TILE } from '../core/tile-spec.ts';
+import { sceneGenerators, schottkyDisks } from '../geometry/group-generators.ts';
 import { elementInput } from './shared.ts';
 
 export const renderNode = defineNode({
@@ -77,6 +79,7 @@ export const renderNode = defineNode({
         ...diag('clamped', { port: 'elements' }, 'no elements wired in: the whole plane is the tile'),
         severity: 'info' as const,
       });
+    diagnostics.push(...figureProblems(elements, params.cayleyDepth > 0, params.limitSetDfs));
     return {
       outputs: {},
       diagnostics,
@@ -96,3 +99,27 @@ export const renderNode = defineNode({
     };
   },
 });
+
+/**
+ * Why a figure the render node is asked for cannot be drawn (a KF402 warning on the render node; the
+ * picture itself is unaffected): a group the figures do not take, or not Schottky-type for the
+ * depth-first search.
+ */
+function figureProblems(elements: readonly SceneElement[], cayley: boolean, dfs: boolean) {
+  if (!cayley && !dfs) return [];
+  const warn = (what: string, problem: string) => [
+    { ...diag('clamped', {}, `${what} not drawn: ${problem}`), severity: 'warning' as const },
+  ];
+  const found = sceneGenerators({ elements });
+  if (!found.ok) {
+    const what =
+      cayley && dfs
+        ? 'Cayley graph and limit set (depth-first)'
+        : cayley
+          ? 'Cayley graph'
+          : 'limit set (depth-first)';
+    return warn(what, found.message);
+  }
+  const schottky = dfs ? schottkyDisks(found.generators) : null;
+  return schottky && !schottky.ok ? warn('limit set (depth-first)', schottky.message) : [];
+}

@@ -7,8 +7,8 @@
 import type { Scene } from '../../nodes/core/scene.ts';
 import type { Circle, Vec2 } from '../../nodes/core/values.ts';
 import { type AntiMobius, applyMap, compose, IDENTITY } from '../../nodes/geometry/anti-mobius.ts';
+import { type FigureGenerator, sceneGenerators } from '../../nodes/geometry/group-generators.ts';
 import { prepare } from '../interpret.ts';
-import { type FigureGenerator, sceneGenerators } from './generators.ts';
 
 export interface CayleyEdge {
   readonly from: Vec2;

@@ -9,7 +9,7 @@
 import type { Scene } from '../../nodes/core/scene.ts';
 import type { Circle, Vec2 } from '../../nodes/core/values.ts';
 import { type AntiMobius, compose, imageCircle } from '../../nodes/geometry/anti-mobius.ts';
-import { sceneGenerators } from './generators.ts';
+import { sceneGenerators, schottkyDisks } from '../../nodes/geometry/group-generators.ts';
 
 export interface DfsOptions {
   /** World units per output pixel. */
@@ -59,28 +59,9 @@ export function limitSetDfs(scene: Pick<Scene, 'elements' | 'view'>, options: Df
   const found = sceneGenerators(scene);
   if (!found.ok) return found;
   const gens = found.generators;
-  if (gens.length < 2)
-    return { ok: false, message: 'the depth-first limit set needs at least two generators' };
-  const disks: Circle[] = [];
-  for (const g of gens) {
-    if (!g.disk)
-      return {
-        ok: false,
-        nodeId: g.nodeId,
-        message: `node "${g.nodeId}" acts outside a bounded disk (a line, an outside or a fold): the depth-first limit set takes inversions and Möbius generators whose disks are disjoint`,
-      };
-    disks.push(g.disk);
-  }
-  for (let i = 0; i < disks.length; i++)
-    for (let j = i + 1; j < disks.length; j++) {
-      const d = Math.hypot(disks[i].c[0] - disks[j].c[0], disks[i].c[1] - disks[j].c[1]);
-      if (d < (disks[i].r + disks[j].r) * (1 - 1e-6))
-        return {
-          ok: false,
-          nodeId: gens[j].nodeId,
-          message: `the disks of "${gens[i].nodeId}" (${gens[i].name}) and "${gens[j].nodeId}" (${gens[j].name}) overlap: the depth-first search draws Schottky-type groups, whose disks are disjoint or tangent`,
-        };
-    }
+  const schottky = schottkyDisks(gens);
+  if (!schottky.ok) return schottky;
+  const { disks } = schottky;
   const { pixelWorld, width, height } = options;
   const leafR = (options.leafPx ?? 0.5) * pixelWorld;
   const join = (options.joinPx ?? 1.5) * pixelWorld;

@@ -3,7 +3,7 @@
  * layout): each stroke segment and dot covers a pixel by c = clamp(w/2 + ½ − d, 0, 1), d the
  * distance from the pixel centre to the segment (or dot centre minus radius), and blends
  * out = (1 − c)·out + c·colour. Labels are not painted (the PNG has no font; SVG and the overlay
- * write them).
+ * write them). Shared by the CLI's PNG and the editor's PNG export.
  */
 import type { View } from '../../nodes/core/scene.ts';
 import type { Color, Vec2 } from '../../nodes/core/values.ts';
@@ -16,10 +16,12 @@ export interface PaintTarget {
   readonly data: Uint8ClampedArray;
 }
 
+/** Blends the colour in with coverage c; a transparent pixel (PNG export) becomes c opaque. */
 function blend(img: PaintTarget, x: number, y: number, color: Color, c: number): void {
   if (c <= 0) return;
   const o = (y * img.width + x) * 4;
   for (let k = 0; k < 3; k++) img.data[o + k] = Math.round(img.data[o + k] * (1 - c) + color[k] * 255 * c);
+  img.data[o + 3] = Math.max(img.data[o + 3], Math.round(255 * c));
 }
 
 /** Distance from (x, y) to the segment a–b. */
@@ -44,14 +46,16 @@ function eachPixel(
   for (let y = y0; y <= y1; y++) for (let x = x0; x <= x1; x++) f(x, y, x + 0.5, y + 0.5);
 }
 
-export function paintFigures(img: PaintTarget, view: View, layer: FigureLayer): void {
+/** `pxScale` widens strokes and dots (an export larger than the live view keeps their look). */
+export function paintFigures(img: PaintTarget, view: View, layer: FigureLayer, pxScale = 1): void {
   const toImage = (p: Vec2): Vec2 => {
     const [x, y] = worldToPixel(view, img.width, img.height, p);
     return [x, img.height - y];
   };
   for (const s of layer.strokes) {
     const pts = s.points.map(toImage);
-    const h = s.width / 2 + 1;
+    const w = s.width * pxScale;
+    const h = w / 2 + 1;
     // One coverage per pixel over the whole polyline, so joints are not blended twice.
     const cover = new Map<number, number>();
     for (let i = 1; i < pts.length; i++) {
@@ -63,7 +67,7 @@ export function paintFigures(img: PaintTarget, view: View, layer: FigureLayer): 
         Math.max(a[1], b[1]) + h,
       ];
       eachPixel(img, box, (x, y, cx, cy) => {
-        const c = Math.min(1, Math.max(0, s.width / 2 + 0.5 - segmentDistance(cx, cy, a, b)));
+        const c = Math.min(1, Math.max(0, w / 2 + 0.5 - segmentDistance(cx, cy, a, b)));
         const k = y * img.width + x;
         if (c > (cover.get(k) ?? 0)) cover.set(k, c);
       });
@@ -72,9 +76,10 @@ export function paintFigures(img: PaintTarget, view: View, layer: FigureLayer): 
   }
   for (const d of layer.dots) {
     const p = toImage(d.at);
-    const h = d.r + 1;
+    const r = d.r * pxScale;
+    const h = r + 1;
     eachPixel(img, [p[0] - h, p[0] + h, p[1] - h, p[1] + h], (x, y, cx, cy) => {
-      blend(img, x, y, d.color, Math.min(1, Math.max(0, d.r + 0.5 - Math.hypot(cx - p[0], cy - p[1]))));
+      blend(img, x, y, d.color, Math.min(1, Math.max(0, r + 0.5 - Math.hypot(cx - p[0], cy - p[1]))));
     });
   }
 }

@@ -1,12 +1,13 @@
 /**
  * The render node's figures in real Chromium: the Fig. 1 example draws its Cayley graph over the
  * live picture (coloured edges, the labels a–d), the depth-first Fig. 5 draws its limit set, and
- * Export → SVG carries the figures.
+ * Export → SVG and Export → PNG carry the figures.
  */
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { decodePng } from '../../src/io/png.ts';
 import { parseXml } from '../support/xml.ts';
 import { openAppSession, repoRoot, type ServedApp } from './app-server.ts';
 import { waitRendered } from './editor-page.ts';
@@ -63,4 +64,23 @@ describe('figures over the render', () => {
       .toBeGreaterThan(50);
     expect(await page.getByTestId('figure-note').count()).toBe(0);
   });
+
+  it('paints the Cayley graph into the exported PNG (the generator colours are there)', async () => {
+    await openExample('fig01-cayley-graph');
+    await waitRendered(page);
+    await menu(page, 'Export', 'PNG image');
+    const dialog = page.getByRole('dialog', { name: 'Export PNG' });
+    await dialog.getByLabel('Samples').fill('1');
+    const [download] = await Promise.all([
+      page.waitForEvent('download', { timeout: 120_000 }),
+      dialog.getByRole('button', { name: /^Export \d+/ }).click(),
+    ]);
+    const image = decodePng(new Uint8Array(readFileSync((await download.path()) as string)));
+    // Pixels of the first generator's colour (#f24336, sRGB 0.95, 0.26, 0.21): only its edges have it.
+    let red = 0;
+    for (let i = 0; i < image.data.length; i += 4) {
+      if (image.data[i] > 220 && image.data[i + 1] < 100 && image.data[i + 2] < 90) red++;
+    }
+    expect(red).toBeGreaterThan(100);
+  }, 150_000);
 });

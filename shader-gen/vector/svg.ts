@@ -135,7 +135,8 @@ export function writeSvg(
     edgeCount++;
   }
   lines.push('</g>', '</g>');
-  const figureCount = figures ? writeFigures(f, figures, lines) : 0;
+  const figureCount =
+    figures && figures.strokes.length + figures.dots.length > 0 ? writeFigures(f, figures, lines) : 0;
   lines.push('</svg>', '');
   return { svg: lines.join('\n'), edgeCount, seedCount, figureCount };
 }

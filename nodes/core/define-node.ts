@@ -134,7 +134,10 @@ export interface EvalContext<In = InputValues, Pa = ParamValues> {
 }
 
 /** What the render node adds to the Scene (the single output of the graph). */
-export type RenderSettings = Pick<Scene, 'elements' | 'tile' | 'maxIterations' | 'samples' | 'clip'>;
+export type RenderSettings = Pick<
+  Scene,
+  'elements' | 'tile' | 'maxIterations' | 'samples' | 'clip' | 'figures'
+>;
 
 /** What the 3D render node adds to the Scene3d (the evaluator adds overlays, handles and its id). */
 export type Render3dSettings = Omit<Scene3d, 'kind' | 'renderNodeId' | 'overlays' | 'handles'>;

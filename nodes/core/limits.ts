@@ -3,6 +3,8 @@ export const LIMITS = {
   maxElements: 256,
   maxIterations: 10_000,
   maxSamples: 256,
+  /** Deepest Cayley graph the render node draws (docs/math.md "Cayley graph and depth-first limit set"). */
+  maxCayleyDepth: 12,
   maxNodes: 5_000,
   /**
    * Deepest nesting of objects and arrays a document may have (the document itself is level 0).

@@ -4,6 +4,7 @@
  * Its parts have their own modules (elements, tile, overlay, view, limits); they are re-exported
  * here because the back ends and the app read them as one vocabulary.
  */
+import type { SceneFigures } from './figures.ts';
 import { LIMITS } from './limits.ts';
 import type { HandleItem, OverlayItem } from './overlay.ts';
 import type { SceneElement } from './scene-elements.ts';
@@ -11,6 +12,7 @@ import type { TileSpec } from './tile-spec.ts';
 import type { Circle } from './values.ts';
 import type { View } from './view.ts';
 
+export { NO_FIGURES, type SceneFigures } from './figures.ts';
 export { LIMITS } from './limits.ts';
 export type { HandleItem, OverlayItem, OverlayShape } from './overlay.ts';
 export type * from './scene-elements.ts';
@@ -39,6 +41,8 @@ export interface Scene {
   readonly handles: readonly HandleItem[];
   /** Id of the render node, or null when the graph has none (then the scene is empty). */
   readonly renderNodeId: string | null;
+  /** Pictures of the group drawn over the render (absent: none). */
+  readonly figures?: SceneFigures;
 }
 
 export const EMPTY_SCENE_DEFAULTS = { maxIterations: LIMITS.defaultMaxIterations, samples: 4 } as const;

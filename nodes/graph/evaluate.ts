@@ -149,6 +149,7 @@ export function evaluateGraph(
     overlays,
     handles,
     renderNodeId: chosen?.id ?? null,
+    ...(chosen?.settings.figures ? { figures: chosen.settings.figures } : {}),
   };
   const scene3d: Scene3d | null = first?.settings3d
     ? { kind: '3d', ...first.settings3d, renderNodeId: first.id, ...space }

@@ -1,7 +1,9 @@
 import { defineNode } from '../core/define-node.ts';
 import { diag } from '../core/diagnostics.ts';
 import { LIMITS } from '../core/limits.ts';
+import type { SceneElement } from '../core/scene-elements.ts';
 import { DEFAULT_TILE } from '../core/tile-spec.ts';
+import { sceneGenerators, schottkyDisks } from '../geometry/group-generators.ts';
 import { elementInput } from './shared.ts';
 
 export const renderNode = defineNode({
@@ -19,6 +21,12 @@ export const renderNode = defineNode({
       label: 'clip',
       optional: true,
       doc: 'only draw inside this disk (e.g. the Poincaré disk)',
+    },
+    cayleyBase: {
+      type: 'point',
+      label: 'Cayley base',
+      optional: true,
+      doc: "the Cayley graph's base point in the fundamental tile (unwired: the tile's most interior point in the view)",
     },
   },
   outputs: {},
@@ -39,6 +47,21 @@ export const renderNode = defineNode({
       integer: true,
       label: 'samples / pixel',
     },
+    cayleyDepth: {
+      kind: 'number',
+      default: 0,
+      min: 0,
+      max: LIMITS.maxCayleyDepth,
+      integer: true,
+      label: 'Cayley graph depth',
+      doc: 'draw the Cayley graph over the tiling: tile centres joined by one edge per generator, this many steps deep (0: off)',
+    },
+    limitSetDfs: {
+      kind: 'boolean',
+      default: false,
+      label: 'limit set (depth-first)',
+      doc: "draw the limit set exactly, by depth-first search of the group's words down to a pixel (Schottky-type groups: inversions, Möbius generators)",
+    },
   },
   evaluate: ({ inputs, params }) => {
     let elements = inputs.elements;
@@ -56,6 +79,7 @@ export const renderNode = defineNode({
         ...diag('clamped', { port: 'elements' }, 'no elements wired in: the whole plane is the tile'),
         severity: 'info' as const,
       });
+    diagnostics.push(...figureProblems(elements, params.cayleyDepth > 0, params.limitSetDfs));
     return {
       outputs: {},
       diagnostics,
@@ -66,7 +90,36 @@ export const renderNode = defineNode({
         maxIterations: params.maxIterations,
         samples: params.samples,
         clip: inputs.clip ?? null,
+        figures: {
+          cayleyDepth: params.cayleyDepth,
+          cayleyBase: inputs.cayleyBase ?? null,
+          limitSetDfs: params.limitSetDfs,
+        },
       },
     };
   },
 });
+
+/**
+ * Why a figure the render node is asked for cannot be drawn (a KF402 warning on the render node; the
+ * picture itself is unaffected): a group the figures do not take, or not Schottky-type for the
+ * depth-first search.
+ */
+function figureProblems(elements: readonly SceneElement[], cayley: boolean, dfs: boolean) {
+  if (!cayley && !dfs) return [];
+  const warn = (what: string, problem: string) => [
+    { ...diag('clamped', {}, `${what} not drawn: ${problem}`), severity: 'warning' as const },
+  ];
+  const found = sceneGenerators({ elements });
+  if (!found.ok) {
+    const what =
+      cayley && dfs
+        ? 'Cayley graph and limit set (depth-first)'
+        : cayley
+          ? 'Cayley graph'
+          : 'limit set (depth-first)';
+    return warn(what, found.message);
+  }
+  const schottky = dfs ? schottkyDisks(found.generators) : null;
+  return schottky && !schottky.ok ? warn('limit set (depth-first)', schottky.message) : [];
+}

@@ -6,6 +6,7 @@
 import type { Scene } from '../../nodes/core/scene.ts';
 import type { Circle, Color } from '../../nodes/core/values.ts';
 import { depthColour } from '../colour.ts';
+import type { FigureLayer } from '../figures/layer.ts';
 import type { Curve } from './curves.ts';
 import type { VectorCurve, VectorSeed } from './enumerate.ts';
 
@@ -14,6 +15,8 @@ export interface SvgResult {
   /** <circle>/<line> elements written for edges and seeds (the background and clip not counted). */
   readonly edgeCount: number;
   readonly seedCount: number;
+  /** Strokes and dots written for the render node's figures (Cayley graph, depth-first limit set). */
+  readonly figureCount: number;
 }
 
 /** An sRGB colour in [0, 1]³ as #rrggbb. */
@@ -98,6 +101,7 @@ export function writeSvg(
   picture: { readonly edges: readonly VectorCurve[]; readonly seeds: readonly VectorSeed[] },
   width: number,
   height: number,
+  figures?: FigureLayer,
 ): SvgResult {
   const { view, clip, tile } = scene;
   const f: Frame = { width, height, k: height / view.scale, cx: view.center[0], cy: view.center[1] };
@@ -130,6 +134,32 @@ export function writeSvg(
     lines.push(curveElement(f, e.curve, ` stroke="${hexColour(edgeStroke(scene, e.depth))}"`));
     edgeCount++;
   }
-  lines.push('</g>', '</g>', '</svg>', '');
-  return { svg: lines.join('\n'), edgeCount, seedCount };
+  lines.push('</g>', '</g>');
+  const figureCount =
+    figures && figures.strokes.length + figures.dots.length > 0 ? writeFigures(f, figures, lines) : 0;
+  lines.push('</svg>', '');
+  return { svg: lines.join('\n'), edgeCount, seedCount, figureCount };
+}
+
+/** The figures over the picture (not clipped: a Cayley graph's geodesics stay in the disk). */
+function writeFigures(f: Frame, layer: FigureLayer, lines: string[]): number {
+  const pt = (p: readonly [number, number]) => `${num(toX(f, p[0]))},${num(toY(f, p[1]))}`;
+  lines.push('<g class="figures" fill="none" stroke-linecap="round" stroke-linejoin="round">');
+  for (const s of layer.strokes) {
+    lines.push(
+      `<polyline points="${s.points.map(pt).join(' ')}" stroke="${hexColour(s.color)}" stroke-width="${num(s.width)}"/>`,
+    );
+  }
+  for (const d of layer.dots) {
+    lines.push(
+      `<circle cx="${num(toX(f, d.at[0]))}" cy="${num(toY(f, d.at[1]))}" r="${num(d.r)}" fill="${hexColour(d.color)}"/>`,
+    );
+  }
+  for (const l of layer.labels) {
+    lines.push(
+      `<text x="${num(toX(f, l.at[0]) + 4)}" y="${num(toY(f, l.at[1]) - 4)}" fill="${hexColour(l.color)}" font-family="sans-serif" font-size="14" font-weight="bold">${l.text}</text>`,
+    );
+  }
+  lines.push('</g>');
+  return layer.strokes.length + layer.dots.length;
 }

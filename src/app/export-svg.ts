@@ -22,8 +22,10 @@ export function exportSvgFile(
   if (!result.ok) return { ok: false, message: `No SVG: ${result.message}.` };
   download(`${fileStem(doc)}.svg`, result.svg, 'image/svg+xml');
   const seeds = result.seedCount > 0 ? ` and ${result.seedCount} seed disks` : '';
+  const figures = result.figureCount > 0 ? `, ${result.figureCount} figure strokes and points` : '';
+  const notes = result.notes.map((n) => ` ${n}.`).join('');
   return {
     ok: true,
-    message: `Exported ${width} × ${height} SVG: ${result.edgeCount} circles and lines${seeds} (radius ≥ ${MIN_RADIUS_PX} px).`,
+    message: `Exported ${width} × ${height} SVG: ${result.edgeCount} circles and lines${seeds}${figures} (radius ≥ ${MIN_RADIUS_PX} px).${notes}`,
   };
 }

@@ -4,6 +4,8 @@
  */
 import type { Scene, View } from '../../nodes/core/scene.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
+import { figureLayer } from '../../shader-gen/figures/layer.ts';
+import { paintFigures } from '../../shader-gen/figures/paint.ts';
 import { standaloneShader } from '../../shader-gen/standalone.ts';
 import { embedGraph } from '../io/png-graph.ts';
 import { type Drawable, is3d } from '../viewport/drawable.ts';
@@ -52,6 +54,13 @@ export async function renderPng(
     onProgress,
   });
   if (!pixels) return null;
+  if (!(live && is3d(live))) {
+    // The render node's figures (Cayley graph, depth-first limit set), as the live overlay draws
+    // them: enumerated for the live view's pixel size, widened like the tile edges.
+    const k = o.height / o.referenceHeight;
+    const layer = figureLayer({ ...scene, view: o.view }, o.width / k, o.referenceHeight);
+    paintFigures({ width: o.width, height: o.height, data: pixels }, o.view, layer, k);
+  }
   return embedGraph({ width: o.width, height: o.height, data: pixels }, doc);
 }
 

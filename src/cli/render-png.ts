@@ -5,6 +5,8 @@
  */
 import type { Scene } from '../../nodes/core/scene.ts';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
+import { figureLayer } from '../../shader-gen/figures/layer.ts';
+import { paintFigures } from '../../shader-gen/figures/paint.ts';
 import { rasterize } from '../../shader-gen/raster.ts';
 import { encodePng } from '../io/png.ts';
 import { PNG_GRAPH_KEY } from './load-graph.ts';
@@ -29,6 +31,8 @@ export function renderScenePng(scene: Scene, graphText: string | null, request: 
     samples: request.samples,
     onProgress: keepGoing(request.onProgress),
   });
+  // The render node's figures (Cayley graph, depth-first limit set) over the picture.
+  paintFigures(image, scene.view, figureLayer(scene, request.width, request.height));
   return encodeWithGraph(image, graphText);
 }
 

@@ -41,10 +41,12 @@ export const GALLERY_SECTIONS: readonly GallerySection[] = [
   {
     title: 'Figures from the paper',
     ids: [
+      'fig01-cayley-graph',
       'fig02-four-kissing-disks',
       'six-disks',
       'four-disks-in-a-square',
       'fig05-limit-set',
+      'fig05-limit-set-depth-first',
       'fig08-hyperbolic-tessellation',
       'fig13-hyperbolic-mobius',
       'parabolic-mobius',

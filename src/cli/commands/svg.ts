@@ -52,7 +52,9 @@ export const svgCommand: CliCommand = {
     "Enumerates the images of the graph's mirrors (and seed disks) at its saved view down to",
     'the minimum radius and writes them as SVG circles and lines in the tile colours, clipped to',
     `the view and the render's clip disk. At most ${MAX_VECTOR_ELEMENTS} elements. Works for graphs`,
-    'made of inversions, reflections and two-circle Möbius generators.',
+    "made of inversions, reflections and two-circle Möbius generators. The render node's figures",
+    '(Cayley graph, depth-first limit set) are drawn over it; for matrix generators the figures',
+    'alone are written.',
     '',
     formatOptions(OPTIONS),
   ].join('\n'),
@@ -76,9 +78,11 @@ export const svgCommand: CliCommand = {
     } catch (e) {
       throw new CliError(fileErrorMessage('write', output, e));
     }
+    const figures = result.figureCount > 0 ? `, ${result.figureCount} figure strokes and points` : '';
     io.stdout.write(
-      `wrote ${output} (${width}×${height}, ${result.edgeCount} edges and ${result.seedCount} seed disks, radius ≥ ${minRadius} px)\n`,
+      `wrote ${output} (${width}×${height}, ${result.edgeCount} edges and ${result.seedCount} seed disks${figures}, radius ≥ ${minRadius} px)\n`,
     );
+    for (const note of result.notes) io.stderr.write(`note: ${note}\n`);
     return EXIT.ok;
   },
 };

@@ -14,6 +14,7 @@ import type { GraphDoc } from '../../../nodes/graph/document.ts';
 import { dragPatches, type NodePatch } from '../../../nodes/graph/drag-patches.ts';
 import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
 import { OVERLAY_PX } from './constants.ts';
+import { FigureOverlay } from './FigureOverlay.tsx';
 import { hitShape } from './hit-test.ts';
 import { KeptSides } from './KeptSides.tsx';
 import { keptSideShapes } from './kept-side-shapes.ts';
@@ -146,6 +147,7 @@ export function RenderOverlay(props: RenderOverlayProps): JSX.Element {
         cursor,
       }}
     >
+      {sized && <FigureOverlay scene={evaluation.scene} screen={screen} />}
       <KeptSides
         shapes={keptSides}
         colorOf={(id) => evaluation.analysis.nodes.get(id)?.def?.color ?? FALLBACK_COLOR}

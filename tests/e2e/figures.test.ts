@@ -1,0 +1,86 @@
+/**
+ * The render node's figures in real Chromium: the Fig. 1 example draws its Cayley graph over the
+ * live picture (coloured edges, the labels a–d), the depth-first Fig. 5 draws its limit set, and
+ * Export → SVG and Export → PNG carry the figures.
+ */
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import type { Page } from 'playwright-core';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { decodePng } from '../../src/io/png.ts';
+import { parseXml } from '../support/xml.ts';
+import { openAppSession, repoRoot, type ServedApp } from './app-server.ts';
+import { waitRendered } from './editor-page.ts';
+import { currentDoc, menu, openViaPicker } from './io-page.ts';
+
+let app: ServedApp;
+let page: Page;
+
+const example = (id: string) => readFileSync(join(repoRoot, 'examples', `${id}.kleinflow.json`));
+
+beforeAll(async () => {
+  ({ app, page } = await openAppSession());
+  await waitRendered(page);
+}, 180_000);
+
+afterAll(async () => {
+  await app?.close();
+});
+
+async function openExample(id: string) {
+  const title = JSON.parse(example(id).toString('utf8')).meta.title as string;
+  await openViaPicker(page, `${id}.kleinflow.json`, example(id));
+  await expect
+    .poll(async () => ((await currentDoc(page)) as { meta: { title: string } }).meta.title, {
+      timeout: 30_000,
+    })
+    .toBe(title);
+}
+
+const overlay = () => page.getByTestId('figure-overlay');
+
+describe('figures over the render', () => {
+  it('draws the Cayley graph of Fig. 1 with its generator labels, and exports it as SVG', async () => {
+    await openExample('fig01-cayley-graph');
+    await expect.poll(() => overlay().locator('polyline').count(), { timeout: 30_000 }).toBeGreaterThan(50);
+    const labels = await overlay().locator('text').allTextContents();
+    expect([...labels].sort()).toEqual(['a', 'b', 'c', 'd']);
+    const [download] = await Promise.all([page.waitForEvent('download'), menu(page, 'Export', 'SVG')]);
+    const doc = parseXml(readFileSync((await download.path()) as string, 'utf8'));
+    expect(doc.querySelectorAll('g.figures polyline').length).toBeGreaterThan(50);
+    await expect.poll(() => page.getByTestId('toast').textContent()).toMatch(/figure strokes and points/);
+  });
+
+  it('draws the depth-first limit set of Fig. 5 as points and curves', async () => {
+    await openExample('fig05-limit-set-depth-first');
+    await expect
+      .poll(
+        async () =>
+          (await overlay().locator('polyline').count()) + (await overlay().locator('circle').count()),
+        {
+          timeout: 30_000,
+        },
+      )
+      .toBeGreaterThan(50);
+    expect(await page.getByTestId('figure-note').count()).toBe(0);
+  });
+
+  it('paints the Cayley graph into the exported PNG (the generator colours are there)', async () => {
+    await openExample('fig01-cayley-graph');
+    await waitRendered(page);
+    await menu(page, 'Export', 'PNG image');
+    const dialog = page.getByRole('dialog', { name: 'Export PNG' });
+    await dialog.getByLabel('Samples').fill('1');
+    const [download] = await Promise.all([
+      page.waitForEvent('download', { timeout: 120_000 }),
+      dialog.getByRole('button', { name: /^Export \d+/ }).click(),
+    ]);
+    const image = decodePng(new Uint8Array(readFileSync((await download.path()) as string)));
+    // Pixels of the first generator's colour (#f24336, sRGB 0.95, 0.26, 0.21): only its edges have it.
+    let red = 0;
+    for (let i = 0; i < image.data.length; i += 4) {
+      if (image.data[i] > 220 && image.data[i + 1] < 100 && image.data[i + 2] < 90) red++;
+    }
+    expect(red).toBeGreaterThan(100);
+  }, 150_000);
+});

@@ -18,7 +18,7 @@ export async function writeGlb(
   mesh: Mesh,
   colours: Float32Array,
   name = 'Kleinflow mesh',
-): Promise<Uint8Array> {
+): Promise<Uint8Array<ArrayBuffer>> {
   if (colours.length !== mesh.positions.length)
     throw new Error(`${colours.length / 3} colours for ${mesh.positions.length / 3} vertices`);
   const doc = new Document();
@@ -41,5 +41,6 @@ export async function writeGlb(
     .setMesh(doc.createMesh(name).addPrimitive(primitive))
     .setRotation(Z_UP_TO_Y_UP);
   doc.getRoot().setDefaultScene(doc.createScene(name).addChild(node));
-  return new WebIO().writeBinary(doc);
+  // A copy typed as ArrayBuffer-backed, as Blob and writeFile take it.
+  return new Uint8Array(await new WebIO().writeBinary(doc));
 }

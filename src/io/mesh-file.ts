@@ -53,7 +53,7 @@ export async function meshFileBytes(
   mesh: Mesh,
   colours: Float32Array | null,
   title: string,
-): Promise<Uint8Array> {
+): Promise<Uint8Array<ArrayBuffer>> {
   if (format === 'stl') return writeStl(mesh, title.slice(0, 80));
   if (!colours) throw new Error(`a ${format.toUpperCase()} mesh needs its colours`);
   return format === 'glb' ? writeGlb(mesh, colours, title) : write3mf(mesh, colours);

@@ -98,10 +98,12 @@ export function threeMfModel(mesh: Mesh, colours: Float32Array): string {
 }
 
 /** The 3MF package (zip bytes) of `mesh` with sRGB `colours` per vertex. */
-export function write3mf(mesh: Mesh, colours: Float32Array): Uint8Array {
-  return zipSync({
+export function write3mf(mesh: Mesh, colours: Float32Array): Uint8Array<ArrayBuffer> {
+  const zip = zipSync({
     '[Content_Types].xml': strToU8(CONTENT_TYPES),
     '_rels/.rels': strToU8(RELS),
     '3D/3dmodel.model': strToU8(threeMfModel(mesh, colours)),
   });
+  // fflate's bytes are ArrayBuffer-backed; the type says so for Blob.
+  return new Uint8Array(zip.buffer, zip.byteOffset, zip.byteLength);
 }

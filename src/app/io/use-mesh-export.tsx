@@ -38,11 +38,11 @@ export function useMeshExport({ store, say }: Options): { item: MenuItem; ui: Re
     const result = await meshScene3d(scene3d, { ...o, onProgress, pause: nextFrame });
     if (!result) return false;
     if (!result.ok) throw new Error(result.error);
-    const { mesh } = result.value;
+    const { mesh, grid } = result.value;
     const info = MESH_FORMATS[format];
     // The progress bar stays full ("Writing…") while the colours are taken: one pass, no pause.
     await nextFrame();
-    const colours = info.coloured ? meshVertexColours(scene3d, mesh) : null;
+    const colours = info.coloured ? meshVertexColours(scene3d, mesh, Math.max(...grid.step)) : null;
     const bytes = await meshFileBytes(format, mesh, colours, `Kleinflow mesh of ${fileStem(doc)}`);
     download(`${fileStem(doc)}.${info.extension}`, bytes, info.mime);
     say('ok', `Exported a ${format.toUpperCase()} mesh: ${mesh.triangles.length / 3} triangles.`);

@@ -103,7 +103,7 @@ export const meshCommand: CliCommand = {
     let colours: Float32Array | null = null;
     if (MESH_FORMATS[format].coloured) {
       const colouring = progressLine(io.stderr, 'colouring');
-      colours = meshVertexColours(picture.scene3d, mesh, (f) => {
+      colours = meshVertexColours(picture.scene3d, mesh, Math.max(...grid.step), (f) => {
         colouring.update(f);
         return true;
       });

@@ -28,12 +28,15 @@ export const TWO_SPHERES = scene3d(
 );
 
 /** The two spheres meshed at `resolution`, with their sRGB vertex colours. */
-export async function colouredMesh(resolution = 20): Promise<{ mesh: Mesh; colours: Float32Array }> {
+export async function colouredMesh(
+  resolution = 20,
+): Promise<{ mesh: Mesh; colours: Float32Array; cell: number }> {
   const result = await meshScene3d(TWO_SPHERES, { resolution });
   if (!result?.ok) throw new Error(`no mesh: ${result ? result.error : 'cancelled'}`);
-  const colours = meshVertexColours(TWO_SPHERES, result.value.mesh);
+  const cell = Math.max(...result.value.grid.step);
+  const colours = meshVertexColours(TWO_SPHERES, result.value.mesh, cell);
   if (!colours) throw new Error('colouring cancelled');
-  return { mesh: result.value.mesh, colours };
+  return { mesh: result.value.mesh, colours, cell };
 }
 
 /**

@@ -31,20 +31,41 @@ describe('meshVertexColours', () => {
     expect(near(SEED_COLOUR, IMAGE_COLOUR, 0.1)).toBe(false);
   });
 
-  it('colours by surface coordinates with the cosine field at each vertex', () => {
-    const scene = { ...TWO_SPHERES, coloring: { mode: 'surface' as const, scale: 0.5 } };
-    const positions = Float64Array.from([0.7, 0, 0, 0, -0.7, 0, 0.1, 0.2, 0.67]);
-    const colours = meshVertexColours(scene, { positions });
-    for (let v = 0; v < 3; v++) {
-      const want = [0, 1, 2].map((k) => 0.5 + 0.5 * Math.cos((2 * Math.PI * positions[3 * v + k]!) / 0.5));
-      expect(near(colours!.subarray(3 * v, 3 * v + 3), want)).toBe(true);
+  it('colours by surface coordinates with the cosine field where the vertex is, to half a cell', async () => {
+    const { mesh, cell } = await colouredMesh(20);
+    const scene = { ...TWO_SPHERES, coloring: { mode: 'surface' as const, scale: 1 } };
+    const colours = meshVertexColours(scene, mesh, cell)!;
+    // |d field/dx| ≤ π per unit at scale 1: half a cell off moves a channel by at most π·cell/2.
+    const tol = (Math.PI * cell) / 2;
+    let worst = 0;
+    for (let v = 0; v < mesh.positions.length / 3; v++)
+      for (let k = 0; k < 3; k++) {
+        const want = 0.5 + 0.5 * Math.cos(2 * Math.PI * mesh.positions[3 * v + k]!);
+        worst = Math.max(worst, Math.abs(colours[3 * v + k]! - want));
+      }
+    expect(worst).toBeLessThan(tol);
+    expect(worst).toBeGreaterThan(0);
+  });
+
+  it('gives both ends of every edge one colour: no vertex takes the colour of a piece beside it', async () => {
+    const { mesh, colours, cell } = await colouredMesh(20);
+    // Across every mesh edge the colour changes by little: on the two spheres only between seed
+    // and image, which no edge joins.
+    const t = mesh.triangles;
+    let jumps = 0;
+    for (let i = 0; i < t.length; i++) {
+      const a = 3 * t[i]!;
+      const b = 3 * t[i - (i % 3) + ((i + 1) % 3)]!;
+      if (!near(colours.subarray(a, a + 3), colours.subarray(b, b + 3), 1e-6)) jumps++;
     }
+    expect(jumps).toBe(0);
+    expect(cell).toBeGreaterThan(0);
   });
 
   it('stops with null when its progress callback says so', () => {
-    const positions = new Float64Array(3 * 10_000);
+    const mesh = { positions: new Float64Array(3 * 10_000), triangles: new Uint32Array(0) };
     const seen: number[] = [];
-    const result = meshVertexColours(TWO_SPHERES, { positions }, (f) => {
+    const result = meshVertexColours(TWO_SPHERES, mesh, 0.1, (f) => {
       seen.push(f);
       return f < 0.3;
     });

@@ -46,17 +46,26 @@ export function vertexNormals(mesh: Mesh): Float64Array {
   return n;
 }
 
+/** Vertices coloured between two progress calls (and pauses). */
+const CHUNK = 2048;
+
+export interface MeshColourOptions {
+  /** Fraction done, every CHUNK vertices; returning false cancels with null. */
+  readonly onProgress?: (done: number) => boolean;
+  /** Awaited every CHUNK vertices (the editor lets the page repaint, as meshScene3d does). */
+  readonly pause?: () => Promise<void>;
+}
+
 /**
  * sRGB r, g, b in [0, 1] per vertex of `mesh` (3 floats a vertex, in the order of its positions);
- * `cell` is the voxel size (the grid's largest step). `onProgress` (fraction done, every few
- * thousand vertices) returning false cancels with null.
+ * `cell` is the voxel size (the grid's largest step). Null when cancelled.
  */
-export function meshVertexColours(
+export async function meshVertexColours(
   scene: Scene3d,
   mesh: Mesh,
   cell: number,
-  onProgress?: (done: number) => boolean,
-): Float32Array | null {
+  { onProgress, pause }: MeshColourOptions = {},
+): Promise<Float32Array | null> {
   const plan = prepareTrace3d(scene);
   const p = mesh.positions;
   const normals = vertexNormals(mesh);
@@ -66,7 +75,10 @@ export function meshVertexColours(
   const eps = HIT_CELLS * cell;
   const q = [0, 0, 0];
   for (let v = 0; v < n; v++) {
-    if (onProgress && v % 2048 === 0 && onProgress(v / n) === false) return null;
+    if (v % CHUNK === 0 && v > 0) {
+      if (onProgress?.(v / n) === false) return null;
+      await pause?.();
+    }
     const o = 3 * v;
     // March q = p + (s − t)·n from t = 0 towards p and a little beyond, from a start s that is
     // off the solid (halved while it is not: another piece may lie within two cells); without

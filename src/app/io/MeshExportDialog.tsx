@@ -30,6 +30,8 @@ interface Props {
 }
 
 export const DEFAULT_MESH_RESOLUTION = 64;
+/** The coloured formats' progress bar: meshing up to here, then colouring the vertices. */
+export const MESHING_SHARE = 0.6;
 
 const FORMATS = Object.keys(MESH_FORMATS) as MeshFormat[];
 
@@ -120,9 +122,11 @@ export function MeshExportDialog({ run, onClose }: Props) {
       <ExportRunFooter
         progress={progress}
         progressText={(progress) =>
-          progress < 1
-            ? `Meshing… ${Math.round(progress * 100)}%`
-            : `Writing the ${format.toUpperCase()}${MESH_FORMATS[format].coloured ? ' with its colours' : ''}…`
+          progress >= 1
+            ? `Writing the ${format.toUpperCase()}…`
+            : MESH_FORMATS[format].coloured && progress >= MESHING_SHARE
+              ? `Colouring the vertices… ${Math.round(progress * 100)}%`
+              : `Meshing… ${Math.round(progress * 100)}%`
         }
         error={boundsError ?? error}
         startLabel={`Export ${format.toUpperCase()} ${resolution}³`}

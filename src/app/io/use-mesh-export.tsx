@@ -14,7 +14,7 @@ import { MESH_FORMATS, meshFileBytes } from '../../io/mesh-file.ts';
 import type { EditorStore } from '../../state/store.ts';
 import { download, fileStem } from '../files.ts';
 import type { MenuItem } from '../Menu.tsx';
-import { MeshExportDialog, type MeshExportOptions } from './MeshExportDialog.tsx';
+import { MESHING_SHARE, MeshExportDialog, type MeshExportOptions } from './MeshExportDialog.tsx';
 
 interface Options {
   readonly store: EditorStore;
@@ -35,14 +35,25 @@ export function useMeshExport({ store, say }: Options): { item: MenuItem; ui: Re
     const doc = store.getState().doc;
     const scene3d = evaluateGraph(doc, registry).scene3d;
     if (!scene3d) throw new Error('this graph has no Render 3D node: mesh export meshes 3D graphs');
-    const result = await meshScene3d(scene3d, { ...o, onProgress, pause: nextFrame });
+    const info = MESH_FORMATS[format];
+    // The coloured formats: meshing fills the first MESHING_SHARE of the bar, colouring the rest.
+    const share = info.coloured ? MESHING_SHARE : 1;
+    const result = await meshScene3d(scene3d, {
+      ...o,
+      onProgress: (f) => onProgress(f * share),
+      pause: nextFrame,
+    });
     if (!result) return false;
     if (!result.ok) throw new Error(result.error);
     const { mesh, grid } = result.value;
-    const info = MESH_FORMATS[format];
-    // The progress bar stays full ("Writing…") while the colours are taken: one pass, no pause.
-    await nextFrame();
-    const colours = info.coloured ? meshVertexColours(scene3d, mesh, Math.max(...grid.step)) : null;
+    let colours: Float32Array | null = null;
+    if (info.coloured) {
+      colours = await meshVertexColours(scene3d, mesh, Math.max(...grid.step), {
+        onProgress: (f) => onProgress(share + f * (1 - share)),
+        pause: nextFrame,
+      });
+      if (!colours) return false;
+    }
     const bytes = await meshFileBytes(format, mesh, colours, `Kleinflow mesh of ${fileStem(doc)}`);
     download(`${fileStem(doc)}.${info.extension}`, bytes, info.mime);
     say('ok', `Exported a ${format.toUpperCase()} mesh: ${mesh.triangles.length / 3} triangles.`);

@@ -103,9 +103,11 @@ export const meshCommand: CliCommand = {
     let colours: Float32Array | null = null;
     if (MESH_FORMATS[format].coloured) {
       const colouring = progressLine(io.stderr, 'colouring');
-      colours = meshVertexColours(picture.scene3d, mesh, Math.max(...grid.step), (f) => {
-        colouring.update(f);
-        return true;
+      colours = await meshVertexColours(picture.scene3d, mesh, Math.max(...grid.step), {
+        onProgress: (f) => {
+          colouring.update(f);
+          return true;
+        },
       });
       colouring.finish();
     }

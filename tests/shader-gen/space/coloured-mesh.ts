@@ -34,7 +34,7 @@ export async function colouredMesh(
   const result = await meshScene3d(TWO_SPHERES, { resolution });
   if (!result?.ok) throw new Error(`no mesh: ${result ? result.error : 'cancelled'}`);
   const cell = Math.max(...result.value.grid.step);
-  const colours = meshVertexColours(TWO_SPHERES, result.value.mesh, cell);
+  const colours = await meshVertexColours(TWO_SPHERES, result.value.mesh, cell);
   if (!colours) throw new Error('colouring cancelled');
   return { mesh: result.value.mesh, colours, cell };
 }

@@ -34,7 +34,7 @@ describe('meshVertexColours', () => {
   it('colours by surface coordinates with the cosine field where the vertex is, to half a cell', async () => {
     const { mesh, cell } = await colouredMesh(20);
     const scene = { ...TWO_SPHERES, coloring: { mode: 'surface' as const, scale: 1 } };
-    const colours = meshVertexColours(scene, mesh, cell)!;
+    const colours = (await meshVertexColours(scene, mesh, cell))!;
     // |d field/dx| ≤ π per unit at scale 1: half a cell off moves a channel by at most π·cell/2.
     const tol = (Math.PI * cell) / 2;
     let worst = 0;
@@ -62,14 +62,21 @@ describe('meshVertexColours', () => {
     expect(cell).toBeGreaterThan(0);
   });
 
-  it('stops with null when its progress callback says so', () => {
+  it('pauses between chunks and stops with null when its progress callback says so', async () => {
     const mesh = { positions: new Float64Array(3 * 10_000), triangles: new Uint32Array(0) };
     const seen: number[] = [];
-    const result = meshVertexColours(TWO_SPHERES, mesh, 0.1, (f) => {
-      seen.push(f);
-      return f < 0.3;
+    let pauses = 0;
+    const result = await meshVertexColours(TWO_SPHERES, mesh, 0.1, {
+      onProgress: (f) => {
+        seen.push(f);
+        return f < 0.3;
+      },
+      pause: async () => {
+        pauses++;
+      },
     });
     expect(result).toBeNull();
+    expect(pauses).toBe(seen.length - 1);
     expect(seen.at(-1)).toBeGreaterThanOrEqual(0.3);
   });
 });

@@ -1,7 +1,8 @@
 /**
  * STL mesh export speed (docs/math-3d.md "Voxel mesh (paper §5.3.2)"): the 3D examples with a
  * bounded orbit meshed at a few resolutions on one core — voxels sampled per second (the IIS inside
- * test dominates) and the whole export's time, triangle count and volume sign.
+ * test dominates) and the whole export's time, triangle count and volume sign; then the seconds the
+ * coloured formats add to colour the vertices (docs/math-3d.md "Coloured mesh (paper Fig. 36)").
  */
 import { readFileSync } from 'node:fs';
 import { meshVolume } from '../../nodes/geometry/space/marching-tetrahedra.ts';
@@ -9,6 +10,7 @@ import { meshScene3d, orbitBounds } from '../../nodes/geometry/space/voxel-mesh.
 import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
 import { registry } from '../../nodes/types/index.ts';
+import { meshVertexColours } from '../../shader-gen/space/mesh-colours.ts';
 import { EXAMPLES_3D_DIR, exampleNames, examplePath } from '../../src/cli/examples.ts';
 import { printTable } from './report.ts';
 
@@ -27,10 +29,13 @@ export async function run(): Promise<void> {
       const r = await meshScene3d(scene, { resolution });
       const seconds = (performance.now() - t0) / 1000;
       if (!r?.ok) {
-        rows.push([name, String(resolution), r ? r.error : 'cancelled', '', '', '']);
+        rows.push([name, String(resolution), r ? r.error : 'cancelled', '', '', '', '']);
         continue;
       }
       const { grid, mesh } = r.value;
+      const c0 = performance.now();
+      await meshVertexColours(scene, mesh, Math.max(...grid.step));
+      const colourSeconds = (performance.now() - c0) / 1000;
       const voxels = (grid.nx + 1) * (grid.ny + 1) * (grid.nz + 1);
       rows.push([
         name,
@@ -39,8 +44,9 @@ export async function run(): Promise<void> {
         seconds.toFixed(2),
         String(mesh.triangles.length / 3),
         meshVolume(mesh) > 0 ? '+' : '−',
+        colourSeconds.toFixed(2),
       ]);
     }
   }
-  printTable(['example', 'N', 'voxels/s', 's', 'triangles', 'vol'], rows);
+  printTable(['example', 'N', 'voxels/s', 's', 'triangles', 'vol', 'colour s'], rows);
 }

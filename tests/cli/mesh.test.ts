@@ -1,13 +1,18 @@
 /**
  * `kleinflow mesh` through the real binary: the Fig. 26 quasi-sphere as binary STL that parses
- * back into a closed, consistently oriented mesh, progress on stderr; an unbounded graph without
+ * back into a closed, consistently oriented mesh, progress on stderr; the same triangles with the
+ * render's colours as GLB (Khronos-validated) and 3MF; an unbounded graph without
  * --bounds, a 2D graph and bad options are refused in one line.
  */
 import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { WebIO } from '@gltf-transform/core';
+import { unzipSync } from 'fflate';
+import { validateBytes } from 'gltf-validator';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { readStl } from '../../src/io/stl.ts';
+import { unmatchedEdges } from '../shader-gen/space/coloured-mesh.ts';
 import { ROOT, runCli } from './run-cli.ts';
 
 const example3d = (name: string) => join(ROOT, `examples/3d/${name}.kleinflow.json`);
@@ -52,6 +57,54 @@ describe('kleinflow mesh', () => {
     const { edges, bad } = edgeCounts(triangles);
     expect(bad).toBe(0);
     expect(edges).toBe(3 * triangles.length);
+  });
+
+  it('writes the same closed mesh with the render’s colours as .glb and .3mf, chosen by the extension', async () => {
+    const mesh = (file: string) => {
+      const r = runCli(['mesh', example3d('fig26-quasi-sphere'), '--out', join(dir, file), '-r', '12']);
+      expect(r.status).toBe(0);
+      return Number(/\((\d+) triangles/.exec(r.stdout)?.[1]);
+    };
+    const stlCount = mesh('quasi.stl');
+    expect(mesh('quasi.glb')).toBe(stlCount);
+    expect(mesh('QUASI.3MF')).toBe(stlCount);
+
+    const glb = new Uint8Array(readFileSync(join(dir, 'quasi.glb')));
+    expect((await validateBytes(glb)).issues.numErrors).toBe(0);
+    const primitive = (await new WebIO().readBinary(glb)).getRoot().listMeshes()[0]!.listPrimitives()[0]!;
+    const indices = [...primitive.getIndices()!.getArray()!];
+    expect(indices.length).toBe(3 * stlCount);
+    expect(unmatchedEdges(indices)).toBe(0);
+    // The quasi-sphere is coloured by depth on the wheel: many colours, none of them black.
+    const rgb = primitive.getAttribute('COLOR_0')!.getArray()!;
+    const distinct = new Set<string>();
+    for (let v = 0; v < rgb.length; v += 3) {
+      expect(Math.max(rgb[v]!, rgb[v + 1]!, rgb[v + 2]!)).toBeGreaterThan(0.1);
+      distinct.add(`${rgb[v]},${rgb[v + 1]},${rgb[v + 2]}`);
+    }
+    expect(distinct.size).toBeGreaterThan(3);
+
+    const model = new TextDecoder().decode(
+      unzipSync(readFileSync(join(dir, 'QUASI.3MF')))['3D/3dmodel.model'],
+    );
+    const colours = model.match(/<m:color color="#[0-9A-F]{6}"\/>/g) ?? [];
+    expect(colours.length).toBeGreaterThan(3);
+    const triangles = [
+      ...model.matchAll(
+        /<triangle v1="(\d+)" v2="(\d+)" v3="(\d+)" pid="1" p1="(\d+)" p2="(\d+)" p3="(\d+)"\/>/g,
+      ),
+    ];
+    expect(triangles.length).toBe(stlCount);
+    expect(triangles.flatMap((t) => t.slice(4, 7).map(Number)).every((p) => p < colours.length)).toBe(true);
+    expect(unmatchedEdges(triangles.flatMap((t) => t.slice(1, 4).map(Number)))).toBe(0);
+  });
+
+  it('refuses an --out whose extension names no mesh format, before meshing', () => {
+    const out = join(dir, 'model.obj');
+    const r = runCli(['mesh', example3d('fig26-quasi-sphere'), '--out', out]);
+    expect(r.status).toBe(2);
+    expect(r.stderr).toMatch(/must end in \.stl, \.3mf or \.glb/);
+    expect(existsSync(out)).toBe(false);
   });
 
   it('asks for --bounds on the infinite sphairahedron, and meshes a slab of it when given', () => {

@@ -1,6 +1,6 @@
 /**
  * An automated WCAG 2.1 A/AA audit (axe-core) of what a class sees: the editor with an example,
- * the examples gallery, Help, Present, and the phone layout (390×844). No serious or critical
+ * the examples gallery, Help, the mesh export dialog, Present, and the phone layout (390×844). No serious or critical
  * violation may remain. axe's own source is injected into the page, so it audits the real DOM
  * with the browser's computed styles (contrast needs those).
  */
@@ -11,7 +11,7 @@ import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
 import { waitRendered } from './editor-page.ts';
-import { openViaPicker } from './io-page.ts';
+import { menu, openViaPicker } from './io-page.ts';
 
 const axeSource = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
 const shots = join(repoRoot, 'test-artifacts');
@@ -108,6 +108,17 @@ describe('accessibility audit (axe-core, WCAG 2.1 A/AA)', () => {
     await expectClean(page, async () => {
       await page.keyboard.press('Escape');
       await help.waitFor({ state: 'detached' });
+    });
+  }, 60_000);
+
+  it('the mesh export dialog, with its format choice', async () => {
+    await menu(page, 'Export', 'Mesh \\(3D print');
+    const dialog = page.getByRole('dialog', { name: 'Export mesh' });
+    await dialog.waitFor();
+    await dialog.getByLabel('Format').selectOption('3mf');
+    await expectClean(page, async () => {
+      await page.keyboard.press('Escape');
+      await dialog.waitFor({ state: 'detached' });
     });
   }, 60_000);
 

@@ -149,7 +149,7 @@ describe('item 7', () => {
     await page.context().close();
   }, 120_000);
 
-  it('the texts the lesson showed cut off fit: field labels, 3D coordinates, the STL box, the save state', async () => {
+  it('the texts the lesson showed cut off fit: field labels, 3D coordinates, the mesh box, the save state', async () => {
     const page = await newPage(DESKTOP);
     // What a box shows cut off: its text is wider than the box (an ellipsis or a hidden end).
     const cut = (selector: string) =>
@@ -168,8 +168,8 @@ describe('item 7', () => {
     expect(await cut('.react-flow__node .kf-field__label')).toEqual([]);
     expect(await cut('.kf-point__xyz input')).toEqual([]);
     await page.screenshot({ path: join(shots, 'lesson-fields.png') });
-    await menu(page, 'Export', 'STL mesh');
-    const box = page.getByRole('dialog', { name: 'Export STL' }).locator('#kf-stl-bounds');
+    await menu(page, 'Export', 'Mesh \\(3D print');
+    const box = page.getByRole('dialog', { name: 'Export mesh' }).locator('#kf-mesh-bounds');
     const fits = await box.evaluate((input: HTMLInputElement) => {
       const ctx = document.createElement('canvas').getContext('2d')!;
       const style = getComputedStyle(input);

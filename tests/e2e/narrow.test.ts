@@ -28,7 +28,7 @@ const COMMANDS = [
   'PNG image…',
   'Animation…',
   'SVG (circles and lines)',
-  'STL mesh (3D print)…',
+  'Mesh (3D print)…',
   'Copy share link',
   'GLSL shader (.frag)',
   'Shadertoy (.shadertoy.glsl)',

@@ -26,7 +26,7 @@ import { openPastedText } from './pasted-document.ts';
 import { clearFragment, readStartupLink, shareLinkFor } from './share-link.ts';
 import { Toast, type ToastMessage } from './Toast.tsx';
 import { useAnimationExport } from './use-animation-export.tsx';
-import { useStlExport } from './use-stl-export.tsx';
+import { useMeshExport } from './use-mesh-export.tsx';
 
 interface Options {
   readonly store: EditorStore;
@@ -218,7 +218,7 @@ export function useDocumentIo({
     viewSize: renderSize,
     say,
   });
-  const stl = useStlExport({ store, say });
+  const mesh = useMeshExport({ store, say });
   const svg = () => {
     if (currentScene3d.current) return say('error', SVG_NOT_3D);
     const { doc } = store.getState();
@@ -231,7 +231,7 @@ export function useDocumentIo({
     scene3d
       ? { label: 'SVG (circles and lines)', hint: 'only for 2D graphs', disabled: true, onSelect: svg }
       : { label: 'SVG (circles and lines)', hint: 'vector, mirrors only', onSelect: svg },
-    stl.item,
+    mesh.item,
     { label: 'Copy share link', hint: 'graph in the URL', onSelect: () => void copyLink() },
     { label: 'GLSL shader (.frag)', hint: 'WebGL2, values baked', onSelect: () => glsl('webgl2') },
     { label: 'Shadertoy (.shadertoy.glsl)', hint: 'paste into Shadertoy', onSelect: () => glsl('shadertoy') },
@@ -261,7 +261,7 @@ export function useDocumentIo({
         />
       )}
       {animation.ui}
-      {stl.ui}
+      {mesh.ui}
     </>
   );
   const notify = useCallback((text: string) => say('ok', text), [say]);

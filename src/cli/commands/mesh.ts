@@ -1,7 +1,8 @@
 /**
- * `kleinflow mesh GRAPH --out MODEL.stl [--resolution N] [--bounds …]`: the solid of a 3D graph
- * (the orbit of its seeds) as a closed triangle mesh in binary STL, for 3D printing (paper §5.3.2;
- * docs/math-3d.md "Voxel mesh (paper §5.3.2)").
+ * `kleinflow mesh GRAPH --out MODEL.stl|.3mf|.glb [--resolution N] [--bounds …]`: the solid of a 3D
+ * graph (the orbit of its seeds) as a closed triangle mesh for 3D printing (paper §5.3.2; docs/math-3d.md
+ * "Voxel mesh (paper §5.3.2)"): binary STL, or with the render's colours per vertex 3MF (full-colour
+ * printers) or GLB (viewers) (paper Fig. 36; docs/math-3d.md "Coloured mesh (paper Fig. 36)").
  */
 import {
   type Bounds3,
@@ -10,7 +11,8 @@ import {
   meshScene3d,
   parseBounds,
 } from '../../../nodes/geometry/space/voxel-mesh.ts';
-import { writeStl } from '../../io/stl.ts';
+import { meshVertexColours } from '../../../shader-gen/space/mesh-colours.ts';
+import { MESH_EXTENSIONS, MESH_FORMATS, meshFileBytes, meshFormatOf } from '../../io/mesh-file.ts';
 import {
   expectPositionals,
   formatOptions,
@@ -26,7 +28,12 @@ import { progressLine } from '../progress.ts';
 export const DEFAULT_MESH_RESOLUTION = 64;
 
 const OPTIONS: readonly OptionSpec[] = [
-  { long: 'out', short: 'o', value: 'FILE', doc: 'the STL file to write (required)' },
+  {
+    long: 'out',
+    short: 'o',
+    value: 'FILE',
+    doc: `the file to write (required): ${MESH_EXTENSIONS}, chosen by its extension`,
+  },
   {
     long: 'resolution',
     short: 'r',
@@ -48,14 +55,18 @@ function boundsOption(text: string): Bounds3 {
 
 export const meshCommand: CliCommand = {
   name: 'mesh',
-  summary: 'write the solid of a 3D graph as a closed STL mesh (3D printing)',
+  summary: 'write the solid of a 3D graph as a closed mesh: STL, or coloured 3MF / GLB (3D printing)',
   usage: [
-    'Usage: kleinflow mesh GRAPH --out MODEL.stl [--resolution N] [--bounds X0,Y0,Z0,X1,Y1,Z1]',
+    'Usage: kleinflow mesh GRAPH --out MODEL.stl|.3mf|.glb [--resolution N] [--bounds X0,Y0,Z0,X1,Y1,Z1]',
     '',
     'Samples the inside test (the IIS ends inside a seed) on a voxel grid and extracts the',
     'surface by marching tetrahedra, each vertex moved onto the surface by bisection. The mesh',
     'is closed and consistently oriented (every edge in exactly two triangles). Graphs with plane',
     'mirrors or generators repeat without end: give --bounds. Progress goes to stderr.',
+    '',
+    'The extension picks the format: .stl (shape only), .3mf (full-colour printers and slicers:',
+    'a colour group, each triangle naming its corners’ colours) or .glb (glTF, COLOR_0 per vertex,',
+    'for viewers). The colours are the Render 3D node’s colouring at each vertex, without lighting.',
     '',
     formatOptions(OPTIONS),
   ].join('\n'),
@@ -64,6 +75,8 @@ export const meshCommand: CliCommand = {
     const [graphPath] = expectPositionals(parsed, ['GRAPH']);
     const output = stringOption(parsed, 'out');
     if (!output) throw usageError('missing --out MODEL.stl (where to write the mesh)');
+    const format = meshFormatOf(output);
+    if (!format) throw usageError(`--out ${output}: the file must end in ${MESH_EXTENSIONS} (the format)`);
     const resText = stringOption(parsed, 'resolution');
     const resolution =
       resText === undefined
@@ -87,8 +100,20 @@ export const meshCommand: CliCommand = {
     if (!result) throw new CliError(`${graphPath}: cancelled`);
     if (!result.ok) throw new CliError(`${graphPath}: no mesh: ${result.error}`);
     const { mesh, grid } = result.value;
+    let colours: Float32Array | null = null;
+    if (MESH_FORMATS[format].coloured) {
+      const colouring = progressLine(io.stderr, 'colouring');
+      colours = await meshVertexColours(picture.scene3d, mesh, Math.max(...grid.step), {
+        onProgress: (f) => {
+          colouring.update(f);
+          return true;
+        },
+      });
+      colouring.finish();
+    }
+    const bytes = await meshFileBytes(format, mesh, colours, `Kleinflow mesh of ${graphPath}`);
     try {
-      await io.writeFile(output, writeStl(mesh, `Kleinflow mesh of ${graphPath}`.slice(0, 80)));
+      await io.writeFile(output, bytes);
     } catch (e) {
       throw new CliError(fileErrorMessage('write', output, e));
     }

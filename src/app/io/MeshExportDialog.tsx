@@ -1,7 +1,8 @@
 /**
- * The STL export dialog (3D printing, paper §5.3.2): voxel resolution and an optional box; a
- * progress bar with Cancel while the solid is sampled and meshed on the CPU. The mesh is closed
- * and consistently oriented (docs/math-3d.md "Voxel mesh (paper §5.3.2)").
+ * The mesh export dialog (3D printing, paper §5.3.2 and Fig. 36): the format (STL, or 3MF / GLB with
+ * the render's colours), voxel resolution and an optional box; a progress bar with Cancel while the
+ * solid is sampled and meshed on the CPU. The mesh is closed and consistently oriented in every
+ * format (docs/math-3d.md "Voxel mesh (paper §5.3.2)", "Coloured mesh (paper Fig. 36)").
  */
 
 import { useState } from 'react';
@@ -11,26 +12,33 @@ import {
   MIN_MESH_RESOLUTION,
   parseBounds,
 } from '../../../nodes/geometry/space/voxel-mesh.ts';
+import { MESH_FORMATS, type MeshFormat } from '../../io/mesh-file.ts';
 import { useModalDialog } from '../use-modal-dialog.ts';
 import { ExportDialogShell, ExportRunFooter } from './ExportDialogShell.tsx';
 import { useExportRun } from './use-export-run.ts';
 
-export interface StlExportOptions {
+export interface MeshExportOptions {
+  readonly format: MeshFormat;
   readonly resolution: number;
   readonly bounds?: Bounds3;
 }
 
 interface Props {
   /** Meshes and downloads; resolves false when cancelled. `onProgress` returning false cancels. */
-  run(o: StlExportOptions, onProgress: (f: number) => boolean): Promise<boolean>;
+  run(o: MeshExportOptions, onProgress: (f: number) => boolean): Promise<boolean>;
   onClose(): void;
 }
 
-export const DEFAULT_STL_RESOLUTION = 64;
+export const DEFAULT_MESH_RESOLUTION = 64;
+/** The coloured formats' progress bar: meshing up to here, then colouring the vertices. */
+export const MESHING_SHARE = 0.6;
 
-export function StlExportDialog({ run, onClose }: Props) {
+const FORMATS = Object.keys(MESH_FORMATS) as MeshFormat[];
+
+export function MeshExportDialog({ run, onClose }: Props) {
   const dialog = useModalDialog(onClose);
-  const [resolution, setResolution] = useState(DEFAULT_STL_RESOLUTION);
+  const [format, setFormat] = useState<MeshFormat>('stl');
+  const [resolution, setResolution] = useState(DEFAULT_MESH_RESOLUTION);
   const [boundsText, setBoundsText] = useState('');
   const { progress, error, ...exportRun } = useExportRun(onClose);
   const busy = progress !== null;
@@ -40,7 +48,7 @@ export function StlExportDialog({ run, onClose }: Props) {
   const start = async () => {
     if (bounds && !bounds.ok) return;
     await exportRun.start((onProgress) =>
-      run({ resolution, ...(bounds?.ok ? { bounds: bounds.value } : {}) }, onProgress),
+      run({ format, resolution, ...(bounds?.ok ? { bounds: bounds.value } : {}) }, onProgress),
     );
   };
   const close = exportRun.close;
@@ -48,19 +56,36 @@ export function StlExportDialog({ run, onClose }: Props) {
   return (
     <ExportDialogShell
       dialogRef={dialog.ref}
-      title="Export STL"
+      title="Export mesh"
       lead={
         <>
           A closed mesh of the solid (the seeds’ orbit) for 3D printing, sampled on a voxel grid on the CPU.
+          3MF and GLB carry the render’s colouring at every vertex, unlit, for full-colour printers and
+          viewers.
         </>
       }
       onClose={close}
     >
       <div className="kf-export__grid">
-        <label htmlFor="kf-stl-resolution">Resolution</label>
+        <label htmlFor="kf-mesh-format">Format</label>
+        <span>
+          <select
+            id="kf-mesh-format"
+            value={format}
+            disabled={busy}
+            onChange={(e) => setFormat(e.target.value as MeshFormat)}
+          >
+            {FORMATS.map((f) => (
+              <option key={f} value={f}>
+                {MESH_FORMATS[f].label}
+              </option>
+            ))}
+          </select>
+        </span>
+        <label htmlFor="kf-mesh-resolution">Resolution</label>
         <span>
           <input
-            id="kf-stl-resolution"
+            id="kf-mesh-resolution"
             type="number"
             min={MIN_MESH_RESOLUTION}
             max={MAX_MESH_RESOLUTION}
@@ -77,10 +102,10 @@ export function StlExportDialog({ run, onClose }: Props) {
           />
           <span className="kf-export__note"> voxels along the longest side (time grows with its cube)</span>
         </span>
-        <label htmlFor="kf-stl-bounds">Box</label>
+        <label htmlFor="kf-mesh-bounds">Box</label>
         <span>
           <input
-            id="kf-stl-bounds"
+            id="kf-mesh-bounds"
             type="text"
             placeholder="auto"
             value={boundsText}
@@ -97,10 +122,14 @@ export function StlExportDialog({ run, onClose }: Props) {
       <ExportRunFooter
         progress={progress}
         progressText={(progress) =>
-          progress < 1 ? `Meshing… ${Math.round(progress * 100)}%` : 'Writing the STL…'
+          progress >= 1
+            ? `Writing the ${format.toUpperCase()}…`
+            : MESH_FORMATS[format].coloured && progress >= MESHING_SHARE
+              ? `Colouring the vertices… ${Math.round(progress * 100)}%`
+              : `Meshing… ${Math.round(progress * 100)}%`
         }
         error={boundsError ?? error}
-        startLabel={`Export ${resolution}³`}
+        startLabel={`Export ${format.toUpperCase()} ${resolution}³`}
         startDisabled={boundsError !== null}
         onStart={() => void start()}
         onCancel={exportRun.cancel}

@@ -1,16 +1,21 @@
 /**
- * Export → STL mesh in real Chromium: the Fig. 26 quasi-sphere downloads as a binary STL whose
- * mesh is closed and consistently oriented, with the triangle count in the toast; the infinite
- * sphairahedron without a box says that one is needed, in the dialog, and downloads nothing.
+ * Export → Mesh in real Chromium: the Fig. 26 quasi-sphere downloads as a binary STL whose
+ * mesh is closed and consistently oriented, with the triangle count in the toast, and as a 3MF
+ * with its colour group when that format is chosen; the infinite sphairahedron without a box says
+ * that one is needed, in the dialog, and downloads nothing.
  */
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
+import { unzipSync } from 'fflate';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { readStl } from '../../src/io/stl.ts';
 import { repoRoot, type ServedApp } from './app-server.ts';
 import { currentDoc, menu, openViaPicker } from './io-page.ts';
 import { openSmall3dPane } from './view-3d-page.ts';
+
+/** The Export menu's item (a regular expression: the parenthesis is escaped). */
+const MESH_ITEM = 'Mesh \\(3D print';
 
 let app: ServedApp;
 let page: Page;
@@ -45,15 +50,15 @@ async function openExample(id: string) {
   );
 }
 
-describe('Export → STL mesh', () => {
+describe('Export → Mesh', () => {
   it('downloads the quasi-sphere as a closed, oriented STL and says how many triangles', async () => {
     await openExample('fig26-quasi-sphere');
-    await menu(page, 'Export', 'STL mesh');
-    const dialog = page.getByRole('dialog', { name: 'Export STL' });
+    await menu(page, 'Export', MESH_ITEM);
+    const dialog = page.getByRole('dialog', { name: 'Export mesh' });
     await dialog.getByLabel('Resolution').fill('16');
     const [download] = await Promise.all([
       page.waitForEvent('download', { timeout: 90_000 }),
-      dialog.getByRole('button', { name: /^Export 16/ }).click(),
+      dialog.getByRole('button', { name: /^Export STL 16/ }).click(),
     ]);
     expect(download.suggestedFilename()).toMatch(/\.stl$/);
     const { triangles } = readStl(new Uint8Array(readFileSync((await download.path())!)));
@@ -72,16 +77,36 @@ describe('Export → STL mesh', () => {
     expect(Number(/(\d+) triangles/.exec(toast ?? '')?.[1])).toBe(triangles.length);
   }, 240_000);
 
+  it('downloads a 3MF with the render’s colours when that format is chosen', async () => {
+    await openExample('fig26-quasi-sphere');
+    await menu(page, 'Export', MESH_ITEM);
+    const dialog = page.getByRole('dialog', { name: 'Export mesh' });
+    await dialog.getByLabel('Format').selectOption('3mf');
+    await dialog.getByLabel('Resolution').fill('12');
+    const [download] = await Promise.all([
+      page.waitForEvent('download', { timeout: 90_000 }),
+      dialog.getByRole('button', { name: /^Export 3MF 12/ }).click(),
+    ]);
+    expect(download.suggestedFilename()).toMatch(/\.3mf$/);
+    const files = unzipSync(new Uint8Array(readFileSync((await download.path())!)));
+    const model = new TextDecoder().decode(files['3D/3dmodel.model']);
+    expect((model.match(/<m:color color="#[0-9A-F]{6}"\/>/g) ?? []).length).toBeGreaterThan(3);
+    const triangles = model.match(/<triangle [^>]*p1="\d+" p2="\d+" p3="\d+"\/>/g) ?? [];
+    const toast = await page.getByTestId('toast').textContent();
+    expect(toast).toMatch(/3MF mesh/);
+    expect(Number(/(\d+) triangles/.exec(toast ?? '')?.[1])).toBe(triangles.length);
+  }, 240_000);
+
   it('asks for a box when plane mirrors repeat the solid without end, and downloads nothing', async () => {
     await openExample('fig28-fractal-terrain');
     let downloaded = false;
     page.on('download', () => {
       downloaded = true;
     });
-    await menu(page, 'Export', 'STL mesh');
-    const dialog = page.getByRole('dialog', { name: 'Export STL' });
+    await menu(page, 'Export', MESH_ITEM);
+    const dialog = page.getByRole('dialog', { name: 'Export mesh' });
     await dialog.getByLabel('Resolution').fill('8');
-    await dialog.getByRole('button', { name: /^Export 8/ }).click();
+    await dialog.getByRole('button', { name: /^Export STL 8/ }).click();
     await expect
       .poll(() => dialog.getByRole('alert').textContent(), { timeout: 90_000 })
       .toMatch(/unbounded.*give bounds/);

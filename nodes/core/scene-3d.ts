@@ -112,7 +112,22 @@ export type Coloring3d =
   /** By the hit point's own coordinates (surface coordinates), `scale` world units per colour cycle. */
   | { readonly mode: 'surface'; readonly scale: number }
   /** By the final point of the IIS (Fig. 34), `scale` world units per colour cycle. */
-  | { readonly mode: 'final-point'; readonly scale: number };
+  | { readonly mode: 'final-point'; readonly scale: number }
+  /**
+   * By a measure m of the hit point p (Fig. 34): `distance` |p| from the origin, `argument`
+   * atan2(p_y, p_x)/2π turns about the z axis; t = offset + frequency·m picks the colour: the
+   * seed colour's hue turned by t (`wheel`), else the cosine palette a + b·cos(2π(c·t + d)).
+   */
+  | {
+      readonly mode: 'distance' | 'argument';
+      readonly wheel: boolean;
+      readonly a: Color;
+      readonly b: Color;
+      readonly c: Color;
+      readonly d: Color;
+      readonly frequency: number;
+      readonly offset: number;
+    };
 
 /** What the 3D view draws for a node (wireframe, in the node's colour). */
 export type Overlay3dShape =

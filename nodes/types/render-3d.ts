@@ -17,7 +17,9 @@ import {
   type Seed3d,
 } from '../core/scene-3d.ts';
 import { DEFAULT_COLORING } from '../core/tile-spec.ts';
+import type { Color } from '../core/values.ts';
 import { dist3, len3 } from '../geometry/space/vec3.ts';
+import { PALETTES } from './colour.ts';
 import { fail, fmt } from './shared.ts';
 import { cameraDiagnostics, gpuRangeDiagnostics3d, seedDiagnostics } from './space-checks.ts';
 import { element3Input, point3Input } from './space-shared.ts';
@@ -30,8 +32,14 @@ const [lx, ly, lz] = DEFAULT_LIGHTING_3D.direction;
 const setting = (label: string, value: number, doc: string, more?: true) =>
   ({ type: 'number', label, default: value, doc, ...(more ? { more } : {}) }) as const;
 
+/** The palette colours of the "custom" palette (the palette itself shows only in PALETTED modes). */
 const colour = (hex: string, label: string) =>
-  ({ type: 'color', label, default: hex, when: { param: 'coloring', is: ['cosine'] } }) as const;
+  ({ type: 'color', label, default: hex, when: { param: 'palette', is: ['custom'] } }) as const;
+
+/** The colourings a palette colours: by depth (cosine) and by a measure of the hit point. */
+const PALETTED = ['cosine', 'distance', 'argument'];
+/** The measured colourings (shader-gen/space/shade-3d.ts measureColour3d). */
+const MEASURED = ['distance', 'argument'];
 
 /** Clamps v into [lo, hi] (rounded when `integer`), saying so when it changes. */
 function clampTo(
@@ -52,6 +60,41 @@ function clampTo(
       ),
     );
   return c;
+}
+
+interface ColoringInputs {
+  readonly step: number;
+  readonly scale: number;
+  readonly cycles: number;
+  readonly offset: number;
+  readonly a: Color;
+  readonly b: Color;
+  readonly c: Color;
+  readonly d: Color;
+}
+
+/**
+ * The Coloring3d of a mode and palette: the wheel by depth is the depth-wheel; a named palette
+ * replaces a, b, c, d; distance has 1/scale palette steps per world unit, argument `cycles` per turn.
+ */
+function coloring3d(mode: string, palette: string, i: ColoringInputs): Coloring3d {
+  const scale = i.scale > 0 ? i.scale : 1;
+  const wheel = palette === 'wheel';
+  const { a, b, c, d } = PALETTES[palette] ?? i;
+  switch (mode) {
+    case 'cosine':
+      return wheel ? { mode: 'depth-wheel', step: i.step } : { mode, a, b, c, d, step: i.step };
+    case 'distance':
+    case 'argument': {
+      const frequency = mode === 'distance' ? 1 / scale : i.cycles;
+      return { mode, wheel, a, b, c, d, frequency, offset: i.offset };
+    }
+    case 'surface':
+    case 'final-point':
+      return { mode, scale };
+    default:
+      return { mode: 'depth-wheel', step: i.step };
+  }
 }
 
 export const render3dNode = defineNode({
@@ -92,7 +135,21 @@ export const render3dNode = defineNode({
       label: 'colour scale',
       default: 1,
       doc: 'world units per colour cycle',
-      when: { param: 'coloring', is: ['surface', 'final-point'] },
+      when: { param: 'coloring', is: ['surface', 'final-point', 'distance'] },
+    },
+    cycles: {
+      type: 'number',
+      label: 'colour cycles',
+      default: 1,
+      doc: 'palette cycles per turn about the z axis',
+      when: { param: 'coloring', is: ['argument'] },
+    },
+    offset: {
+      type: 'number',
+      label: 'colour offset',
+      default: 0,
+      doc: 'where the palette starts (palette steps, or turns of the wheel)',
+      when: { param: 'coloring', is: MEASURED },
     },
     a: colour(toHex(DEFAULT_COLORING.a), 'a (centre)'),
     b: colour(toHex(DEFAULT_COLORING.b), 'b (swing)'),
@@ -111,9 +168,18 @@ export const render3dNode = defineNode({
     coloring: {
       kind: 'enum',
       default: 'depth-wheel',
-      options: ['depth-wheel', 'cosine', 'surface', 'final-point'],
+      options: ['depth-wheel', 'cosine', 'surface', 'final-point', 'distance', 'argument'],
       label: 'colouring',
-      doc: 'depth-wheel: the seed colour turned by the depth; cosine: a palette by depth; surface: by the hit point; final-point: by where the IIS ends',
+      doc: 'depth-wheel: the seed colour turned by the depth; cosine: a palette by depth; surface: by the hit point; final-point: by where the IIS ends; distance / argument: a palette by the hit point’s distance from the origin / angle about the z axis',
+    },
+    palette: {
+      kind: 'enum',
+      // "custom" by default: documents saved before presets keep their own a, b, c, d.
+      default: 'custom',
+      options: ['custom', 'wheel', ...Object.keys(PALETTES)],
+      label: 'palette',
+      doc: 'a named cosine palette, "wheel" (the seed colour’s hue turned), or "custom" to set a, b, c, d yourself',
+      when: { param: 'coloring', is: PALETTED },
     },
     background: { kind: 'color', default: '#101018', label: 'background' },
   },
@@ -164,13 +230,8 @@ export const render3dNode = defineNode({
       occlusion: unit('occlusion', i.occlusion),
       shadow: unit('shadow', i.shadow),
     };
-    const coloring: Coloring3d =
-      params.coloring === 'cosine'
-        ? { mode: 'cosine', a: i.a, b: i.b, c: i.c, d: i.d, step: i.step }
-        : params.coloring === 'depth-wheel'
-          ? { mode: 'depth-wheel', step: i.step }
-          : { mode: params.coloring, scale: i.scale > 0 ? i.scale : 1 };
-    if ((params.coloring === 'surface' || params.coloring === 'final-point') && !(i.scale > 0))
+    const coloring = coloring3d(params.coloring, params.palette, i);
+    if (['surface', 'final-point', 'distance'].includes(params.coloring) && !(i.scale > 0))
       diagnostics.push(
         diag('clamped', { port: 'scale' }, `colour scale ${fmt(i.scale)} is not positive: 1 is used`),
       );

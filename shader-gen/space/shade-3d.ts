@@ -54,7 +54,31 @@ export function rgbToHsv(c: Color): [number, number, number] {
 const field = (p: Vec3, scale: number): Rgb =>
   [0, 1, 2].map((k) => 0.5 + 0.5 * Math.cos((2 * Math.PI * p[k]!) / scale)) as Rgb;
 
-/** The hit's base colour in sRGB. */
+/** A measured colouring of Coloring3d: by distance from the origin or by argument. */
+export type MeasureColoring3d = Extract<Coloring3d, { mode: 'distance' | 'argument' }>;
+
+/** The measure m of the point p: |p| (distance), or atan2(p_y, p_x)/2π turns in (−½, ½] (argument). */
+export function measure3d(mode: MeasureColoring3d['mode'], p: Vec3): number {
+  return mode === 'distance' ? Math.hypot(p[0], p[1], p[2]) : Math.atan2(p[1], p[0]) / (2 * Math.PI);
+}
+
+/**
+ * The palette colour at t = offset + frequency·m (sRGB): the seed colour's hue turned by t turns
+ * (wheel), else the cosine palette a + b·cos(2π(c·t + d)).
+ */
+export function measureColour3d(coloring: MeasureColoring3d, seedColour: Color, p: Vec3): Rgb {
+  const t = coloring.offset + coloring.frequency * measure3d(coloring.mode, p);
+  if (!coloring.wheel) return cosinePalette(coloring.a, coloring.b, coloring.c, coloring.d, t);
+  const [h, s, v] = rgbToHsv(seedColour);
+  return hsvToRgb(h + t, s, v);
+}
+
+/**
+ * The hit's base colour in sRGB (`point`: the hit on the surface; `final`: where its IIS ends).
+ * The measured colourings read the hit point: neighbouring pixels of a quasi-sphere end their
+ * walks on unrelated copies, so a final-point measure is noise until many samples average it
+ * (docs/math-3d.md §9 "Colour").
+ */
 export function baseColour(
   coloring: Coloring3d,
   seedColour: Color,
@@ -73,6 +97,9 @@ export function baseColour(
       return field(point, coloring.scale);
     case 'final-point':
       return field(final, coloring.scale);
+    case 'distance':
+    case 'argument':
+      return measureColour3d(coloring, seedColour, point);
   }
 }
 

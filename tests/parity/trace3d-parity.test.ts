@@ -7,10 +7,11 @@
  * time low. Also: the baked program draws what the uniform one draws, new values re-render without
  * a new program, and the hand-written bench tracers (tests/bench/hand-written/trace3d.ts)
  * draw the same picture as the generated one, and the colour variant shades like the CPU in every
- * colouring (the Figs. 33–34 examples).
+ * colouring (the orbit colouring examples, and the measures of Fig. 34).
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
+import { PALETTES } from '../../nodes/types/colour.ts';
 import { cameraUniforms, compile3d } from '../../shader-gen/space/compile-3d.ts';
 import { prepareTrace3d } from '../../shader-gen/space/plan.ts';
 import { probeScene3d, tracePixel } from '../../shader-gen/space/render-3d.ts';
@@ -87,6 +88,21 @@ function compare(scene: Scene3d, gpuData: Float32Array, anyDepth = false) {
 
 const examples = exampleScenes3d();
 
+/**
+ * The examples with their own geometry: the first of those that differ only in colouring (the
+ * Figs. 33–34 quasi-spheres are Fig. 26's), since hit, depth and seed do not depend on colour.
+ */
+function distinctGeometry(scenes: Record<string, Scene3d>): Record<string, Scene3d> {
+  const seen = new Set<string>();
+  return Object.fromEntries(
+    Object.entries(scenes).filter(([, s]) => {
+      const { elements, seeds, camera, maxIterations, marchSteps, deScale } = s;
+      const key = JSON.stringify({ elements, seeds, camera, maxIterations, marchSteps, deScale });
+      return !seen.has(key) && seen.add(key);
+    }),
+  );
+}
+
 describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
   const scenes: Record<string, Scene3d> = {
     fig11: FIG11,
@@ -94,7 +110,7 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
     planes: PLANES,
     // Every 3D example, the sphairahedra (Figs. 26, 28, the cake: overlapping mirrors, the
     // mirrored covers of docs/math-3d.md §8) and the unbounded plane orbits (Figs. 17–18) included.
-    ...examples,
+    ...distinctGeometry(examples),
   };
   for (const [name, scene] of Object.entries(scenes)) {
     it(`${name}: hit/miss, depth and seed agree on ≥ 99.5 % of robust pixels`, async () => {
@@ -113,18 +129,29 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
   }
 
   it('shades like the CPU: normals, every colouring, light, occlusion and shadow (colour variant)', async () => {
-    // Fig. 11: the depth wheel; Fig. 33: the cosine palette; Fig. 34: by final point, and the
-    // same scene by surface point.
-    const fig34 = examples['fig34-colour-by-final-point']!;
+    // Fig. 11: the depth wheel; the cosine palette; by final point, and the same scene by surface
+    // point, by distance from the origin (a named palette) and by argument (the colour wheel).
+    const fig34 = examples['orbit-colour-by-final-point']!;
+    const { a, b, c, d } = PALETTES.dusk!;
     const scenes: Record<string, Scene3d> = {
       fig11: FIG11,
       fig24: examples['fig24-orbit-of-a-cube']!,
-      fig33: examples['fig33-cosine-palette']!,
+      cosine: examples['orbit-cosine-palette']!,
       fig34: fig34,
       'fig34 by surface': { ...fig34, coloring: { mode: 'surface', scale: 0.45 } },
+      'by distance': {
+        ...fig34,
+        coloring: { mode: 'distance', wheel: false, a, b, c, d, frequency: 2.5, offset: 0.1 },
+      },
+      'by argument': {
+        ...fig34,
+        coloring: { mode: 'argument', wheel: true, a, b, c, d, frequency: 2, offset: 0.3 },
+      },
+      // A quasi-sphere (overlapping mirrors, deep tiny tiles) by the hit point's distance.
+      'fig34 quasi-sphere by distance': examples['fig34-quasi-sphere-by-distance']!,
     };
     expect(new Set(Object.values(scenes).map((s) => s.coloring.mode))).toEqual(
-      new Set(['depth-wheel', 'cosine', 'final-point', 'surface']),
+      new Set(['depth-wheel', 'cosine', 'final-point', 'surface', 'distance', 'argument']),
     );
     const results: { name: string; pixels: number; median: number; p95: number; byPoint: boolean }[] = [];
     for (const [name, scene] of Object.entries(scenes)) {

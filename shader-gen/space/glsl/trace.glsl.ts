@@ -126,6 +126,30 @@ function baseColourGlsl(coloring: Coloring3d, v: SceneValues): GlslFunction {
       const at = coloring.mode === 'surface' ? 'point' : 'fin';
       return glslFunction('baseColour', `${head}\n  return colourField(${at}, ${scale});\n}`, [fieldGlsl]);
     }
+    case 'distance':
+    case 'argument': {
+      // ../shade-3d.ts measureColour3d: t = offset + frequency·m at the hit point.
+      const [a, b, c, d] = (['a', 'b', 'c', 'd'] as const).map((k) =>
+        v.vec(`u_palette${k.toUpperCase()}`, coloring[k]),
+      );
+      const wheel = v.float('u_colorWheel', coloring.wheel ? 1 : 0);
+      const frequency = v.float('u_colorFrequency', coloring.frequency);
+      const offset = v.float('u_colorOffset', coloring.offset);
+      const m =
+        coloring.mode === 'distance'
+          ? 'length(point)'
+          : `atan(point.y, point.x) / ${floatLiteral(2 * Math.PI)}`;
+      return glslFunction(
+        'baseColour',
+        `${head}
+  float t = ${offset} + ${frequency} * ${m};
+  if (${wheel} < 0.5) return cosinePalette(${a}, ${b}, ${c}, ${d}, t);
+  vec3 hsv = rgbToHsv(seed.rgb);
+  return hsvToRgb(hsv.x + t, hsv.y, hsv.z);
+}`,
+        [cosinePaletteGlsl, rgbToHsvGlsl, hsvToRgbGlsl],
+      );
+    }
   }
 }
 

@@ -24,6 +24,8 @@ import {
 } from '../support/glslang.ts';
 import { exampleScenes3d, FIG11, LONE_SPHERE, MOBIUS_BOX, PLANES } from './scenes-3d.ts';
 
+const PALETTE = { a: [0.5, 0.5, 0.5], b: [0.5, 0.5, 0.5], c: [1, 1, 1], d: [0, 0.33, 0.67] } as const;
+
 const COLORINGS: Record<string, Coloring3d> = {
   'depth-wheel': { mode: 'depth-wheel', step: 0.1 },
   cosine: {
@@ -36,6 +38,8 @@ const COLORINGS: Record<string, Coloring3d> = {
   },
   surface: { mode: 'surface', scale: 2 },
   'final-point': { mode: 'final-point', scale: 1.5 },
+  distance: { ...PALETTE, mode: 'distance', wheel: false, frequency: 2, offset: 0.1 },
+  argument: { ...PALETTE, mode: 'argument', wheel: true, frequency: 3, offset: 0 },
 };
 
 const SCENES: Record<string, Scene3d> = {

@@ -2,8 +2,13 @@
  * Colouring of an IIS result (docs/math.md "Colouring"), in linear light. The GLSL twin lives in
  * glsl/colour (shader issue) and follows these functions line by line.
  */
+
 import type { Coloring, TileSpec } from '../nodes/core/scene.ts';
 import type { Circle, Color } from '../nodes/core/values.ts';
+import { checkedFormula } from '../nodes/formula/checked.ts';
+import type { FormulaValue } from '../nodes/formula/functions.ts';
+import { COLOUR_NAMES } from '../nodes/formula/names.ts';
+import { FormulaError } from '../nodes/formula/parse.ts';
 import { type PictureMap, resolvePicture, samplePicture } from './picture.ts';
 import { placeUv, rotationPair } from './placement.ts';
 import { seedColour } from './seeds.ts';
@@ -49,6 +54,8 @@ export interface MeasureSource {
   readonly edge: number;
   /** The orbit's least distance to the trap circle (orbitTrapDistance at every point of the path). */
   readonly trap: number;
+  /** The depth (inversions applied): read by the `formula` measure. */
+  readonly depth: number;
 }
 
 /** Distance from (x, y) to the trap circle: ||p − c| − r| (r = 0: a point trap). */
@@ -76,7 +83,30 @@ export function measureValue(coloring: MeasureColoring, m: MeasureSource): numbe
       return Math.log(m.s);
     case 'trap':
       return m.trap;
+    case 'formula':
+      return colourFormulaValue(coloring.formula ?? '0', m);
   }
+}
+
+/** One scratch environment for colour formulas (the CPU renderer is single-threaded per worker). */
+const colourEnv = { z: [0, 0] as [number, number], x: 0, y: 0, n: 0, s: 1 };
+
+/**
+ * The `formula` measure: the tile's colour function of z = (x, y), n and s (docs/formula.md
+ * "Colour functions"); 0 where it is not a finite number, as on the GPU's float path it would be
+ * undefined (the tile node refuses a formula that does not check).
+ */
+export function colourFormulaValue(text: string, m: MeasureSource): number {
+  const f = checkedFormula(text, COLOUR_NAMES);
+  if (f instanceof FormulaError || f.type !== 'number') return 0;
+  colourEnv.z[0] = m.x;
+  colourEnv.z[1] = m.y;
+  colourEnv.x = m.x;
+  colourEnv.y = m.y;
+  colourEnv.n = m.depth;
+  colourEnv.s = m.s;
+  const v = f.run(colourEnv as unknown as Record<string, FormulaValue>) as number;
+  return Number.isFinite(v) ? v : 0;
 }
 
 /** Linear colour of a measure m: the cosine palette of t = offset + scale·m. */

@@ -107,7 +107,7 @@ export function sampleColour(
   }
   const measure =
     coloring.mode === 'measure'
-      ? measureValue(coloring, { x: st.x, y: st.y, s: st.s, edge: d, trap: trapDistance })
+      ? measureValue(coloring, { x: st.x, y: st.y, s: st.s, edge: d, trap: trapDistance, depth: st.depth })
       : undefined;
   return shade(
     tile,

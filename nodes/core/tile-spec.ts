@@ -61,10 +61,15 @@ export type Coloring =
       readonly offset: number;
       /** The orbit trap: a circle (radius 0: a point); read by the `trap` measure only. */
       readonly trap: Circle;
+      /**
+       * The `formula` measure's formula of the final point z = (x, y), the depth n and the scale s
+       * (docs/formula.md "Colour functions"); checked by the tile node, so it always checks here.
+       */
+      readonly formula?: string;
     };
 
 /** What a measure colouring measures (docs/math.md "Colouring by a measure"). */
-export const MEASURES = ['x', 'y', 'radius', 'argument', 'edge', 'speed', 'trap'] as const;
+export const MEASURES = ['x', 'y', 'radius', 'argument', 'edge', 'speed', 'trap', 'formula'] as const;
 export type Measure = (typeof MEASURES)[number];
 
 /**

@@ -32,6 +32,18 @@ export const SOLID_NAMES: Readonly<Record<string, FormulaType>> = {
   z: 'number',
 };
 
+/**
+ * A colour function's names (the tile's `formula` colouring): the run's final point z = (x, y), its
+ * depth n (inversions applied) and its accumulated scale s.
+ */
+export const COLOUR_NAMES: Readonly<Record<string, FormulaType>> = {
+  z: 'point',
+  x: 'number',
+  y: 'number',
+  n: 'number',
+  s: 'number',
+};
+
 /** The node types whose `formula` param is a formula of FORMULA_NAMES (and the time t among them). */
 export const FORMULA_NODE_TYPES: ReadonlySet<string> = new Set(['formula', 'seed-shape', 'seed-solid']);
 

@@ -10,9 +10,15 @@ import {
   type TileSpec,
 } from '../core/tile-spec.ts';
 import { BUILTIN_PICTURE, type Color, type Vec2 } from '../core/values.ts';
+import { formulaFor } from '../formula/checked.ts';
+import { COLOUR_NAMES } from '../formula/names.ts';
+import { MAX_FORMULA_LENGTH } from '../formula/parse.ts';
 import { dist } from '../geometry/vec.ts';
 import { PALETTES } from './colour.ts';
 import { fmt } from './shared.ts';
+
+/** The formula mode's default colour function: bands by depth, turned by the final point's angle. */
+export const COLOUR_FORMULA = 'n / 8 + 0.25 * sin(6 * atan2(y, x))';
 
 const d = DEFAULT_TILE;
 const cos = DEFAULT_COLORING;
@@ -28,6 +34,7 @@ const MEASURE_MODES = {
   'edge-distance': 'edge',
   'escape-speed': 'speed',
   'orbit-trap': 'trap',
+  formula: 'formula',
 } as const satisfies Record<string, Measure | null>;
 type MeasureMode = keyof typeof MEASURE_MODES;
 const MEASURE_MODE_NAMES = Object.keys(MEASURE_MODES) as MeasureMode[];
@@ -73,7 +80,7 @@ export const tileNode = defineNode({
   label: 'Tile colouring',
   category: 'Colour',
   color: '#b07cf0',
-  doc: 'How points are coloured: by depth (HSV, cosine palette, two tones), by the final point, the distance to the tile edge, the escape speed or an orbit trap (palettes), a picture seen through the kaleidoscope, or only the limit set; plus tile fill, orbit seeds, an inner area, limit-set colour, background and edges.',
+  doc: 'How points are coloured: by depth (HSV, cosine palette, two tones), by the final point, the distance to the tile edge, the escape speed, an orbit trap or a formula of your own (palettes), a picture seen through the kaleidoscope, or only the limit set; plus tile fill, orbit seeds, an inner area, limit-set colour, background and edges.',
   inputs: {
     a: colour(cos.a, 'palette a', { when: CUSTOM }),
     b: colour(cos.b, 'palette b', { when: CUSTOM }),
@@ -144,6 +151,14 @@ export const tileNode = defineNode({
       label: 'palette',
       doc: 'a named cosine palette, or "custom" to set a, b, c, d yourself',
       when: PALETTED,
+    },
+    formula: {
+      kind: 'string',
+      default: COLOUR_FORMULA,
+      maxLength: MAX_FORMULA_LENGTH,
+      label: 'colour formula',
+      doc: 'formula mode: a formula of the final point z = (x, y), the depth n and the scale s; palette t = offset + scale × it',
+      when: inMode('formula'),
     },
     coordinate: {
       kind: 'enum',
@@ -240,6 +255,16 @@ export const tileNode = defineNode({
         ],
       };
     const palette = params.palette === 'custom' ? c : (PALETTES[params.palette] ?? c);
+    if (mode === 'formula') {
+      const checked = formulaFor(
+        nodeId,
+        params.formula,
+        COLOUR_NAMES,
+        ['number'],
+        'a colour formula gives a number',
+      );
+      if ('problem' in checked) return { diagnostics: [checked.problem] };
+    }
     const coloring: Coloring = isMeasureMode(mode)
       ? {
           mode: 'measure',
@@ -251,6 +276,7 @@ export const tileNode = defineNode({
           scale: params.scale,
           offset: params.offset,
           trap: { c: inputs.trapCenter, r: inputs.trapRadius },
+          ...(mode === 'formula' ? { formula: params.formula } : {}),
         }
       : mode === 'cosine'
         ? { mode, a: palette.a, b: palette.b, c: palette.c, d: palette.d, step: params.step }

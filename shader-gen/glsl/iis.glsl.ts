@@ -9,10 +9,14 @@
  */
 import type { Measure, Scene, SceneElement } from '../../nodes/core/scene.ts';
 import type { Circle } from '../../nodes/core/values.ts';
+import { checkedFormula } from '../../nodes/formula/checked.ts';
+import { COLOUR_NAMES } from '../../nodes/formula/names.ts';
+import { FormulaError } from '../../nodes/formula/parse.ts';
 import type { ElementRecord } from '../elements/element-kind.ts';
 import { elementRecord } from '../elements/index.ts';
 import { farDisk, limitReach } from '../far-disk.ts';
 import { type ColourSpace, shadeGlsl } from './colour.glsl.ts';
+import { formulaGlsl } from './formula.glsl.ts';
 import { floatLiteral } from './literal.ts';
 import type { SeedArg, SeedsGlsl } from './seeds.glsl.ts';
 import { type GlslFunction, glslFunction } from './snippet.ts';
@@ -182,6 +186,26 @@ float orbitTrapDistance(vec2 p, vec3 trap) {
 }`,
 );
 
+/**
+ * The GLSL of colour.ts colourFormulaValue: the colour function written from its checked tree
+ * (formula.glsl.ts: nothing of the text is pasted), 0 where it is not finite, like the CPU.
+ */
+function colourFormulaGlsl(text: string): { expr: string; deps: readonly GlslFunction[] } {
+  const f = checkedFormula(text, COLOUR_NAMES);
+  if (f instanceof FormulaError || f.type !== 'number') return { expr: '0.0', deps: [] };
+  const body = formulaGlsl(f.tree, { z: 'p', x: 'p.x', y: 'p.y', n: 'float(depth)', s: 's' });
+  const fn = glslFunction(
+    'colourFormula',
+    `
+float colourFormula(vec2 p, int depth, float s) {
+  float v = ${body.expr};
+  return isnan(v) || isinf(v) ? 0.0 : v;
+}`,
+    [...body.deps],
+  );
+  return { expr: 'colourFormula(p, depth, s)', deps: [fn] };
+}
+
 /** The GLSL expression of colour.ts measureValue (every input in scope in shadeSample). */
 function measureExpr(measure: Measure): string {
   switch (measure) {
@@ -199,6 +223,8 @@ function measureExpr(measure: Measure): string {
       return 'log(s)';
     case 'trap':
       return 'trap';
+    case 'formula':
+      return 'colourFormula(p, depth, s)';
   }
 }
 
@@ -262,6 +288,7 @@ export function shadeSampleGlsl(
   }
   const shadeArgs = ['clipped', 'escaped', 'depth', 'edgePixels', 'p', 'limitPixels', 'seed'];
   if (coloring.mode === 'measure') {
+    if (coloring.measure === 'formula') deps.push(...colourFormulaGlsl(coloring.formula ?? '0').deps);
     lines.push(`  float measure = ${measureExpr(coloring.measure)};`);
     shadeArgs.push('measure');
   }

@@ -22,7 +22,7 @@ describe('measureValue', () => {
   it('reads the final point: x, y, |p| and arg p in turns within (−½, ½]', () => {
     fc.assert(
       fc.property(coord, coord, (x, y) => {
-        const src = { x, y, s: 1, edge: 0, trap: 0 };
+        const src = { x, y, s: 1, edge: 0, trap: 0, depth: 0 };
         expect(measureValue(coloring('x'), src)).toBe(x);
         expect(measureValue(coloring('y'), src)).toBe(y);
         expect(measureValue(coloring('radius'), src)).toBeCloseTo(Math.sqrt(x * x + y * y), 9);
@@ -40,13 +40,23 @@ describe('measureValue', () => {
     );
   });
 
+  it('a colour function reads z = (x, y), the depth n and the scale s; not finite is 0', () => {
+    const f = (formula: string) => ({ ...coloring('formula'), formula });
+    const src = { x: 3, y: 4, s: 8, edge: 0, trap: 0, depth: 5 };
+    expect(measureValue(f('length(z) + n * 10 + log(s) / log(2)'), src)).toBeCloseTo(5 + 50 + 3, 12);
+    expect(measureValue(f('x - y'), src)).toBe(-1);
+    expect(measureValue(f('1 / (n - 5)'), src)).toBe(0); // ∞ → 0, as the GLSL twin
+    expect(measureValue(f('sqrt(-n)'), src)).toBe(0); // NaN → 0
+  });
+
   it('escape speed is ln s: it adds up along a path (ln(s1·s2) = ln s1 + ln s2)', () => {
     fc.assert(
       fc.property(
         fc.double({ min: 1e-3, max: 1e3, noNaN: true }),
         fc.double({ min: 1e-3, max: 1e3, noNaN: true }),
         (s1, s2) => {
-          const at = (s: number) => measureValue(coloring('speed'), { x: 0, y: 0, s, edge: 0, trap: 0 });
+          const at = (s: number) =>
+            measureValue(coloring('speed'), { x: 0, y: 0, s, edge: 0, trap: 0, depth: 0 });
           expect(at(s1 * s2)).toBeCloseTo(at(s1) + at(s2), 9);
         },
       ),

@@ -15,6 +15,7 @@ describe('tile measure modes', () => {
       ['edge-distance', {}, 'edge'],
       ['escape-speed', {}, 'speed'],
       ['orbit-trap', {}, 'trap'],
+      ['formula', {}, 'formula'],
     ] as const;
     for (const [mode, extra, measure] of cases) {
       for (const [name, p] of Object.entries(PALETTES)) {
@@ -45,12 +46,26 @@ describe('tile measure modes', () => {
 
   it('shows the palette, scale and offset in the measure modes, the trap only for the trap', () => {
     const def = defOf('tile');
-    for (const mode of ['final-point', 'edge-distance', 'escape-speed', 'orbit-trap']) {
+    for (const mode of ['final-point', 'edge-distance', 'escape-speed', 'orbit-trap', 'formula']) {
       expect(isFieldShown(def, 'palette', { mode })).toBe(true);
       expect(isFieldShown(def, 'scale', { mode })).toBe(true);
       expect(isFieldShown(def, 'trapCenter', { mode })).toBe(mode === 'orbit-trap');
       expect(isFieldShown(def, 'coordinate', { mode })).toBe(mode === 'final-point');
+      expect(isFieldShown(def, 'formula', { mode })).toBe(mode === 'formula');
     }
     expect(isFieldShown(def, 'scale', { mode: 'cosine' })).toBe(false);
+  });
+
+  it('formula mode: the colour function travels with the colouring; a mistake is KF327 on the node', () => {
+    const coloring = tileOf({ mode: 'formula', formula: 'n + length(z)' }).coloring;
+    expect(coloring).toMatchObject({ mode: 'measure', measure: 'formula', formula: 'n + length(z)' });
+    // the formula is only carried in formula mode
+    expect(tileOf({ mode: 'escape-speed', formula: 'n' }).coloring).not.toHaveProperty('formula');
+    const wrong = evalNode('tile', { mode: 'formula', formula: 'z * 2' });
+    expect(wrong.diagnostics.map((d) => d.code)).toEqual(['KF327']);
+    expect(wrong.diagnostics[0]!.message).toContain('a colour formula gives a number, not a point');
+    expect(evalNode('tile', { mode: 'formula', formula: 'n +' }).diagnostics[0]!.code).toBe('KF327');
+    // a mistake in the formula of another mode is no mistake (the field is hidden and unused)
+    expect(evalNode('tile', { mode: 'cosine', formula: 'n +' }).diagnostics).toEqual([]);
   });
 });

@@ -326,6 +326,15 @@ export const HAND_MADE_SCENES: Readonly<Record<string, Scene>> = {
     tile: { seeds: [SEED_DISK] },
   }),
   'triangle-333-orbit-trap': makeScene(TRIANGLE_333, { coloring: measureColoring('trap', 2), scale: 3 }),
+  // A colour function (docs/formula.md "Colour functions"): depth, scale and the final point at once.
+  'schottky-colour-formula': makeScene(SCHOTTKY, {
+    coloring: {
+      ...(measureColoring('formula', 0.5) as object),
+      formula: 'n / 4 + 0.3 * sin(3 * atan2(y, x)) + log(s) / 8',
+    } as Coloring,
+    maxIterations: 60,
+    scale: 5,
+  }),
   // The Maskit group (shader-gen/elements/maskit.ts), exact and with overlapping circles.
   'maskit-2i-cosine-edges': makeScene(MASKIT_2I, {
     edgeWidth: 1,

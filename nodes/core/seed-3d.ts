@@ -4,6 +4,7 @@
  */
 import { boxSignedDistance } from '../geometry/space/box.ts';
 import { type Iis3dResult, iis3d } from '../geometry/space/iis-3d.ts';
+import { tileSignedDistance } from '../geometry/space/sphairahedron-tile.ts';
 import { add3, dist3, scale3 } from '../geometry/space/vec3.ts';
 import type { Scene3d, Seed3d, Vec3 } from './scene-3d.ts';
 
@@ -11,7 +12,9 @@ import type { Scene3d, Seed3d, Vec3 } from './scene-3d.ts';
 export function seedSignedDistance(seed: Seed3d, x: Vec3): number {
   return seed.kind === 'sphere'
     ? dist3(x, seed.sphere.center) - seed.sphere.radius
-    : boxSignedDistance(seed.center, seed.halfSize, x);
+    : seed.kind === 'tile'
+      ? tileSignedDistance(seed.tile, x[0], x[1], x[2])
+      : boxSignedDistance(seed.center, seed.halfSize, x);
 }
 
 const AXES: readonly Vec3[] = [
@@ -32,6 +35,8 @@ export function seedSamplePoints(seed: Seed3d): Vec3[] {
     const { center, radius } = seed.sphere;
     return [center, ...AXES.map((a) => add3(center, scale3(a, radius)))];
   }
+  // A tile is the fundamental domain itself (render-3d does not check it: it is `clipped`).
+  if (seed.kind === 'tile') return [];
   const corners: Vec3[] = [];
   const [hx, hy, hz] = seed.halfSize;
   for (const sx of [-hx, hx])

@@ -13,7 +13,7 @@ import {
   sampleIndex,
   type VoxelGrid,
 } from './marching-tetrahedra.ts';
-import { fail, ok, type Result } from './sphere.ts';
+import { fail, ok, type Result, type Sphere } from './sphere.ts';
 import { add3, scale3, sub3, type Vec3 } from './vec3.ts';
 
 export interface Bounds3 {
@@ -42,13 +42,16 @@ export const solidAt = (scene: MeshScene, p: Vec3): boolean => {
 export function orbitBounds(scene: MeshScene): Bounds3 | null {
   if (scene.seeds.length === 0) return null;
   if (scene.elements.some((e) => e.kind !== 'sphere-inversion')) return null;
+  const ballBox = (b: Sphere): [Vec3, Vec3] => [
+    sub3(b.center, [b.radius, b.radius, b.radius]),
+    add3(b.center, [b.radius, b.radius, b.radius]),
+  ];
   const boxes: [Vec3, Vec3][] = scene.seeds.map((s) =>
     s.kind === 'sphere'
-      ? [
-          sub3(s.sphere.center, [s.sphere.radius, s.sphere.radius, s.sphere.radius]),
-          add3(s.sphere.center, [s.sphere.radius, s.sphere.radius, s.sphere.radius]),
-        ]
-      : [sub3(s.center, s.halfSize), add3(s.center, s.halfSize)],
+      ? ballBox(s.sphere)
+      : s.kind === 'tile'
+        ? ballBox(s.tile.bound)
+        : [sub3(s.center, s.halfSize), add3(s.center, s.halfSize)],
   );
   for (const e of scene.elements)
     if (e.kind === 'sphere-inversion') {

@@ -17,7 +17,7 @@ import { ELEMENT_ARRAY, type SceneValues } from '../../glsl/values.ts';
 import { type ElementRecord3d, POLE_AT_INFINITY } from '../elements/element-3d-kind.ts';
 import { ballDistanceGlsl } from '../elements/sphere-inversion.ts';
 import type { TracePlan } from '../plan.ts';
-import { packSeed, seedDistanceGlsl } from '../seeds-3d.ts';
+import { packSeed, seedDistanceCall, seedGlslFunctions } from '../seeds-3d.ts';
 
 export interface PlacedWalk {
   readonly plan: TracePlan;
@@ -27,8 +27,8 @@ export interface PlacedWalk {
     /** Content-ball row (c, r) and (reach, 0, 0, 0), for sphere inversions of all-inversion scenes. */
     readonly hull: readonly [string, string] | null;
   }[];
-  /** Two rows per seed. */
-  readonly seeds: readonly (readonly [string, string])[];
+  /** Each seed's rows (../seeds-3d.ts packSeed: two for a sphere or box, nine for a tile). */
+  readonly seeds: readonly (readonly string[])[];
   readonly maxIter: string;
 }
 
@@ -47,14 +47,14 @@ export function placeWalk(plan: TracePlan, v: SceneValues): PlacedWalk {
       : null;
     return { record, rows, hull };
   });
-  const seeds = scene.seeds.map((s) => v.elementRows(packSeed(s)) as [string, string]);
+  const seeds = scene.seeds.map((s) => v.elementRows(packSeed(s)));
   return { plan, elements, seeds, maxIter: v.int('u_maxIterations', scene.maxIterations) };
 }
 
 /** The functions the walk calls. */
 export function walkFunctions(placed: PlacedWalk): GlslFunction[] {
   return [
-    seedDistanceGlsl,
+    ...seedGlslFunctions(placed.plan.scene.seeds),
     ballDistanceGlsl,
     ...placed.elements.flatMap(({ record }) => [
       ...record.glsl.deps,
@@ -71,13 +71,15 @@ const local = (expr: string): string => {
   return m ? `el${m[1]}` : expr;
 };
 
+/** Seed k's distance at p. */
+const seedCall = (placed: PlacedWalk, k: number): string =>
+  seedDistanceCall(placed.plan.scene.seeds[k]!, placed.seeds[k]!.map(local));
+
 /** min over seeds of seedDistance(p) (GLSL_FAR without seeds). */
 const seedsMin = (placed: PlacedWalk): string =>
   placed.seeds.length === 0
     ? GLSL_FAR
-    : placed.seeds
-        .map(([a, b]) => `seedDistance(p, ${local(a)}, ${local(b)})`)
-        .reduce((acc, e) => `min(${acc}, ${e})`);
+    : placed.seeds.map((_, k) => seedCall(placed, k)).reduce((acc, e) => `min(${acc}, ${e})`);
 
 /** Cover of element j at p: ../walk.ts coverDistance's cover_j. */
 function coverOf(placed: PlacedWalk, j: number): string {
@@ -206,11 +208,10 @@ export function emitWalk(out: SourceBuilder, placed: PlacedWalk, record: boolean
   out.push('    break;', '  }');
   if (placed.seeds.length === 0) out.push(`  float sd = ${GLSL_FAR};`, '  int seed = -1;');
   else {
-    const [a0, b0] = placed.seeds[0]!;
-    out.push(`  float sd = seedDistance(p, ${local(a0)}, ${local(b0)});`, '  int seed = 0;');
-    placed.seeds.slice(1).forEach(([a, b], k) => {
+    out.push(`  float sd = ${seedCall(placed, 0)};`, '  int seed = 0;');
+    placed.seeds.slice(1).forEach((_, k) => {
       out.push(
-        `  float sd${k + 1} = seedDistance(p, ${local(a)}, ${local(b)});`,
+        `  float sd${k + 1} = ${seedCall(placed, k + 1)};`,
         `  if (sd${k + 1} < sd) { sd = sd${k + 1}; seed = ${k + 1}; }`,
       );
     });

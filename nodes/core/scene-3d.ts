@@ -8,6 +8,7 @@
  * is this and the 2D `scene` is empty (no elements), so 2D code never sees 3D data.
  */
 import type { Element3d } from '../geometry/space/iis-3d.ts';
+import type { SphairahedronTile } from '../geometry/space/sphairahedron-tile.ts';
 import type { Plane, Sphere } from '../geometry/space/sphere.ts';
 import type { Vec3 } from '../geometry/space/vec3.ts';
 import type { Color } from './values.ts';
@@ -50,6 +51,13 @@ export type Seed3d = (
       readonly formula: string;
       readonly numbers: readonly [number, number, number];
       readonly slope: number;
+      readonly color: Color;
+    }
+  /** A sphairahedron's tile, its fundamental domain (Fig. 25; docs/math-3d.md "The tile as a seed"). */
+  | {
+      readonly kind: 'tile';
+      readonly nodeId: string;
+      readonly tile: SphairahedronTile;
       readonly color: Color;
     }
 ) & {

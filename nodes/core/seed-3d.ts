@@ -5,6 +5,7 @@
 import { solidSeedDistance } from '../formula/solid.ts';
 import { boxSignedDistance } from '../geometry/space/box.ts';
 import { type Iis3dResult, iis3d } from '../geometry/space/iis-3d.ts';
+import { tileSignedDistance } from '../geometry/space/sphairahedron-tile.ts';
 import { add3, dist3, scale3 } from '../geometry/space/vec3.ts';
 import type { Scene3d, Seed3d, Vec3 } from './scene-3d.ts';
 
@@ -15,6 +16,7 @@ import type { Scene3d, Seed3d, Vec3 } from './scene-3d.ts';
 export function seedSignedDistance(seed: Seed3d, x: Vec3): number {
   if (seed.kind === 'sphere') return dist3(x, seed.sphere.center) - seed.sphere.radius;
   if (seed.kind === 'formula') return solidSeedDistance(seed, x[0], x[1], x[2]);
+  if (seed.kind === 'tile') return tileSignedDistance(seed.tile, x[0], x[1], x[2]);
   return boxSignedDistance(seed.center, seed.halfSize, x);
 }
 
@@ -32,6 +34,8 @@ const AXES: readonly Vec3[] = [
  * box's eight corners, a solid's bounding ball's six). A seed lies in the fundamental domain when no element moves any of them.
  */
 export function seedSamplePoints(seed: Seed3d): Vec3[] {
+  // A tile is the fundamental domain itself (render-3d does not check it: it is `clipped`).
+  if (seed.kind === 'tile') return [];
   if (seed.kind !== 'box') {
     // A solid stands for its bounding ball: what the ball's points avoid, the solid avoids.
     const { center, radius } = seed.kind === 'sphere' ? seed.sphere : seed;

@@ -13,6 +13,7 @@ import {
   infiniteSeedBox,
   infiniteSphairahedron,
 } from '../geometry/space/sphairahedron.ts';
+import { type SphairahedronTile, sphairahedronTile } from '../geometry/space/sphairahedron-tile.ts';
 import { SPHAIRAHEDRON_TYPE_IDS, sphairahedronTypeById } from '../geometry/space/sphairahedron-types.ts';
 import { fail, fmt } from './shared.ts';
 import { point3Input, radiusTo, sphereHandles } from './space-shared.ts';
@@ -75,6 +76,11 @@ export const sphairahedronNode = defineNode({
   outputs: {
     elements: { type: 'element3', label: 'elements' },
     seed: { type: 'seed3', label: 'seed', doc: 'the far side of the limit set: its orbit is drawn' },
+    tile: {
+      type: 'seed3',
+      label: 'tile',
+      doc: 'the sphairahedron itself as a solid (Fig. 25): alone, the tile; with the elements, the tiling, grown by max iterations (Figs. 27–28)',
+    },
   },
   params: {
     shape: {
@@ -99,12 +105,21 @@ export const sphairahedronNode = defineNode({
     if (!inf.ok) return fail(inf.error);
     const tag = (es: ReturnType<typeof infiniteElements>): NodeElement3d[] =>
       es.map((e) => ({ ...e, nodeId }));
+    // The tile is the fundamental domain itself: `clipped`, so render-3d does not check it lies in it.
+    const tileSeed = (tile: SphairahedronTile): Seed3d => ({
+      kind: 'tile',
+      nodeId,
+      tile,
+      color: inputs.color,
+      clipped: true,
+    });
     const radii = inf.value.spheres.map((s) => fmt(s.radius)).join(', ');
     if (params.form === 'infinite') {
       const box = infiniteSeedBox(inf.value);
       const seed: Seed3d = { kind: 'box', nodeId, ...box, color: inputs.color, clipped: true };
+      const tile = tileSeed(sphairahedronTile(inf.value, null));
       return {
-        outputs: { elements: tag(infiniteElements(inf.value)), seed },
+        outputs: { elements: tag(infiniteElements(inf.value)), seed, tile },
         readout: `sphere radii ${radii}; floor at z = ${fmt(inf.value.floorTop)}`,
       };
     }
@@ -117,8 +132,9 @@ export const sphairahedronNode = defineNode({
       color: inputs.color,
       clipped: true,
     };
+    const tile = tileSeed(sphairahedronTile(inf.value, { center: inputs.center, radius: inputs.radius }));
     return {
-      outputs: { elements: tag(finiteElements(fin.value)), seed },
+      outputs: { elements: tag(finiteElements(fin.value)), seed, tile },
       readout: `sphere radii ${radii} (before inversion)`,
     };
   },

@@ -1,16 +1,25 @@
 /**
- * Orbit seeds in space (spheres, axis-aligned boxes and formula solids): their signed distance,
+ * Orbit seeds in space (spheres, axis-aligned boxes, formula solids and sphairahedron tiles): their signed distance,
  * their bounding ball, CPU and GLSL twins. Sphere: |x − c| − r. Box (centre c, half-extents h): with
  * q = |x − c| − h per axis, |max(q, 0)| + min(max(q.x, q.y, q.z), 0) (exact, negative inside).
- * GLSL packing per seed (2 vec4): (c, r or 0), (h or 0, kind: 0 sphere / 1 box).
+ * Sphairahedron tile: nodes/geometry/space/sphairahedron-tile.ts (docs/math-3d.md "The tile as a seed").
+ * GLSL packing per seed: sphere and box 2 vec4, (c, r or 0), (h or 0, kind: 0 sphere / 1 box);
+ * tile 9 vec4 (packTile), read by `tileDistance`.
  */
 import type { Seed3d } from '../../nodes/core/scene-3d.ts';
 import { checkedFormula } from '../../nodes/formula/checked.ts';
 import { SOLID_NAMES } from '../../nodes/formula/names.ts';
 import { FormulaError } from '../../nodes/formula/parse.ts';
 import { solidSeedDistance } from '../../nodes/formula/solid.ts';
+import {
+  packTile,
+  TILE_BALLS,
+  TILE_PLANES,
+  tileSignedDistance,
+} from '../../nodes/geometry/space/sphairahedron-tile.ts';
 import type { Sphere } from '../../nodes/geometry/space/sphere.ts';
 import { formulaGlsl } from '../glsl/formula.glsl.ts';
+import { floatLiteral } from '../glsl/literal.ts';
 import { type GlslFunction, glslFunction } from '../glsl/snippet.ts';
 
 export function seedDistance(seed: Seed3d, x: number, y: number, z: number): number {
@@ -20,6 +29,7 @@ export function seedDistance(seed: Seed3d, x: number, y: number, z: number): num
     const c = seed.sphere.center;
     return Math.sqrt((x - c[0]) ** 2 + (y - c[1]) ** 2 + (z - c[2]) ** 2) - seed.sphere.radius;
   }
+  if (seed.kind === 'tile') return tileSignedDistance(seed.tile, x, y, z);
   const qx = Math.abs(x - seed.center[0]) - seed.halfSize[0];
   const qy = Math.abs(y - seed.center[1]) - seed.halfSize[1];
   const qz = Math.abs(z - seed.center[2]) - seed.halfSize[2];
@@ -33,18 +43,25 @@ export const seedBall = (seed: Seed3d): Sphere =>
     ? seed.sphere
     : seed.kind === 'formula'
       ? { center: seed.center, radius: seed.radius }
-      : { center: seed.center, radius: Math.hypot(...seed.halfSize) };
+      : seed.kind === 'tile'
+        ? seed.tile.bound
+        : { center: seed.center, radius: Math.hypot(...seed.halfSize) };
 
 /**
  * A length typical of the seed (its radius; a box's smallest half-extent; a quarter of a solid's
- * bounding radius, its parts being smaller than the ball): sets the AO scale.
+ * bounding radius, its parts being smaller than the ball; a finite tile's bounding radius, an
+ * infinite one's unit prism): sets the AO scale.
  */
 export const seedSize = (seed: Seed3d): number =>
   seed.kind === 'sphere'
     ? seed.sphere.radius
     : seed.kind === 'formula'
       ? seed.radius / 4
-      : Math.min(...seed.halfSize);
+      : seed.kind === 'tile'
+        ? seed.tile.inversion
+          ? seed.tile.bound.radius
+          : 1
+        : Math.min(...seed.halfSize);
 
 /** Two vec4 per seed: sphere (c, r), (0); box (c, 0), (h, 1); solid (c, R), (a, b, c, L). */
 export const packSeed = (seed: Seed3d): number[] =>
@@ -52,27 +69,25 @@ export const packSeed = (seed: Seed3d): number[] =>
     ? [...seed.sphere.center, seed.sphere.radius, 0, 0, 0, 0]
     : seed.kind === 'formula'
       ? [...seed.center, seed.radius, ...seed.numbers, seed.slope]
-      : [...seed.center, 0, ...seed.halfSize, 1];
+      : seed.kind === 'tile'
+        ? packTile(seed.tile)
+        : [...seed.center, 0, ...seed.halfSize, 1];
 
 const SOLID_GLSL_NAMES = { x: 'q.x', y: 'q.y', z: 'q.z', a: 'k.x', b: 'k.y', c: 'k.z' } as const;
 
 /**
- * The GLSL distance of seed `index` at p over its two packed rows `a`, `b` (GLSL expressions):
- * `seedDistance(p, a, b)` for spheres and boxes; for a solid a function of its own, written from
- * its checked formula tree (../glsl/formula.glsl.ts: nothing of the text is pasted), with the
- * CPU's formula (nodes/formula/solid.ts: max(f(p − c)/L, b) in the ball, max(b, f(p′ − c)/L − b) outside). A solid whose formula does
- * not check never reaches a scene (the node fails), so `run` is always there.
+ * The GLSL distance function of a solid seed, number `index` in the scene, over its two packed rows
+ * (c, R), (a, b, c, L): written from its checked formula tree (../glsl/formula.glsl.ts: nothing of
+ * the text is pasted), with the CPU's formula (nodes/formula/solid.ts: max(f(p − c)/L, b) in the
+ * ball, max(b, f(p′ − c)/L − b) outside). A solid whose formula does not check never reaches a
+ * scene (the node fails).
  */
-export function seedGlsl(
-  seed: Seed3d,
-  index: number,
-): { readonly fn: GlslFunction; readonly deps: readonly GlslFunction[] } {
-  if (seed.kind !== 'formula') return { fn: seedDistanceGlsl, deps: [] };
+function solidGlsl(seed: Extract<Seed3d, { kind: 'formula' }>, index: number): GlslFunction {
   const checked = checkedFormula(seed.formula, SOLID_NAMES);
   if (checked instanceof FormulaError) throw new Error(`seed solid ${seed.nodeId}: ${checked.message}`);
   const body = formulaGlsl(checked.tree, SOLID_GLSL_NAMES);
   const name = `seedSolid${index}`;
-  const fn = glslFunction(
+  return glslFunction(
     name,
     `
 float ${name}(vec3 p, vec4 a, vec4 k) {
@@ -84,9 +99,17 @@ float ${name}(vec3 p, vec4 a, vec4 k) {
   if (ball < 0.0) return isnan(f) ? 0.0 : max(f, ball);
   return isnan(f) ? ball : max(ball, f - ball);
 }`,
+    body.deps,
   );
-  return { fn, deps: body.deps };
 }
+
+/**
+ * The GLSL call giving seed `index`'s distance at `p` from its packed rows (the functions:
+ * seedGlslFunctions): `seedDistance` for spheres and boxes, `tileDistance` for a tile, the
+ * solid's own function for a formula seed.
+ */
+export const seedDistanceCall = (seed: Seed3d, index: number, rows: readonly string[]): string =>
+  `${seed.kind === 'tile' ? 'tileDistance' : seed.kind === 'formula' ? `seedSolid${index}` : 'seedDistance'}(p, ${rows.join(', ')})`;
 
 /** GLSL `seedDistance(p, a, b)` over the packing above (a box when b.w > 0.5). */
 export const seedDistanceGlsl = glslFunction(
@@ -100,3 +123,47 @@ float seedDistance(vec3 p, vec4 a, vec4 b) {
   return length(p - a.xyz) - a.w;
 }`,
 );
+
+const planeRows = Array.from({ length: TILE_PLANES }, (_, k) => `vec4 f${k}`);
+const ballRows = Array.from({ length: TILE_BALLS }, (_, k) => `vec4 s${k}`);
+
+/**
+ * GLSL `tileDistance(p, inv, cut, f0…f3, s0…s2)`: twin of tileSignedDistance over packTile's rows
+ * (padding planes and balls never win). inv.w = 0: the infinite form, q = p; else q = I(p).
+ */
+export const tileDistanceGlsl = glslFunction(
+  'tileDistance',
+  `
+float tileDistance(vec3 p, vec4 inv, vec4 cut, ${[...planeRows, ...ballRows].join(', ')}) {
+  vec3 q = p;
+  float far = 1.0;
+  float r2 = inv.w * inv.w;
+  if (inv.w > 0.0) {
+    vec3 v = p - inv.xyz;
+    far = max(dot(v, v), 1e-24);
+    q = inv.xyz + (r2 / far) * v;
+  }
+  float d = cut.x - q.z;
+  float column = ${floatLiteral(1e30)};
+${Array.from({ length: TILE_PLANES }, (_, k) => `  d = max(d, f${k}.w - dot(f${k}.xyz, q));`).join('\n')}
+${Array.from(
+  { length: TILE_BALLS },
+  (_, k) => `  {
+    float h = length(q.xy - s${k}.xy);
+    d = max(d, s${k}.w - length(vec2(h, q.z - s${k}.z)));
+    column = min(column, max(h - s${k}.w, q.z - s${k}.z));
+  }`,
+).join('\n')}
+  d = max(d, column);
+  if (inv.w <= 0.0) return d;
+  float f = sqrt(far);
+  return f * d / (r2 / f + max(d, 0.0));
+}`,
+);
+
+/** The GLSL functions the seeds' distance calls need. */
+export const seedGlslFunctions = (seeds: readonly Seed3d[]): GlslFunction[] => [
+  seedDistanceGlsl,
+  ...(seeds.some((s) => s.kind === 'tile') ? [tileDistanceGlsl] : []),
+  ...seeds.flatMap((s, k) => (s.kind === 'formula' ? [solidGlsl(s, k)] : [])),
+];

@@ -13,7 +13,7 @@ import {
   sampleIndex,
   type VoxelGrid,
 } from './marching-tetrahedra.ts';
-import { fail, ok, type Result } from './sphere.ts';
+import { fail, ok, type Result, type Sphere } from './sphere.ts';
 import { add3, scale3, sub3, type Vec3 } from './vec3.ts';
 
 export interface Bounds3 {
@@ -42,12 +42,19 @@ export const solidAt = (scene: MeshScene, p: Vec3): boolean => {
 export function orbitBounds(scene: MeshScene): Bounds3 | null {
   if (scene.seeds.length === 0) return null;
   if (scene.elements.some((e) => e.kind !== 'sphere-inversion')) return null;
-  const boxes: [Vec3, Vec3][] = scene.seeds.map((s) => {
-    if (s.kind === 'box') return [sub3(s.center, s.halfSize), add3(s.center, s.halfSize)];
-    // A solid lies within its bounding ball.
-    const { center, radius: r } = s.kind === 'sphere' ? s.sphere : s;
-    return [sub3(center, [r, r, r]), add3(center, [r, r, r])];
-  });
+  const ballBox = (b: Sphere): [Vec3, Vec3] => [
+    sub3(b.center, [b.radius, b.radius, b.radius]),
+    add3(b.center, [b.radius, b.radius, b.radius]),
+  ];
+  const boxes: [Vec3, Vec3][] = scene.seeds.map((s) =>
+    s.kind === 'sphere'
+      ? ballBox(s.sphere)
+      : s.kind === 'tile'
+        ? ballBox(s.tile.bound)
+        : s.kind === 'formula'
+          ? ballBox({ center: s.center, radius: s.radius }) // a solid lies within its bounding ball
+          : [sub3(s.center, s.halfSize), add3(s.center, s.halfSize)],
+  );
   for (const e of scene.elements)
     if (e.kind === 'sphere-inversion') {
       const r = e.sphere.radius;

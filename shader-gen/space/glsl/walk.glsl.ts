@@ -17,7 +17,7 @@ import { ELEMENT_ARRAY, type SceneValues } from '../../glsl/values.ts';
 import { type ElementRecord3d, POLE_AT_INFINITY } from '../elements/element-3d-kind.ts';
 import { ballDistanceGlsl } from '../elements/sphere-inversion.ts';
 import type { TracePlan } from '../plan.ts';
-import { packSeed, seedDistanceGlsl, seedGlsl } from '../seeds-3d.ts';
+import { packSeed, seedDistanceCall, seedGlslFunctions } from '../seeds-3d.ts';
 
 export interface PlacedWalk {
   readonly plan: TracePlan;
@@ -27,9 +27,8 @@ export interface PlacedWalk {
     /** Content-ball row (c, r) and (reach, 0, 0, 0), for sphere inversions of all-inversion scenes. */
     readonly hull: readonly [string, string] | null;
   }[];
-  /** Two rows per seed, and the GLSL function giving its distance over them (../seeds-3d.ts seedGlsl). */
-  readonly seeds: readonly (readonly [string, string])[];
-  readonly seedFns: readonly ReturnType<typeof seedGlsl>[];
+  /** Each seed's rows (../seeds-3d.ts packSeed: two for a sphere or box, nine for a tile). */
+  readonly seeds: readonly (readonly string[])[];
   readonly maxIter: string;
 }
 
@@ -48,16 +47,14 @@ export function placeWalk(plan: TracePlan, v: SceneValues): PlacedWalk {
       : null;
     return { record, rows, hull };
   });
-  const seeds = scene.seeds.map((s) => v.elementRows(packSeed(s)) as [string, string]);
-  const seedFns = scene.seeds.map(seedGlsl);
-  return { plan, elements, seeds, seedFns, maxIter: v.int('u_maxIterations', scene.maxIterations) };
+  const seeds = scene.seeds.map((s) => v.elementRows(packSeed(s)));
+  return { plan, elements, seeds, maxIter: v.int('u_maxIterations', scene.maxIterations) };
 }
 
 /** The functions the walk calls. */
 export function walkFunctions(placed: PlacedWalk): GlslFunction[] {
   return [
-    seedDistanceGlsl,
-    ...placed.seedFns.flatMap(({ fn, deps }) => [...deps, fn]),
+    ...seedGlslFunctions(placed.plan.scene.seeds),
     ballDistanceGlsl,
     ...placed.elements.flatMap(({ record }) => [
       ...record.glsl.deps,
@@ -74,17 +71,15 @@ const local = (expr: string): string => {
   return m ? `el${m[1]}` : expr;
 };
 
-/** Seed k's distance at p: its function over its two rows. */
-const seedAt = (placed: PlacedWalk, k: number): string => {
-  const [a, b] = placed.seeds[k]!;
-  return `${placed.seedFns[k]!.fn.name}(p, ${local(a)}, ${local(b)})`;
-};
+/** Seed k's distance at p. */
+const seedCall = (placed: PlacedWalk, k: number): string =>
+  seedDistanceCall(placed.plan.scene.seeds[k]!, k, placed.seeds[k]!.map(local));
 
 /** min over seeds of seedDistance(p) (GLSL_FAR without seeds). */
 const seedsMin = (placed: PlacedWalk): string =>
   placed.seeds.length === 0
     ? GLSL_FAR
-    : placed.seeds.map((_, k) => seedAt(placed, k)).reduce((acc, e) => `min(${acc}, ${e})`);
+    : placed.seeds.map((_, k) => seedCall(placed, k)).reduce((acc, e) => `min(${acc}, ${e})`);
 
 /** Cover of element j at p: ../walk.ts coverDistance's cover_j. */
 function coverOf(placed: PlacedWalk, j: number): string {
@@ -213,10 +208,10 @@ export function emitWalk(out: SourceBuilder, placed: PlacedWalk, record: boolean
   out.push('    break;', '  }');
   if (placed.seeds.length === 0) out.push(`  float sd = ${GLSL_FAR};`, '  int seed = -1;');
   else {
-    out.push(`  float sd = ${seedAt(placed, 0)};`, '  int seed = 0;');
+    out.push(`  float sd = ${seedCall(placed, 0)};`, '  int seed = 0;');
     placed.seeds.slice(1).forEach((_, k) => {
       out.push(
-        `  float sd${k + 1} = ${seedAt(placed, k + 1)};`,
+        `  float sd${k + 1} = ${seedCall(placed, k + 1)};`,
         `  if (sd${k + 1} < sd) { sd = sd${k + 1}; seed = ${k + 1}; }`,
       );
     });

@@ -25,10 +25,12 @@ import {
   defaultInversionSphere,
   finiteElements,
   finiteSphairahedron,
+  type InfiniteSphairahedron,
   infiniteElements,
   infiniteSeedBox,
   infiniteSphairahedron,
 } from '../../../nodes/geometry/space/sphairahedron.ts';
+import { sphairahedronTile } from '../../../nodes/geometry/space/sphairahedron-tile.ts';
 import type { Sphere } from '../../../nodes/geometry/space/sphere.ts';
 import { add3, dist3, dot3, scale3, sub3, type Vec3 } from '../../../nodes/geometry/space/vec3.ts';
 import { prepareTrace3d } from '../../../shader-gen/space/plan.ts';
@@ -412,6 +414,12 @@ describe('the tracer bound (docs/math-3d.md §8)', () => {
 
   type SphairahedronSample = typeof sphairahedron extends fc.Arbitrary<infer T> ? T : never;
 
+  /** The inversion centre of the samples' finite form: the default one, lifted. */
+  function finiteCentre(inf: InfiniteSphairahedron, lift: number): Vec3 {
+    const inv = defaultInversionSphere(inf);
+    return [inv.center[0], inv.center[1], inv.center[2] + lift];
+  }
+
   /** The scene and point of a sphairahedron sample, or null when the shape is refused. */
   function sphairahedronCase(c: SphairahedronSample) {
     const inf = infiniteSphairahedron(c.type, c.zb, c.zc);
@@ -422,16 +430,18 @@ describe('the tracer bound (docs/math-3d.md §8)', () => {
     let seed: Seed3d = { kind: 'box', nodeId: 's', ...box, color, clipped: true };
     let face = inf.value.spheres[c.face]!;
     if (c.finite) {
-      const inv = defaultInversionSphere(inf.value);
-      const at: Vec3 = [inv.center[0], inv.center[1], inv.center[2] + c.lift];
-      const fin = finiteSphairahedron(inf.value, { center: at, radius: c.radius });
+      const fin = finiteSphairahedron(inf.value, {
+        center: finiteCentre(inf.value, c.lift),
+        radius: c.radius,
+      });
       if (!fin.ok) return null;
       elements = finiteElements(fin.value);
       seed = { kind: 'sphere', nodeId: 's', sphere: fin.value.seed, color, clipped: true };
       face = fin.value.spheres[3 + c.face]!;
     }
     const scene = scene3d(elements, [seed], { maxIterations: 40 });
-    return { scene, x: add3(face.center, scale3(c.dir, c.t * face.radius)) };
+    const inversion = c.finite ? { center: finiteCentre(inf.value, c.lift), radius: c.radius } : null;
+    return { scene, inversion, x: add3(face.center, scale3(c.dir, c.t * face.radius)) };
   }
 
   /** Directions for probing a ball: a fixed, well-spread set (golden-spiral points). */
@@ -476,5 +486,40 @@ describe('the tracer bound (docs/math-3d.md §8)', () => {
     // large would fail. Measured (this seed): 39 points; the orbit first met at 3–10 bounds for 29
     // of them (median 6), not within 10 for the other 10.
     expect(nearby).toBeGreaterThan(tested / 2);
+  }, 300_000);
+
+  /**
+   * The same shapes with the tile as the seed (docs/math-3d.md "The tile as a seed"), whole (40
+   * steps) or grown by 1, 2 or 5 inversions: the orbit probed is the one the tracer draws with that
+   * budget (a point is in it when its IIS ends inside the tile within the budget).
+   */
+  it('leaves no orbit point in the ball it claims empty (the tile seed, whole and step-limited)', () => {
+    let tested = 0;
+    const steps = fc.sample(fc.constantFrom(1, 2, 5, 40), { seed: SEED.seed, numRuns: 60 });
+    fc.sample(sphairahedron, { seed: SEED.seed + 1, numRuns: 60 }).forEach((c, i) => {
+      const k = sphairahedronCase(c);
+      if (!k) return;
+      const inf = infiniteSphairahedron(c.type, c.zb, c.zc);
+      if (!inf.ok) return;
+      const seed = k.scene.seeds[0]!;
+      const tile: Seed3d = {
+        kind: 'tile',
+        nodeId: 's',
+        tile: sphairahedronTile(inf.value, k.inversion),
+        color: seed.color,
+        clipped: true,
+      };
+      const scene = { ...k.scene, seeds: [tile], maxIterations: steps[i]! };
+      const { de } = walk3d(prepareTrace3d(scene), ...k.x, true);
+      expect(de).toBeGreaterThanOrEqual(0);
+      if (!(de > 1e-9)) return;
+      tested++;
+      for (const rho of SHELLS.filter((r) => r < 1))
+        for (const p of PROBES) {
+          const s = sampleSpace(scene, add3(k.x, scale3(p, rho * de)));
+          expect(s.escaped && s.distance !== null && s.distance < 0).toBe(false);
+        }
+    });
+    expect(tested).toBeGreaterThan(20);
   }, 300_000);
 });

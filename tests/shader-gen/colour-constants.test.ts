@@ -64,6 +64,7 @@ describe('one sample, nothing blended: no conversion at all', () => {
         'matrix-escape-speed',
         'rose-final-radius',
         'schottky-argument',
+        'schottky-colour-formula',
         'schottky-edge-distance',
         'schottky-orbit-trap-seeds',
         'strips-final-y',

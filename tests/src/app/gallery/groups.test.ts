@@ -10,8 +10,10 @@ import { EXAMPLES_3D_DIR, exampleNames } from '../../../../src/cli/examples.ts';
 const fake = (id: string, title: string, description = '', group?: string): Example =>
   ({ id, title, description, ...(group ? { group } : {}), doc: {} }) as unknown as Example;
 const examplesDir = join(import.meta.dirname, '..', '..', '..', '..', 'examples');
-const metaOf = (name: string) =>
-  JSON.parse(readFileSync(join(examplesDir, `${name}.kleinflow.json`), 'utf8')).meta ?? {};
+const metaOf = (name: string) => {
+  const dir = exampleNames(EXAMPLES_3D_DIR).includes(name) ? EXAMPLES_3D_DIR : examplesDir;
+  return JSON.parse(readFileSync(join(dir, `${name}.kleinflow.json`), 'utf8')).meta ?? {};
+};
 
 describe('gallery sections', () => {
   it('place every bundled example in exactly one section (the table or its own group), and name no missing file', () => {

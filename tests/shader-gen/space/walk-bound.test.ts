@@ -12,7 +12,6 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import type { Element3d, Seed3d } from '../../../nodes/core/scene-3d.ts';
-import { sampleSpace } from '../../../nodes/core/seed-3d.ts';
 import { compoundLoxodromic3d } from '../../../nodes/geometry/space/compound-loxodromic-3d.ts';
 import {
   applyCompoundParabolic3d,

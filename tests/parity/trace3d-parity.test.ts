@@ -17,7 +17,13 @@ import { probeScene3d, tracePixel } from '../../shader-gen/space/render-3d.ts';
 import { shadeHit } from '../../shader-gen/space/shade-3d.ts';
 import { HAND_WRITTEN_3D } from '../bench/hand-written/trace3d.ts';
 import { hitMissDiffer } from '../bench/trace3d.ts';
-import { exampleScenes3d, FIG11, MOBIUS_BOX, PLANES } from '../shader-gen/space/scenes-3d.ts';
+import {
+  exampleScenes3d,
+  FIG11,
+  MOBIUS_BOX,
+  PLANES,
+  PSEUDO_KLEINIAN,
+} from '../shader-gen/space/scenes-3d.ts';
 import { GpuProbe } from './gpu-probe.ts';
 
 const W = 96;
@@ -92,6 +98,7 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
     fig11: FIG11,
     'mobius-box': MOBIUS_BOX,
     planes: PLANES,
+    'pseudo-kleinian': PSEUDO_KLEINIAN,
     // Every 3D example, the sphairahedra (Figs. 26, 28, the cake: overlapping mirrors, the
     // mirrored covers of docs/math-3d.md §8) and the unbounded plane orbits (Figs. 17–18) included.
     ...examples,

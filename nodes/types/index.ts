@@ -1,6 +1,7 @@
 /** The registry: every node type, in palette order. Adding a node type = one file + one line here. */
 import { createRegistry } from '../core/registry.ts';
 import { circularMotionNode, sineNode, timeNode } from './animation.ts';
+import { boxFoldNode } from './box-fold.ts';
 import { circleNode } from './circle.ts';
 import { circle3ptNode } from './circle-3pt.ts';
 import { circleCenterPointNode } from './circle-center-point.ts';
@@ -106,6 +107,7 @@ export const NODE_TYPES = [
   mobius3dNode,
   compoundLoxodromic3dNode,
   compoundParabolic3dNode,
+  boxFoldNode,
   seedSphereNode,
   seedBoxNode,
   seedSolidNode,

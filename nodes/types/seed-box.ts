@@ -1,8 +1,7 @@
 import { defineNode } from '../core/define-node.ts';
 import type { Seed3d } from '../core/scene-3d.ts';
-import { add3, sub3 } from '../geometry/space/vec3.ts';
 import { fail } from './shared.ts';
-import { fmt3, MIN_RADIUS, point3Input } from './space-shared.ts';
+import { boxHandles, boxProblem, dragBox, fmt3, point3Input } from './space-shared.ts';
 
 export const seedBoxNode = defineNode({
   type: 'seed-box',
@@ -19,8 +18,8 @@ export const seedBoxNode = defineNode({
   outputs: { seed: { type: 'seed3', label: 'seed' } },
   params: {},
   evaluate: ({ inputs, nodeId }) => {
-    if (!inputs.halfSize.every((h) => h > 0))
-      return fail(`the box needs a positive half size along x, y and z, got ${fmt3(inputs.halfSize)}`);
+    const problem = boxProblem(inputs.halfSize);
+    if (problem) return fail(problem);
     const seed: Seed3d = {
       kind: 'box',
       nodeId,
@@ -32,13 +31,7 @@ export const seedBoxNode = defineNode({
   },
   overlay3d: (_ctx, out) =>
     out.seed.kind === 'box' ? [{ shape: 'box', center: out.seed.center, halfSize: out.seed.halfSize }] : [],
-  handles3d: ({ inputs }) => [
-    { handle: 'center', at: inputs.center },
-    { handle: 'corner', at: add3(inputs.center, inputs.halfSize) },
-  ],
+  handles3d: ({ inputs }) => boxHandles(inputs.center, inputs.halfSize),
   /** The corner sets the half size: its offset from the centre per axis (kept positive). */
-  drag3d: (handle, to, ctx) =>
-    handle === 'center'
-      ? { center: [...to] }
-      : { halfSize: sub3(to, ctx.inputs.center).map((v) => Math.max(MIN_RADIUS, Math.abs(v))) },
+  drag3d: (handle, to, ctx) => dragBox(handle, to, ctx.inputs.center),
 });

@@ -5,7 +5,7 @@
 import type { InputSpec } from '../core/define-node.ts';
 import type { NodeElement3d, Plane, Sphere, Vec3 } from '../core/scene-3d.ts';
 import { stepElement3d } from '../geometry/space/iis-3d.ts';
-import { add3, dist3, len3 } from '../geometry/space/vec3.ts';
+import { add3, dist3, len3, sub3 } from '../geometry/space/vec3.ts';
 import { fmt } from './shared.ts';
 
 export const point3Input = (label: string, x: number, y: number, z: number, doc?: string) =>
@@ -77,6 +77,25 @@ export function dragPlaneInput(handle: string, to: Vec3, key: string, p: Plane):
   }
   return {};
 }
+
+/** Why an axis-aligned box cannot be used (a half size ≤ 0 or not finite), or null. */
+export function boxProblem(halfSize: Vec3): string | null {
+  return halfSize.every((h) => h > 0 && Number.isFinite(h))
+    ? null
+    : `the box needs a positive half size along x, y and z, got ${fmt3(halfSize)}`;
+}
+
+/** Handles of an axis-aligned box: its centre and its +x+y+z corner (the half size). */
+export const boxHandles = (center: Vec3, halfSize: Vec3) => [
+  { handle: 'center', at: center },
+  { handle: 'corner', at: add3(center, halfSize) },
+];
+
+/** A box drag → the new centre, or the half size from the corner's offset per axis (kept positive). */
+export const dragBox = (handle: string, to: Vec3, center: Vec3): Record<string, unknown> =>
+  handle === 'center'
+    ? { center: [...to] }
+    : { halfSize: sub3(to, center).map((v) => Math.max(MIN_RADIUS, Math.abs(v))) };
 
 /** The element whose region (the part of space it moves) holds x, or undefined. */
 export const elementHolding = (elements: readonly NodeElement3d[], x: Vec3): NodeElement3d | undefined =>

@@ -7,7 +7,7 @@
  */
 import type { Element3d, Scene3d } from '../../nodes/core/scene-3d.ts';
 import { invertSphere, type Sphere } from '../../nodes/geometry/space/sphere.ts';
-import { add3, dist3, scale3, sub3, type Vec3 } from '../../nodes/geometry/space/vec3.ts';
+import { add3, dist3, len3, scale3, sub3, type Vec3 } from '../../nodes/geometry/space/vec3.ts';
 import type { ElementRecord3d } from './elements/element-3d-kind.ts';
 import { elementRecord3d } from './elements/index.ts';
 import { seedBall } from './seeds-3d.ts';
@@ -182,6 +182,8 @@ function anchor(e: Element3d): Sphere {
       return e.g.base.s1;
     case 'sphere-inversion':
       return e.sphere;
+    case 'box-fold':
+      return { center: e.box.center, radius: len3(e.box.halfSize) };
   }
 }
 

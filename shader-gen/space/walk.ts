@@ -71,11 +71,16 @@ function packedCover(rows: Float64Array, x: number, y: number, z: number, j: num
   return Math.max(0, Math.sqrt(b2) - rows[o + 3]!, Math.sqrt(h2) - rows[o + 7]!);
 }
 
-/** cover_j at (x, y, z): the content ball and the region where both are known, else the region. */
-function coverOf(plan: TracePlan, x: number, y: number, z: number, j: number): number {
+/**
+ * cover_j at (x, y, z): the content ball and the region where both are known, else the region —
+ * at the final point (`atEnd`) the element's own end cover where it has one (the box fold's).
+ */
+function coverOf(plan: TracePlan, x: number, y: number, z: number, j: number, atEnd = false): number {
   if (plan.coverRows) return packedCover(plan.coverRows, x, y, z, j, Number.POSITIVE_INFINITY);
   const h = plan.hulls[j];
-  const region = plan.records[j]!.cpu.regionDistance(plan.scene.elements[j]!, x, y, z);
+  const cpu = plan.records[j]!.cpu;
+  const e = plan.scene.elements[j]!;
+  const region = atEnd && cpu.endCover ? cpu.endCover(e, x, y, z) : cpu.regionDistance(e, x, y, z);
   return h ? Math.max(region, ballDistance(x, y, z, h.center, h.radius)) : region;
 }
 
@@ -89,7 +94,7 @@ function endDistance(plan: TracePlan, x: number, y: number, z: number, seeds: nu
   let second = Number.POSITIVE_INFINITY;
   let nearest = -1;
   for (let j = 0; j < plan.records.length; j++) {
-    const c = coverOf(plan, x, y, z, j);
+    const c = coverOf(plan, x, y, z, j, true);
     if (c < best) {
       second = best;
       best = c;

@@ -3,6 +3,7 @@
  * region holds the point, accumulating the conformal factor, until no element moves it (the point
  * has reached the fundamental domain) or the iteration budget is spent.
  */
+import { type BoxFold, stepBoxFold } from './box-fold.ts';
 import { type CompoundLoxodromic3d, stepCompoundLoxodromic3d } from './compound-loxodromic-3d.ts';
 import { type CompoundParabolic3d, stepCompoundParabolic3d } from './compound-parabolic-3d.ts';
 import { type Mobius3d, stepMobius3d } from './mobius-3d.ts';
@@ -22,9 +23,10 @@ export type Element3d =
   | { readonly kind: 'plane-reflection'; readonly plane: Plane }
   | { readonly kind: 'mobius-3d'; readonly g: Mobius3d }
   | { readonly kind: 'compound-loxodromic-3d'; readonly g: CompoundLoxodromic3d }
-  | { readonly kind: 'compound-parabolic-3d'; readonly g: CompoundParabolic3d };
+  | { readonly kind: 'compound-parabolic-3d'; readonly g: CompoundParabolic3d }
+  | { readonly kind: 'box-fold'; readonly box: BoxFold };
 
-/** One element's step: its map if x lies in its region (ball; moved side of a plane), else null. */
+/** One element's step: its map if x lies in its region (ball; moved side of a plane; outside a box), else null. */
 export function stepElement3d(e: Element3d, x: Vec3): Mapped | null {
   switch (e.kind) {
     case 'sphere-inversion':
@@ -37,6 +39,8 @@ export function stepElement3d(e: Element3d, x: Vec3): Mapped | null {
       return stepCompoundLoxodromic3d(e.g, x);
     case 'compound-parabolic-3d':
       return stepCompoundParabolic3d(e.g, x);
+    case 'box-fold':
+      return stepBoxFold(e.box, x);
   }
 }
 

@@ -51,6 +51,13 @@ export interface CpuElement3d<E extends Element3d = Element3d> {
    */
   regionDistance(e: E, x: number, y: number, z: number): number;
   /**
+   * The cover at the walk's final point only, where it differs from `regionDistance`: a fold that
+   * brings every point of its region nearer to each point outside it (the box fold) needs no cover
+   * there, since its region's orbit is never nearer than the orbit outside the region
+   * (docs/math-3d.md §10). The mirrored cover's L at the image p* keeps `regionDistance`.
+   */
+  endCover?(e: E, x: number, y: number, z: number): number;
+  /**
    * Elements that are one involution (a sphere inversion, a plane reflection): the image of a point
    * in `out` (x, y, z) and the r² of the inversion (0: an isometry), for the mirrored cover of the
    * bound (docs/math-3d.md "§8 The tracer's distance bound"). Absent for the other kinds.
@@ -71,6 +78,8 @@ export interface GlslElement3d<E extends Element3d = Element3d> {
   step(hooks: StepHooks): string;
   /** `float <kind>RegionDistance(vec3 p, vec4 d0, …)`: CPU `regionDistance`. */
   readonly regionDistance: GlslFunction;
+  /** `float <kind>EndCover(vec3 p, vec4 d0, …)`: the CPU `endCover`, where it has one. */
+  readonly endCover?: GlslFunction;
   /**
    * The CPU `mirror`: `float <kind>Mirror(vec3 p, vec4 d0, …, out vec3 q, out float far)` sets q to
    * the image and far to |q − c|, and returns r² (0: an isometry).

@@ -4,6 +4,7 @@
  * without a record — or a record without either half — fail to type-check.
  */
 import type { Element3d } from '../../../nodes/core/scene-3d.ts';
+import { boxFold } from './box-fold.ts';
 import { compoundLoxodromic3d } from './compound-loxodromic-3d.ts';
 import { compoundParabolic3d } from './compound-parabolic-3d.ts';
 import type { ElementRecord3d } from './element-3d-kind.ts';
@@ -23,6 +24,7 @@ export const ELEMENTS_3D: ElementRegistry3d = {
   'mobius-3d': mobius3d,
   'compound-loxodromic-3d': compoundLoxodromic3d,
   'compound-parabolic-3d': compoundParabolic3d,
+  'box-fold': boxFold,
 };
 
 /** The record of `e`'s kind (the cast is safe by the registry's mapped type). */

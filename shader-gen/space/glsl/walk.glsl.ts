@@ -59,6 +59,7 @@ export function walkFunctions(placed: PlacedWalk): GlslFunction[] {
     ...placed.elements.flatMap(({ record }) => [
       ...record.glsl.deps,
       record.glsl.regionDistance,
+      ...(record.glsl.endCover ? [record.glsl.endCover] : []),
       ...(record.glsl.mirror ? [record.glsl.mirror] : []),
     ]),
   ];
@@ -81,10 +82,11 @@ const seedsMin = (placed: PlacedWalk): string =>
     ? GLSL_FAR
     : placed.seeds.map((_, k) => seedCall(placed, k)).reduce((acc, e) => `min(${acc}, ${e})`);
 
-/** Cover of element j at p: ../walk.ts coverDistance's cover_j. */
-function coverOf(placed: PlacedWalk, j: number): string {
+/** Cover of element j at p: ../walk.ts coverOf's cover_j (its end cover at the final point, `atEnd`). */
+function coverOf(placed: PlacedWalk, j: number, atEnd = false): string {
   const { record, rows, hull } = placed.elements[j]!;
-  const region = `${record.glsl.regionDistance.name}(p, ${rows.map(local).join(', ')})`;
+  const fn = atEnd && record.glsl.endCover ? record.glsl.endCover : record.glsl.regionDistance;
+  const region = `${fn.name}(p, ${rows.map(local).join(', ')})`;
   return hull ? `max(${region}, ballDistance(p, ${local(hull[0])}))` : region;
 }
 
@@ -131,7 +133,7 @@ function endDistanceStatements(placed: PlacedWalk): string[] {
             hull ? `${local(hull[1])}.x` : GLSL_FAR
           };`;
     lines.push(
-      `  float c${j} = ${coverOf(placed, j)};`,
+      `  float c${j} = ${coverOf(placed, j, true)};`,
       `  if (c${j} < de) { second = de; de = c${j}; nearest = ${j};${pick} } else second = min(second, c${j});`,
     );
   });

@@ -94,6 +94,7 @@ export const GALLERY_SECTIONS: readonly GallerySection[] = [
       'fig34-quasi-sphere-by-distance',
       'fig34-quasi-sphere-by-argument',
       'fig36-colour-print-quasi-sphere',
+      'fig38-pseudo-kleinian',
       'orbit-cosine-palette',
       'orbit-colour-by-final-point',
     ],

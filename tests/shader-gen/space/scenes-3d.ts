@@ -113,6 +113,19 @@ export const PLANES = scene3d(
   },
 );
 
+/**
+ * The pseudo-Kleinian proper (docs/math-3d.md §10): a box fold and an inversion sphere that crosses
+ * the box's faces (not a discrete group), a seed ball in a corner of box minus ball.
+ */
+export const PSEUDO_KLEINIAN = scene3d(
+  [
+    { kind: 'box-fold', box: { center: [0, 0, 0], halfSize: [1, 1, 1] } },
+    { kind: 'sphere-inversion', sphere: { center: [0, 0, 0], radius: 1.2 } },
+  ],
+  [seedSphere([0.85, 0.85, 0.85], 0.12, [0.9, 0.75, 0.4])],
+  { camera: { position: [1, -1, 0.9], target: [4, 2, -0.5], fovDeg: 60 }, maxIterations: 24 },
+);
+
 /** The scene3d of every 3D example. */
 export function exampleScenes3d(): Record<string, Scene3d> {
   const out: Record<string, Scene3d> = {};

@@ -12,7 +12,6 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import type { Element3d, Seed3d } from '../../../nodes/core/scene-3d.ts';
-import { sampleSpace } from '../../../nodes/core/seed-3d.ts';
 import { compoundLoxodromic3d } from '../../../nodes/geometry/space/compound-loxodromic-3d.ts';
 import {
   applyCompoundParabolic3d,
@@ -45,6 +44,7 @@ import {
   involutionOrbit,
   isometryOrbit,
 } from './orbit-brute-force.ts';
+import { orbitWithin } from './orbit-probe.ts';
 import { scene3d, seedSphere } from './scenes-3d.ts';
 
 const AXES: readonly Vec3[] = [
@@ -442,29 +442,6 @@ describe('the tracer bound (docs/math-3d.md §8)', () => {
     const scene = scene3d(elements, [seed], { maxIterations: 40 });
     const inversion = c.finite ? { center: finiteCentre(inf.value, c.lift), radius: c.radius } : null;
     return { scene, inversion, x: add3(face.center, scale3(c.dir, c.t * face.radius)) };
-  }
-
-  /** Directions for probing a ball: a fixed, well-spread set (golden-spiral points). */
-  const PROBES: Vec3[] = Array.from({ length: 400 }, (_, k) => {
-    const z = 1 - (2 * (k + 0.5)) / 400;
-    const a = k * Math.PI * (3 - Math.sqrt(5));
-    const h = Math.sqrt(1 - z * z);
-    return [h * Math.cos(a), h * Math.sin(a), z];
-  });
-
-  /** Shell radii, as fractions of the bound: inside it up to 0.99, then beyond it up to 10. */
-  const SHELLS = [0.1, 0.25, 0.4, 0.55, 0.7, 0.85, 0.99, 1.5, 2, 3, 4, 6, 8, 10];
-
-  /** The smallest shell radius ρ (× de) whose probe points meet the orbit, else ∞. */
-  function orbitWithin(scene: ReturnType<typeof scene3d>, x: Vec3, de: number): number {
-    const deep = { ...scene, maxIterations: 200 };
-    for (const rho of SHELLS) {
-      for (const p of PROBES) {
-        const s = sampleSpace(deep, add3(x, scale3(p, rho * de)));
-        if (s.escaped && s.distance !== null && s.distance < 0) return rho;
-      }
-    }
-    return Number.POSITIVE_INFINITY;
   }
 
   it('leaves no orbit point in the ball it claims empty (cube-type sphairahedra, finite and infinite)', () => {

@@ -12,6 +12,7 @@
 import fc from 'fast-check';
 import { describe, expect, it } from 'vitest';
 import type { Element3d, Seed3d } from '../../../nodes/core/scene-3d.ts';
+import { sampleSpace } from '../../../nodes/core/seed-3d.ts';
 import { compoundLoxodromic3d } from '../../../nodes/geometry/space/compound-loxodromic-3d.ts';
 import {
   applyCompoundParabolic3d,
@@ -44,7 +45,7 @@ import {
   involutionOrbit,
   isometryOrbit,
 } from './orbit-brute-force.ts';
-import { orbitWithin } from './orbit-probe.ts';
+import { orbitWithin, PROBES, SHELLS } from './orbit-probe.ts';
 import { scene3d, seedSphere } from './scenes-3d.ts';
 
 const AXES: readonly Vec3[] = [

@@ -174,6 +174,7 @@ export const DIAGNOSTICS = table({
     severity: 'error',
     text: (message: string, at: string) => `formula, ${at}: ${message}`,
   },
+  outsideSphairahedronSpace: { code: 'KF335', severity: 'warning', text: (detail: string) => detail },
   drawnInstead: { code: 'KF315', severity: 'info', text: (detail: string) => detail },
   cameraInside: {
     code: 'KF316',

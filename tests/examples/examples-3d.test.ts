@@ -46,8 +46,11 @@ describe('3D examples', () => {
     if (!loaded.ok) throw new Error(`${name} does not load`);
     const evaluation = evaluateGraph(loaded.doc, registry);
 
-    it('evaluates to a 3D scene with no errors or warnings', () => {
-      expect(evaluation.diagnostics.filter((d) => d.severity !== 'info')).toEqual([]);
+    it('evaluates to a 3D scene with no errors or warnings (but the one it is about)', () => {
+      // The bridges/tunnels examples are outside the parameter space on purpose: their KF335 stays.
+      const expected = /Fig\. 3[12] — (bridges|tunnels)/.test(loaded.doc.meta.title ?? '') ? ['KF335'] : [];
+      const warnings = evaluation.diagnostics.filter((d) => d.severity !== 'info');
+      expect(warnings.map((d) => d.code)).toEqual(expected);
       const scene = evaluation.scene3d!;
       expect(scene.elements.length).toBeGreaterThanOrEqual(1);
       expect(scene.seeds.length).toBeGreaterThanOrEqual(1);

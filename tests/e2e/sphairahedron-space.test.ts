@@ -17,14 +17,16 @@ const DOC = {
     {
       id: 'sph',
       type: 'sphairahedron',
+      version: 2,
       position: [0, 0],
-      params: { zb: -1.35, zc: -0.3, center: [0, 0, 1.64], radius: 2.07 },
+      params: { shape: 'cube-a', zb: -1.35, zc: -0.3, center: [0, 0, 1.64], radius: 2.07 },
     },
   ],
   edges: [],
   view: { center: [0, 0], scale: 4 },
 };
 
+const SCREENSHOT = 'examples/screenshots/sphairahedron-space.png';
 let app: ServedApp;
 let page: Page;
 
@@ -56,6 +58,9 @@ describe('sphairahedron parameter space', () => {
     const panel = inspector().getByRole('slider', { name: /Parameter space of cube A/ });
     await panel.waitFor();
     await expect.poll(status).toContain('tunnels');
+    // The README's picture of the panel (Fig. 30's small panel), at Fig. 32's parameter.
+    await panel.scrollIntoViewIfNeeded();
+    await inspector().screenshot({ path: SCREENSHOT });
     await panel.scrollIntoViewIfNeeded();
     const box = (await panel.boundingBox())!;
     // The panel shows zb, zc ∈ [−2.5, 2.5]: (0.8, 0.3) is a valid cube A.

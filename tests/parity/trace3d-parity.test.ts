@@ -58,7 +58,7 @@ const same = (a: Float32Array, b: Float32Array, i: number, anyDepth = false) =>
  * the next almost everywhere, so no pixel would be robust in depth; they are compared on hit, seed
  * and t only.
  */
-const LIMIT_SET_SURFACES = /quasi-sphere|fractal-terrain|bridges|tunnels/;
+const LIMIT_SET_SURFACES = /quasi-sphere|fractal-terrain|parameter-space|bridges|tunnels/;
 
 function compare(scene: Scene3d, gpuData: Float32Array, anyDepth = false) {
   const centre = probeScene3d(scene, W, H);

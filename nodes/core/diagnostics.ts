@@ -186,6 +186,7 @@ export const DIAGNOSTICS = table({
     text: (at: string) =>
       `the formula is not a number at some points of the bounding ball, e.g. ${at} from the centre: the tracer cannot tell how far the surface is there and draws those points as surface`,
   },
+  outsideSphairahedronSpace: { code: 'KF335', severity: 'warning', text: (detail: string) => detail },
   drawnInstead: { code: 'KF315', severity: 'info', text: (detail: string) => detail },
   cameraInside: {
     code: 'KF316',

@@ -5,6 +5,7 @@
  * prism A–F, cake A–C). Mathematics: docs/math-3d.md "Sphairahedra (paper §5.3)".
  */
 import { defineNode } from '../core/define-node.ts';
+import { diag } from '../core/diagnostics.ts';
 import type { NodeElement3d, Overlay3dShape, Seed3d } from '../core/scene-3d.ts';
 import {
   finiteElements,
@@ -13,6 +14,7 @@ import {
   infiniteSeedBox,
   infiniteSphairahedron,
 } from '../geometry/space/sphairahedron.ts';
+import { outsideWarning } from '../geometry/space/sphairahedron-space.ts';
 import { type SphairahedronTile, sphairahedronTile } from '../geometry/space/sphairahedron-tile.ts';
 import { SPHAIRAHEDRON_TYPE_IDS, sphairahedronTypeById } from '../geometry/space/sphairahedron-types.ts';
 import { fail, fmt } from './shared.ts';
@@ -114,6 +116,9 @@ export const sphairahedronNode = defineNode({
       clipped: true,
     });
     const radii = inf.value.spheres.map((s) => fmt(s.radius)).join(', ');
+    // Outside the parameter space but with every face: drawn on purpose (bridges, tunnels).
+    const outside = outsideWarning(type, inf.value.outside);
+    const diagnostics = outside ? [diag('outsideSphairahedronSpace', { port: 'zb' }, outside)] : [];
     if (params.form === 'infinite') {
       const box = infiniteSeedBox(inf.value);
       const seed: Seed3d = { kind: 'box', nodeId, ...box, color: inputs.color, clipped: true };
@@ -121,6 +126,7 @@ export const sphairahedronNode = defineNode({
       return {
         outputs: { elements: tag(infiniteElements(inf.value)), seed, tile },
         readout: `sphere radii ${radii}; floor at z = ${fmt(inf.value.floorTop)}`,
+        diagnostics,
       };
     }
     const fin = finiteSphairahedron(inf.value, { center: inputs.center, radius: inputs.radius });
@@ -136,6 +142,7 @@ export const sphairahedronNode = defineNode({
     return {
       outputs: { elements: tag(finiteElements(fin.value)), seed, tile },
       readout: `sphere radii ${radii} (before inversion)`,
+      diagnostics,
     };
   },
   overlay3d: ({ inputs, params }, out) => {

@@ -46,8 +46,11 @@ describe('3D examples', () => {
     if (!loaded.ok) throw new Error(`${name} does not load`);
     const evaluation = evaluateGraph(loaded.doc, registry);
 
-    it('evaluates to a 3D scene with no errors or warnings', () => {
-      expect(evaluation.diagnostics.filter((d) => d.severity !== 'info')).toEqual([]);
+    it('evaluates to a 3D scene with no errors or warnings (but the one it is about)', () => {
+      // The bridges/tunnels examples are outside the parameter space on purpose: their KF335 stays.
+      const expected = /Fig\. 3[12] — (bridges|tunnels)/.test(loaded.doc.meta.title ?? '') ? ['KF335'] : [];
+      const warnings = evaluation.diagnostics.filter((d) => d.severity !== 'info');
+      expect(warnings.map((d) => d.code)).toEqual(expected);
       const scene = evaluation.scene3d!;
       // A sphairahedron's tile alone (Fig. 25) is a picture without elements; any other seed needs them.
       if (!scene.seeds.every((s) => s.kind === 'tile'))

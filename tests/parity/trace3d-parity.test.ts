@@ -60,11 +60,12 @@ const same = (a: Float32Array, b: Float32Array, i: number, anyDepth = false) =>
   a[i] === b[i] && (a[i] === 0 || ((anyDepth || a[i + 2] === b[i + 2]) && a[i + 3] === b[i + 3]));
 
 /**
- * Scenes whose surface is a limit set (the sphairahedra; the pseudo-Kleinian's clusters, a third of
- * its pixels): the depth of the hit tile changes from one quarter pixel to the next almost
- * everywhere, so no pixel would be robust in depth; they are compared on hit, seed and t only.
+ * Scenes whose surface is a limit set (the sphairahedra, inside their parameter space or, with
+ * bridges and tunnels, outside it; the pseudo-Kleinian's clusters, a third of its pixels): the depth of the hit tile changes from one quarter pixel to
+ * the next almost everywhere, so no pixel would be robust in depth; they are compared on hit, seed
+ * and t only.
  */
-const LIMIT_SET_SURFACES = /quasi-sphere|fractal-terrain|pseudo-kleinian/;
+const LIMIT_SET_SURFACES = /quasi-sphere|fractal-terrain|parameter-space|bridges|tunnels|pseudo-kleinian/;
 
 function compare(scene: Scene3d, gpuData: Float32Array, anyDepth = false) {
   const centre = probeScene3d(scene, W, H);

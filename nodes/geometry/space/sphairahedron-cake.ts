@@ -2,9 +2,10 @@
  * The infinite cake (docs/math-3d.md "Sphairahedra (paper §5.3)", "The cake"): a rectangular
  * prism of four vertical planes closed below by two spheres, one shape parameter zb.
  */
-import { floorTop, type InfiniteSphairahedron, strayEdgeProblem } from './sphairahedron-shared.ts';
+import { type InfiniteSphairahedron, strayEdge } from './sphairahedron-shared.ts';
+import { withOutside } from './sphairahedron-space.ts';
 import type { CakeAngles } from './sphairahedron-types.ts';
-import { fail, ok, type Plane, type Result, type Sphere } from './sphere.ts';
+import type { Plane, Result, Sphere } from './sphere.ts';
 import type { Vec3 } from './vec3.ts';
 
 /** The distance between the rectangle's two ends (the published renderer's scale, so zb means the same). */
@@ -43,21 +44,13 @@ export function infiniteCake(type: CakeAngles, zb: number): Result<InfiniteSphai
     plane([L / 2, 0, 0], [-1, 0, 0]),
     plane([0, w / 2, 0], [0, -1, 0]),
   ];
-  // A sphere meeting its far end is allowed only where another ball hides the circle.
-  for (const [k, far] of [
-    [0, 2],
-    [1, 0],
-  ] as const) {
-    const stray = strayEdgeProblem(planes, spheres, k, far);
-    if (stray) return fail(stray);
-  }
+  // A sphere meeting its far end makes a bridge unless another ball hides the circle.
+  const bridges = [strayEdge(planes, spheres, 0, 2), strayEdge(planes, spheres, 1, 0)];
   const corners: Vec3[] = [
     [-L / 2, -w / 2, 0],
     [L / 2, -w / 2, 0],
     [L / 2, w / 2, 0],
     [-L / 2, w / 2, 0],
   ];
-  const floor = floorTop(corners, spheres);
-  if (!floor.ok) return floor;
-  return ok({ type, corners, planes, spheres, floorTop: floor.value });
+  return withOutside({ type, corners, planes, spheres }, bridges);
 }

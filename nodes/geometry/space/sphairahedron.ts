@@ -7,7 +7,8 @@
  */
 import type { Element3d } from './iis-3d.ts';
 import { infiniteCake } from './sphairahedron-cake.ts';
-import { ballTop, floorTop, type InfiniteSphairahedron, strayEdgeProblem } from './sphairahedron-shared.ts';
+import { ballTop, type InfiniteSphairahedron, strayEdge } from './sphairahedron-shared.ts';
+import { withOutside } from './sphairahedron-space.ts';
 import {
   CAKE_TYPES,
   CUBE_TYPES,
@@ -147,19 +148,14 @@ function infiniteCube(type: CubeTypeAngles, zb: number, zc: number): Result<Infi
   for (let k = 0; k < 3; k++)
     if (!(r[k] > 1e-6))
       return fail(
-        `sphere ${names[k]} would need a radius ≤ 0: zb, zc are outside this type's parameter space`,
+        `sphere ${names[k]} would need a radius ≤ 0: zb, zc are outside this type's parameter space, where no shape exists`,
       );
   const spheres = [0, 1, 2].map((k) => ({
     center: add3(add3(corners[k], scale3(w[k], r[k])), [0, 0, z[k]]),
     radius: r[k],
   })) as [Sphere, Sphere, Sphere];
-  for (let k = 0; k < 3; k++) {
-    const stray = strayEdgeProblem(planes, spheres, k, k);
-    if (stray) return fail(stray);
-  }
-  const floor = floorTop(corners, spheres);
-  if (!floor.ok) return floor;
-  return ok({ type, corners, planes, spheres, floorTop: floor.value });
+  const bridges = [0, 1, 2].map((k) => strayEdge(planes, spheres, k, k));
+  return withOutside({ type, corners, planes, spheres }, bridges);
 }
 
 /**
@@ -184,14 +180,12 @@ function infinitePentahedralPrism(type: PentahedralPrismAngles, zb: number): Res
   const a = 2 * dot3(delta, w) - 2 * rm * Math.cos(Math.PI / type.sphereSphere);
   const rc = Math.abs(a) < 1e-12 ? Number.NaN : (rm * rm - dot3(delta, delta) - zb * zb) / a;
   if (!(rc > 1e-6))
-    return fail('the corner sphere would need a radius ≤ 0: zb is outside this type’s parameter space');
+    return fail(
+      'the corner sphere would need a radius ≤ 0: zb is outside this type’s parameter space, where no shape exists',
+    );
   const corner: Sphere = { center: add3(corners[0], scale3(w, rc)), radius: rc };
   const spheres = [corner, { center: cm, radius: rm }];
-  const stray = strayEdgeProblem(planes, spheres, 0, 0);
-  if (stray) return fail(stray);
-  const floor = floorTop(corners, spheres);
-  if (!floor.ok) return floor;
-  return ok({ type, corners, planes, spheres, floorTop: floor.value });
+  return withOutside({ type, corners, planes, spheres }, [strayEdge(planes, spheres, 0, 0, 'S_c')]);
 }
 
 /** Relative margin that keeps the inversion centre visibly away from the faces. */

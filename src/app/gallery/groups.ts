@@ -83,6 +83,8 @@ export const GALLERY_SECTIONS: readonly GallerySection[] = [
       'fig25-cube-type-sphairahedron',
       'fig26-quasi-sphere',
       'fig27-tiling-steps',
+      'fig30-parameter-space',
+      'fig32-tunnels',
       'cake-quasi-sphere',
       'fig28-fractal-terrain',
       'fig33-quasi-sphere-rainbow',

@@ -59,10 +59,30 @@ describe('sphairahedron node', () => {
     expect(errors[0].message).toMatch(/inside sphere S1.*inside out/);
   });
 
-  it('shape parameters outside the parameter space are an error on the node', () => {
+  it('shape parameters where no shape exists (a radius ≤ 0) are an error on the node', () => {
     const ev = evaluateGraph(graph({ zb: 4, zc: -4 }), registry);
     expect(ev.diagnostics.some((d) => d.severity === 'error' && d.nodeId === 's')).toBe(true);
   });
+
+  it.each([
+    [1, 0, /bridges/],
+    [-1, 0, /tunnels/],
+  ])(
+    '(zb, zc) = (%s, %s) outside the parameter space is a warning saying what happens (%s), and is drawn',
+    (zb, zc, what) => {
+      const inf = infiniteSphairahedron(SPHAIRAHEDRON_TYPES[0], zb, zc);
+      if (!inf.ok) throw new Error(inf.error);
+      const inv = defaultInversionSphere(inf.value);
+      for (const form of ['finite', 'infinite']) {
+        const ev = evaluateGraph(graph({ zb, zc, form, center: inv.center, radius: inv.radius }), registry);
+        const mine = ev.diagnostics.filter((d) => d.nodeId === 's');
+        expect(mine.map((d) => [d.code, d.severity])).toEqual([['KF335', 'warning']]);
+        expect(mine[0].message).toMatch(what);
+        expect(ev.scene3d!.elements).toHaveLength(6);
+        expect(ev.scene3d!.seeds).toHaveLength(1);
+      }
+    },
+  );
 
   it.each(SPHAIRAHEDRON_TYPES.map((t) => [t.id, t] as const))(
     '%s: its example parameters evaluate without warnings, finite and infinite',

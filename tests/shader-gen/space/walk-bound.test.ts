@@ -30,6 +30,7 @@ import {
   infiniteSeedBox,
   infiniteSphairahedron,
 } from '../../../nodes/geometry/space/sphairahedron.ts';
+import { spaceClass } from '../../../nodes/geometry/space/sphairahedron-space.ts';
 import { sphairahedronTile } from '../../../nodes/geometry/space/sphairahedron-tile.ts';
 import type { Sphere } from '../../../nodes/geometry/space/sphere.ts';
 import { add3, dist3, dot3, scale3, sub3, type Vec3 } from '../../../nodes/geometry/space/vec3.ts';
@@ -401,17 +402,19 @@ describe('the tracer bound (docs/math-3d.md §8)', () => {
    * ball reaching into them) or infinite (three planes, three spheres, a box seed), and a point
    * around one of its sphere faces.
    */
-  const sphairahedron = fc.record({
-    type: fc.constantFrom(...CUBE_TYPES),
-    zb: real(-0.3, 0.3),
-    zc: real(-0.3, 0.3),
-    finite: fc.boolean(),
-    lift: real(0, 1),
-    radius: real(1, 2),
-    face: fc.integer({ min: 0, max: 2 }),
-    dir: unit3,
-    t: real(0, 1.6),
-  });
+  const sphairahedronIn = (z: number) =>
+    fc.record({
+      type: fc.constantFrom(...CUBE_TYPES),
+      zb: real(-z, z),
+      zc: real(-z, z),
+      finite: fc.boolean(),
+      lift: real(0, 1),
+      radius: real(1, 2),
+      face: fc.integer({ min: 0, max: 2 }),
+      dir: unit3,
+      t: real(0, 1.6),
+    });
+  const sphairahedron = sphairahedronIn(0.3);
 
   type SphairahedronSample = typeof sphairahedron extends fc.Arbitrary<infer T> ? T : never;
 
@@ -499,5 +502,25 @@ describe('the tracer bound (docs/math-3d.md §8)', () => {
         }
     });
     expect(tested).toBeGreaterThan(20);
+  }, 300_000);
+
+  it('leaves no orbit point in the ball it claims empty outside the parameter space (bridges, tunnels: faces crossing in new ways)', () => {
+    let tested = 0;
+    const classes = new Set<string>();
+    for (const c of fc.sample(sphairahedronIn(1.4), { seed: SEED.seed, numRuns: 120 })) {
+      const cls = spaceClass(infiniteSphairahedron(c.type, c.zb, c.zc));
+      if (cls === 'valid' || cls === 'degenerate') continue;
+      const k = sphairahedronCase(c);
+      if (!k) continue;
+      const { de } = walk3d(prepareTrace3d(k.scene), ...k.x, true);
+      expect(de).toBeGreaterThanOrEqual(0);
+      if (!(de > 1e-9)) continue;
+      classes.add(cls);
+      tested++;
+      expect(orbitWithin(k.scene, k.x, de)).toBeGreaterThan(0.99);
+      if (tested >= 30) break;
+    }
+    expect(tested).toBeGreaterThan(15);
+    expect([...classes].sort()).toEqual(['bridge', 'bridge-tunnel', 'tunnel']);
   }, 300_000);
 });

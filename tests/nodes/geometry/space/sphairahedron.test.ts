@@ -306,10 +306,10 @@ describe('infiniteSphairahedron', () => {
     );
   });
 
-  it('refuses shape parameters outside the parameter space, with a message', () => {
-    const r = infiniteSphairahedron(CUBE_TYPES[0], 3, -3);
+  it('refuses shape parameters where a sphere would need a radius ≤ 0, with a message', () => {
+    const r = infiniteSphairahedron(CUBE_TYPES[0], -1.5, 1.5);
     expect(r.ok).toBe(false);
-    if (!r.ok) expect(r.error).toMatch(/radius|reaches|hole/);
+    if (!r.ok) expect(r.error).toMatch(/radius ≤ 0/);
   });
 });
 

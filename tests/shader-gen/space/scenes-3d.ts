@@ -43,7 +43,7 @@ export function scene3d(
   };
 }
 
-const AXES: readonly Vec3[] = [
+export const AXES: readonly Vec3[] = [
   [1, 0, 0],
   [-1, 0, 0],
   [0, 1, 0],

@@ -14,18 +14,10 @@ import { prepareTrace3d } from '../../../shader-gen/space/plan.ts';
 import { seedDistance } from '../../../shader-gen/space/seeds-3d.ts';
 import { walk3d } from '../../../shader-gen/space/walk.ts';
 import { real, SEED, unit3 } from '../../nodes/geometry/space/arbitraries.ts';
-import { scene3d } from './scenes-3d.ts';
+import { AXES, scene3d } from './scenes-3d.ts';
 
 const TORUS_TILTED =
   'length(point(length(point(x, rotate(point(y, z), c).x)) - a, rotate(point(y, z), c).y)) - b';
-const AXES: readonly Vec3[] = [
-  [1, 0, 0],
-  [-1, 0, 0],
-  [0, 1, 0],
-  [0, -1, 0],
-  [0, 0, 1],
-  [0, 0, -1],
-];
 
 /** x ↦ c + r²(x − c)/|x − c|², the inversion in the sphere. */
 function invert(m: Sphere, x: Vec3): Vec3 {

@@ -123,11 +123,14 @@ export type Coloring3d =
   | { readonly mode: 'final-point'; readonly scale: number }
   /**
    * By a measure m of the hit point p (Fig. 34): `distance` |p| from the origin, `argument`
-   * atan2(p_y, p_x)/2π turns about the z axis; t = offset + frequency·m picks the colour: the
-   * seed colour's hue turned by t (`wheel`), else the cosine palette a + b·cos(2π(c·t + d)).
+   * atan2(p_y, p_x)/2π turns about the z axis, `formula` a formula of p's x, y, z and the depth n
+   * (docs/formula.md "Colour functions"); t = offset + frequency·m picks the colour: the seed
+   * colour's hue turned by t (`wheel`), else the cosine palette a + b·cos(2π(c·t + d)).
    */
   | {
-      readonly mode: 'distance' | 'argument';
+      readonly mode: 'distance' | 'argument' | 'formula';
+      /** The `formula` mode's colour function (checked by the render node). */
+      readonly formula?: string;
       readonly wheel: boolean;
       readonly a: Color;
       readonly b: Color;

@@ -44,6 +44,14 @@ export const COLOUR_NAMES: Readonly<Record<string, FormulaType>> = {
   s: 'number',
 };
 
+/** A 3D colour function's names: the hit point's x, y, z and its depth n (Render 3D's `formula` colouring). */
+export const COLOUR_3D_NAMES: Readonly<Record<string, FormulaType>> = {
+  x: 'number',
+  y: 'number',
+  z: 'number',
+  n: 'number',
+};
+
 /** The node types whose `formula` param is a formula of FORMULA_NAMES (and the time t among them). */
 export const FORMULA_NODE_TYPES: ReadonlySet<string> = new Set(['formula', 'seed-shape', 'seed-solid']);
 

@@ -4,6 +4,7 @@
  * evaluator makes them the Evaluation's `scene3d`. Out-of-range numbers are clamped with a
  * message (never an error: the picture keeps drawing while a slider passes through).
  */
+
 import { defineNode } from '../core/define-node.ts';
 import { type Diagnostic, diag } from '../core/diagnostics.ts';
 import { LIMITS } from '../core/limits.ts';
@@ -18,6 +19,9 @@ import {
 } from '../core/scene-3d.ts';
 import { DEFAULT_COLORING } from '../core/tile-spec.ts';
 import type { Color } from '../core/values.ts';
+import { formulaFor } from '../formula/checked.ts';
+import { COLOUR_3D_NAMES } from '../formula/names.ts';
+import { MAX_FORMULA_LENGTH } from '../formula/parse.ts';
 import { dist3, len3 } from '../geometry/space/vec3.ts';
 import { PALETTES } from './colour.ts';
 import { fail, fmt } from './shared.ts';
@@ -37,9 +41,12 @@ const colour = (hex: string, label: string) =>
   ({ type: 'color', label, default: hex, when: { param: 'palette', is: ['custom'] } }) as const;
 
 /** The colourings a palette colours: by depth (cosine) and by a measure of the hit point. */
-const PALETTED = ['cosine', 'distance', 'argument'];
+const PALETTED = ['cosine', 'distance', 'argument', 'formula'];
 /** The measured colourings (shader-gen/space/shade-3d.ts measureColour3d). */
-const MEASURED = ['distance', 'argument'];
+const MEASURED = ['distance', 'argument', 'formula'];
+
+/** The formula colouring's default: bands by depth, turned by the hit point's height. */
+export const COLOUR_FORMULA_3D = 'n / 6 + 0.5 * z';
 
 /** Clamps v into [lo, hi] (rounded when `integer`), saying so when it changes. */
 function clampTo(
@@ -77,7 +84,7 @@ interface ColoringInputs {
  * The Coloring3d of a mode and palette: the wheel by depth is the depth-wheel; a named palette
  * replaces a, b, c, d; distance has 1/scale palette steps per world unit, argument `cycles` per turn.
  */
-function coloring3d(mode: string, palette: string, i: ColoringInputs): Coloring3d {
+function coloring3d(mode: string, palette: string, i: ColoringInputs, formula: string): Coloring3d {
   const scale = i.scale > 0 ? i.scale : 1;
   const wheel = palette === 'wheel';
   const { a, b, c, d } = PALETTES[palette] ?? i;
@@ -89,6 +96,8 @@ function coloring3d(mode: string, palette: string, i: ColoringInputs): Coloring3
       const frequency = mode === 'distance' ? 1 / scale : i.cycles;
       return { mode, wheel, a, b, c, d, frequency, offset: i.offset };
     }
+    case 'formula':
+      return { mode, wheel, a, b, c, d, frequency: 1, offset: i.offset, formula };
     case 'surface':
     case 'final-point':
       return { mode, scale };
@@ -168,9 +177,17 @@ export const render3dNode = defineNode({
     coloring: {
       kind: 'enum',
       default: 'depth-wheel',
-      options: ['depth-wheel', 'cosine', 'surface', 'final-point', 'distance', 'argument'],
+      options: ['depth-wheel', 'cosine', 'surface', 'final-point', 'distance', 'argument', 'formula'],
       label: 'colouring',
-      doc: 'depth-wheel: the seed colour turned by the depth; cosine: a palette by depth; surface: by the hit point; final-point: by where the IIS ends; distance / argument: a palette by the hit point’s distance from the origin / angle about the z axis',
+      doc: 'depth-wheel: the seed colour turned by the depth; cosine: a palette by depth; surface: by the hit point; final-point: by where the IIS ends; distance / argument: a palette by the hit point’s distance from the origin / angle about the z axis; formula: a palette by your formula of the hit point and depth',
+    },
+    formula: {
+      kind: 'string',
+      default: COLOUR_FORMULA_3D,
+      maxLength: MAX_FORMULA_LENGTH,
+      label: 'colour formula',
+      doc: 'formula colouring: a formula of the hit point x, y, z and the depth n; palette t = offset + it',
+      when: { param: 'coloring', is: ['formula'] },
     },
     palette: {
       kind: 'enum',
@@ -183,8 +200,18 @@ export const render3dNode = defineNode({
     },
     background: { kind: 'color', default: '#101018', label: 'background' },
   },
-  evaluate: ({ inputs: i, params }) => {
+  evaluate: ({ inputs: i, params, nodeId }) => {
     const diagnostics: Diagnostic[] = [];
+    if (params.coloring === 'formula') {
+      const checked = formulaFor(
+        nodeId,
+        params.formula,
+        COLOUR_3D_NAMES,
+        ['number'],
+        'a colour formula gives a number',
+      );
+      if ('problem' in checked) return { diagnostics: [checked.problem] };
+    }
     if (!(dist3(i.camera, i.target) > 0))
       return fail('the camera and the point it looks at coincide: there is no view direction');
     let elements: readonly NodeElement3d[] = i.elements;
@@ -230,7 +257,7 @@ export const render3dNode = defineNode({
       occlusion: unit('occlusion', i.occlusion),
       shadow: unit('shadow', i.shadow),
     };
-    const coloring = coloring3d(params.coloring, params.palette, i);
+    const coloring = coloring3d(params.coloring, params.palette, i, params.formula);
     if (['surface', 'final-point', 'distance'].includes(params.coloring) && !(i.scale > 0))
       diagnostics.push(
         diag('clamped', { port: 'scale' }, `colour scale ${fmt(i.scale)} is not positive: 1 is used`),

@@ -11,8 +11,13 @@
  *   shadow — a soft-shadow march towards the light on the safe DE: res = min(res, SHADOW_K·DE/t);
  *            sh = 1 − shadow·(1 − res).
  */
+
 import type { Coloring3d, Scene3d } from '../../nodes/core/scene-3d.ts';
 import type { Color } from '../../nodes/core/values.ts';
+import { checkedFormula } from '../../nodes/formula/checked.ts';
+import type { FormulaValue } from '../../nodes/formula/functions.ts';
+import { COLOUR_3D_NAMES } from '../../nodes/formula/names.ts';
+import { FormulaError } from '../../nodes/formula/parse.ts';
 import type { Vec3 } from '../../nodes/geometry/space/vec3.ts';
 import { cosinePalette, hsvToRgb } from '../colour.ts';
 import { type Rgb, toLinear } from '../srgb.ts';
@@ -54,20 +59,42 @@ export function rgbToHsv(c: Color): [number, number, number] {
 const field = (p: Vec3, scale: number): Rgb =>
   [0, 1, 2].map((k) => 0.5 + 0.5 * Math.cos((2 * Math.PI * p[k]!) / scale)) as Rgb;
 
-/** A measured colouring of Coloring3d: by distance from the origin or by argument. */
-export type MeasureColoring3d = Extract<Coloring3d, { mode: 'distance' | 'argument' }>;
+/** A measured colouring of Coloring3d: by distance from the origin, by argument, or by a formula. */
+export type MeasureColoring3d = Extract<Coloring3d, { mode: 'distance' | 'argument' | 'formula' }>;
 
 /** The measure m of the point p: |p| (distance), or atan2(p_y, p_x)/2π turns in (−½, ½] (argument). */
-export function measure3d(mode: MeasureColoring3d['mode'], p: Vec3): number {
+export function measure3d(mode: 'distance' | 'argument', p: Vec3): number {
   return mode === 'distance' ? Math.hypot(p[0], p[1], p[2]) : Math.atan2(p[1], p[0]) / (2 * Math.PI);
+}
+
+/** One scratch environment for 3D colour formulas (each renderer thread has its own module). */
+const colourEnv = { x: 0, y: 0, z: 0, n: 0 };
+
+/**
+ * The `formula` measure: the render's colour function of the hit point's x, y, z and the depth n
+ * (docs/formula.md "Colour functions"); 0 where it is not a finite number, as in the GLSL twin.
+ */
+export function colourFormula3d(text: string, p: Vec3, depth: number): number {
+  const f = checkedFormula(text, COLOUR_3D_NAMES);
+  if (f instanceof FormulaError || f.type !== 'number') return 0;
+  colourEnv.x = p[0];
+  colourEnv.y = p[1];
+  colourEnv.z = p[2];
+  colourEnv.n = depth;
+  const v = f.run(colourEnv as unknown as Record<string, FormulaValue>) as number;
+  return Number.isFinite(v) ? v : 0;
 }
 
 /**
  * The palette colour at t = offset + frequency·m (sRGB): the seed colour's hue turned by t turns
  * (wheel), else the cosine palette a + b·cos(2π(c·t + d)).
  */
-export function measureColour3d(coloring: MeasureColoring3d, seedColour: Color, p: Vec3): Rgb {
-  const t = coloring.offset + coloring.frequency * measure3d(coloring.mode, p);
+export function measureColour3d(coloring: MeasureColoring3d, seedColour: Color, p: Vec3, depth = 0): Rgb {
+  const m =
+    coloring.mode === 'formula'
+      ? colourFormula3d(coloring.formula ?? '0', p, depth)
+      : measure3d(coloring.mode, p);
+  const t = coloring.offset + coloring.frequency * m;
   if (!coloring.wheel) return cosinePalette(coloring.a, coloring.b, coloring.c, coloring.d, t);
   const [h, s, v] = rgbToHsv(seedColour);
   return hsvToRgb(h + t, s, v);
@@ -99,7 +126,8 @@ export function baseColour(
       return field(final, coloring.scale);
     case 'distance':
     case 'argument':
-      return measureColour3d(coloring, seedColour, point);
+    case 'formula':
+      return measureColour3d(coloring, seedColour, point, depth);
   }
 }
 

@@ -157,9 +157,24 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
       },
       // A quasi-sphere (overlapping mirrors, deep tiny tiles) by the hit point's distance.
       'fig34 quasi-sphere by distance': examples['fig34-quasi-sphere-by-distance']!,
+      // A colour function of the hit point and the depth (docs/formula.md "In 3D").
+      'by formula': {
+        ...fig34,
+        coloring: {
+          mode: 'formula',
+          wheel: false,
+          a,
+          b,
+          c,
+          d,
+          frequency: 1,
+          offset: 0.2,
+          formula: 'n / 5 + 0.8 * z + 0.3 * sin(4 * atan2(y, x))',
+        },
+      },
     };
     expect(new Set(Object.values(scenes).map((s) => s.coloring.mode))).toEqual(
-      new Set(['depth-wheel', 'cosine', 'final-point', 'surface', 'distance', 'argument']),
+      new Set(['depth-wheel', 'cosine', 'final-point', 'surface', 'distance', 'argument', 'formula']),
     );
     const results: { name: string; pixels: number; median: number; p95: number; byPoint: boolean }[] = [];
     for (const [name, scene] of Object.entries(scenes)) {

@@ -4,8 +4,13 @@
  * seed-image distance, step max(deScale·DE, ε)), and shadeHit (tetrahedral normal, Coloring3d,
  * Blinn–Phong, ambient occlusion, soft shadow). Scene values come through `v` (uniforms or literals).
  */
+
 import type { Coloring3d, Scene3d } from '../../../nodes/core/scene-3d.ts';
+import { checkedFormula } from '../../../nodes/formula/checked.ts';
+import { COLOUR_3D_NAMES } from '../../../nodes/formula/names.ts';
+import { FormulaError } from '../../../nodes/formula/parse.ts';
 import { cosinePaletteGlsl, hsvToRgbGlsl, toLinearGlsl } from '../../glsl/colour.glsl.ts';
+import { formulaGlsl } from '../../glsl/formula.glsl.ts';
 import { floatLiteral, intLiteral } from '../../glsl/literal.ts';
 import { type GlslFunction, glslFunction } from '../../glsl/snippet.ts';
 import type { SceneValues } from '../../glsl/values.ts';
@@ -127,7 +132,8 @@ function baseColourGlsl(coloring: Coloring3d, v: SceneValues): GlslFunction {
       return glslFunction('baseColour', `${head}\n  return colourField(${at}, ${scale});\n}`, [fieldGlsl]);
     }
     case 'distance':
-    case 'argument': {
+    case 'argument':
+    case 'formula': {
       // ../shade-3d.ts measureColour3d: t = offset + frequency·m at the hit point.
       const [a, b, c, d] = (['a', 'b', 'c', 'd'] as const).map((k) =>
         v.vec(`u_palette${k.toUpperCase()}`, coloring[k]),
@@ -135,10 +141,13 @@ function baseColourGlsl(coloring: Coloring3d, v: SceneValues): GlslFunction {
       const wheel = v.float('u_colorWheel', coloring.wheel ? 1 : 0);
       const frequency = v.float('u_colorFrequency', coloring.frequency);
       const offset = v.float('u_colorOffset', coloring.offset);
+      const formula = coloring.mode === 'formula' ? colourFormula3dGlsl(coloring.formula ?? '0') : null;
       const m =
         coloring.mode === 'distance'
           ? 'length(point)'
-          : `atan(point.y, point.x) / ${floatLiteral(2 * Math.PI)}`;
+          : formula
+            ? 'colourFormula3d(point, depth)'
+            : `atan(point.y, point.x) / ${floatLiteral(2 * Math.PI)}`;
       return glslFunction(
         'baseColour',
         `${head}
@@ -147,10 +156,31 @@ function baseColourGlsl(coloring: Coloring3d, v: SceneValues): GlslFunction {
   vec3 hsv = rgbToHsv(seed.rgb);
   return hsvToRgb(hsv.x + t, hsv.y, hsv.z);
 }`,
-        [cosinePaletteGlsl, rgbToHsvGlsl, hsvToRgbGlsl],
+        [cosinePaletteGlsl, rgbToHsvGlsl, hsvToRgbGlsl, ...(formula ? [formula] : [])],
       );
     }
   }
+}
+
+/**
+ * `float colourFormula3d(vec3 point, float depth)`: ../shade-3d.ts colourFormula3d, written from the
+ * checked tree (../../glsl/formula.glsl.ts: nothing of the text is pasted); 0 where not finite.
+ */
+function colourFormula3dGlsl(text: string): GlslFunction {
+  const f = checkedFormula(text, COLOUR_3D_NAMES);
+  const body =
+    f instanceof FormulaError || f.type !== 'number'
+      ? { expr: '0.0', deps: [] }
+      : formulaGlsl(f.tree, { x: 'point.x', y: 'point.y', z: 'point.z', n: 'depth' });
+  return glslFunction(
+    'colourFormula3d',
+    `
+float colourFormula3d(vec3 point, float depth) {
+  float v = ${body.expr};
+  return isnan(v) || isinf(v) ? 0.0 : v;
+}`,
+    [...body.deps],
+  );
 }
 
 /** `vec4 seedData(float k)`: seed k's sRGB colour and size (../seeds-3d.ts seedSize). */

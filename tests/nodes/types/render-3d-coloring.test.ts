@@ -84,4 +84,30 @@ describe('Render 3D colourings', () => {
     expect(isFieldShown(def, 'offset', { coloring: 'argument' })).toBe(true);
     expect(isFieldShown(def, 'offset', { coloring: 'cosine' })).toBe(false);
   });
+
+  it('formula: the colour function travels with the colouring; a mistake is KF327 on the node', () => {
+    const { coloring } = coloringOf({ coloring: 'formula', formula: 'n + z', palette: 'dusk', offset: 0.5 });
+    expect(coloring).toMatchObject({
+      mode: 'formula',
+      formula: 'n + z',
+      frequency: 1,
+      offset: 0.5,
+      a: PALETTES.dusk!.a,
+    });
+    const def = defOf('render-3d');
+    expect(isFieldShown(def, 'formula', { coloring: 'formula' })).toBe(true);
+    expect(isFieldShown(def, 'formula', { coloring: 'distance' })).toBe(false);
+    expect(isFieldShown(def, 'palette', { coloring: 'formula' })).toBe(true);
+    const ev = evaluateGraph(
+      doc([node('r', 'render-3d', { coloring: 'formula', formula: 'point(x, y)' })]),
+      registry,
+    );
+    const [problem] = ev.nodes.get('r')!.diagnostics;
+    expect(problem).toMatchObject({ code: 'KF327', severity: 'error' });
+    expect(problem!.message).toContain('a colour formula gives a number, not a point');
+    // a mistake in the formula of another colouring is no mistake (the field is hidden and unused)
+    expect(coloringOf({ coloring: 'cosine', formula: 'n +' }).diagnostics.map((x) => x.code)).not.toContain(
+      'KF327',
+    );
+  });
 });

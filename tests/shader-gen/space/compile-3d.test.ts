@@ -40,6 +40,14 @@ const COLORINGS: Record<string, Coloring3d> = {
   'final-point': { mode: 'final-point', scale: 1.5 },
   distance: { ...PALETTE, mode: 'distance', wheel: false, frequency: 2, offset: 0.1 },
   argument: { ...PALETTE, mode: 'argument', wheel: true, frequency: 3, offset: 0 },
+  formula: {
+    ...PALETTE,
+    mode: 'formula',
+    wheel: false,
+    frequency: 1,
+    offset: 0,
+    formula: 'n / 4 + pow(x, 2) - y % 0.5 + round(z)',
+  },
 };
 
 const SCENES: Record<string, Scene3d> = {

@@ -61,6 +61,19 @@ describe('3D colour by a measure of the hit point', () => {
     );
   });
 
+  it('by formula: the palette of a formula of the hit point and the depth; not finite is 0', () => {
+    const f = (formula: string) => ({
+      ...coloring('distance', false, 1, 0.1),
+      mode: 'formula' as const,
+      formula,
+    });
+    const p: Vec3 = [0.5, -1, 2];
+    close(baseColour(f('n / 4 + z'), SEED, 3, p, [9, 9, 9]), cosinePalette(a, b, c, d, 0.1 + 0.75 + 2));
+    close(baseColour(f('x * y'), SEED, 0, p, [9, 9, 9]), cosinePalette(a, b, c, d, 0.1 - 0.5));
+    close(baseColour(f('1 / (n - 3)'), SEED, 3, p, p), cosinePalette(a, b, c, d, 0.1)); // ∞ → 0
+    close(baseColour(f('sqrt(-1)'), SEED, 3, p, p), cosinePalette(a, b, c, d, 0.1)); // NaN → 0
+  });
+
   it('is the colouring baseColour gives for the hit point, not the final point', () => {
     const col = coloring('distance', false, 1.7);
     close(baseColour(col, SEED, 5, [1, 2, 2], [9, 9, 9]), measureColour3d(col, SEED, [1, 2, 2]));

@@ -72,7 +72,10 @@ export const seedSolidNode = defineNode({
       checks.set(nodeId, check);
     }
     const { slope, inside, undefinedAt } = check.check;
-    if (!inside) return fail('the formula is nowhere negative in the bounding ball: the solid is empty');
+    if (!inside)
+      return fail(
+        'the formula is nowhere negative at the points sampled in the bounding ball (a 10 × 10 × 10 grid): the solid is empty, or much smaller than its ball (make the bounding radius fit it)',
+      );
     const divisor = slope > 1.001 ? slope * SLOPE_MARGIN : 1;
     const seed: Seed3d = {
       kind: 'formula',

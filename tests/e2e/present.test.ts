@@ -57,6 +57,44 @@ describe('presentation', () => {
     expect(await stepNow().textContent()).toContain(`Step 2 / ${total}`);
   });
 
+  it('once the picture is shown it grows with 1, 2, 5, 20 or all inversions (buttons and G)', async () => {
+    const growth = page.getByRole('group', { name: /Inversions drawn/ });
+    expect(await growth.count()).toBe(0); // step 2: no picture yet, nothing to grow
+    await page.keyboard.press('End');
+    await growth.waitFor();
+    const picture = page.getByTestId('present-mode').locator('canvas').first();
+    const all = growth.getByRole('button', { name: 'all' });
+    expect(await all.getAttribute('aria-pressed')).toBe('true');
+    // Wait for the whole picture to settle (two equal shots), then draw it with one inversion.
+    let whole = await picture.screenshot();
+    await expect
+      .poll(
+        async () => {
+          const next = await picture.screenshot();
+          const same = next.equals(whole);
+          whole = next;
+          return same;
+        },
+        { timeout: 60_000 },
+      )
+      .toBe(true);
+    await growth.getByRole('button', { name: '1', exact: true }).click();
+    await expect
+      .poll(async () => (await picture.screenshot()).equals(whole), { timeout: 60_000 })
+      .toBe(false);
+    await page.keyboard.press('g'); // 1 → 2
+    expect(await growth.getByRole('button', { name: '2', exact: true }).getAttribute('aria-pressed')).toBe(
+      'true',
+    );
+    await all.click();
+    expect(await all.getAttribute('aria-pressed')).toBe('true');
+    // back to step 2 for the next test
+    await page.keyboard.press('Home');
+    await page.keyboard.press('ArrowRight');
+    await page.keyboard.press('ArrowRight');
+    expect(await stepNow().textContent()).toMatch(/Step 2 \//);
+  });
+
   it('the author writes title, description and step notes; Markdown styles them, HTML stays text', async () => {
     await page.getByRole('button', { name: 'Edit text' }).click();
     const panel = page.getByRole('complementary', { name: 'Presentation text' });

@@ -14,7 +14,8 @@ import { createEvaluator } from '../../state/evaluation.ts';
 import { useEditorState } from '../../state/use-store.ts';
 import { RenderPane } from '../RenderPane.tsx';
 import { useNarrow } from '../use-narrow.ts';
-import { constructionSteps, evaluationUpTo, renderReached } from './construction-steps.ts';
+import { constructionSteps, evaluationToDepth, evaluationUpTo, renderReached } from './construction-steps.ts';
+import { GrowthBar, nextDepth } from './GrowthBar.tsx';
 import { Markdown } from './markdown.tsx';
 import { PresentEditor } from './PresentEditor.tsx';
 import { StepBar } from './StepBar.tsx';
@@ -45,8 +46,12 @@ export function Presentation({ onExit, editorHref }: Props) {
   const [editing, setEditing] = useState(false);
   const [headOpen, setHeadOpen] = useState(false);
   const built = Math.min(count, steps.length);
-  const shown = useMemo(() => evaluationUpTo(evaluation, steps, built), [evaluation, steps, built]);
+  const [depth, setDepth] = useState<number | null>(null);
   const pictured = built >= steps.length || renderReached(evaluation, steps, built);
+  const shown = useMemo(
+    () => evaluationToDepth(evaluationUpTo(evaluation, steps, built), pictured ? depth : null),
+    [evaluation, steps, built, pictured, depth],
+  );
 
   const step = useCallback((n: number) => setCount(Math.min(steps.length, Math.max(0, n))), [steps.length]);
   useEffect(() => {
@@ -57,12 +62,13 @@ export function Presentation({ onExit, editorHref }: Props) {
       else if (e.key === 'Home') step(0);
       else if (e.key === 'End') step(steps.length);
       else if (e.key === 'Escape' && onExit) onExit();
+      else if ((e.key === 'g' || e.key === 'G') && pictured) setDepth(nextDepth);
       else return;
       e.preventDefault();
     };
     window.addEventListener('keydown', onKey);
     return () => window.removeEventListener('keydown', onKey);
-  }, [step, built, steps.length, onExit]);
+  }, [step, built, steps.length, onExit, pictured]);
 
   const current = built > 0 ? steps[built - 1] : undefined;
   const notes = doc.meta.stepNotes ?? NO_NOTES;
@@ -152,6 +158,7 @@ export function Presentation({ onExit, editorHref }: Props) {
               <Markdown text={note} />
             </section>
           )}
+          {pictured && <GrowthBar depth={depth} onDepth={setDepth} />}
           {steps.length > 0 && <StepBar steps={steps} count={built} onCount={step} />}
         </div>
       </div>

@@ -60,3 +60,22 @@ export function renderReached(
   const at = steps.findIndex((s) => s.nodeId === id);
   return at >= 0 && at < count;
 }
+
+/** The depths a class steps the finished picture through (paper Figs. 27–28: steps 1, 2, 5, 20). */
+export const GROWTH_DEPTHS = [1, 2, 5, 20] as const;
+
+/**
+ * The evaluation drawn with at most `depth` inversions (null: as built): the IIS budget of the 2D
+ * scene and of the 3D scene capped, so only what the first `depth` steps reach is drawn — the
+ * tiling growing tile by tile, the orbit copy by copy, the sphairahedron's tiles layer by layer
+ * (docs/math-3d.md "The tile as a seed"). Only a uniform changes: no shader is recompiled.
+ */
+export function evaluationToDepth(evaluation: Evaluation, depth: number | null): Evaluation {
+  if (depth === null) return evaluation;
+  const { scene, scene3d } = evaluation;
+  return {
+    ...evaluation,
+    scene: { ...scene, maxIterations: Math.min(scene.maxIterations, depth) },
+    scene3d: scene3d ? { ...scene3d, maxIterations: Math.min(scene3d.maxIterations, depth) } : scene3d,
+  };
+}

@@ -7,9 +7,12 @@ import { registry } from '../../../../nodes/types/index.ts';
 import { appMode } from '../../../../src/app/present/app-mode.ts';
 import {
   constructionSteps,
+  evaluationToDepth,
   evaluationUpTo,
+  GROWTH_DEPTHS,
   renderReached,
 } from '../../../../src/app/present/construction-steps.ts';
+import { nextDepth } from '../../../../src/app/present/GrowthBar.tsx';
 
 const root = join(import.meta.dirname, '..', '..', '..', '..');
 const doc = JSON.parse(
@@ -66,5 +69,32 @@ describe('app mode', () => {
     expect(appMode('?x=1&mode=embed')).toBe('embed');
     expect(appMode('?mode=<script>')).toBe('editor');
     expect(appMode('')).toBe('editor');
+  });
+});
+
+describe('growth: the finished picture drawn with 1, 2, 5, 20 or all inversions', () => {
+  it('caps the IIS budget of the plane and of space, never raises it, and leaves the rest alone', () => {
+    expect(evaluationToDepth(evaluation, null)).toBe(evaluation);
+    const one = evaluationToDepth(evaluation, 1);
+    expect(one.scene.maxIterations).toBe(1);
+    expect(one.scene.elements).toBe(evaluation.scene.elements);
+    expect(evaluationToDepth(evaluation, 1e6).scene.maxIterations).toBe(evaluation.scene.maxIterations);
+    const space = JSON.parse(
+      readFileSync(join(root, 'examples', '3d', 'fig27-tiling-steps.kleinflow.json'), 'utf8'),
+    ) as GraphDoc;
+    const ev3 = evaluateGraph(space, registry);
+    const five = evaluationToDepth(ev3, 5);
+    expect(five.scene3d!.maxIterations).toBe(Math.min(5, ev3.scene3d!.maxIterations));
+    expect(five.scene3d!.seeds).toBe(ev3.scene3d!.seeds);
+  });
+
+  it('G steps 1, 2, 5, 20, all and round again', () => {
+    const seen: (number | null)[] = [];
+    let d: number | null = null;
+    for (let i = 0; i < GROWTH_DEPTHS.length + 2; i++) {
+      d = nextDepth(d);
+      seen.push(d);
+    }
+    expect(seen).toEqual([1, 2, 5, 20, null, 1]);
   });
 });

@@ -5,10 +5,8 @@
 
 import type { Coloring, TileSpec } from '../nodes/core/scene.ts';
 import type { Circle, Color } from '../nodes/core/values.ts';
-import { checkedFormula } from '../nodes/formula/checked.ts';
-import type { FormulaValue } from '../nodes/formula/functions.ts';
+import { finiteValue } from '../nodes/formula/checked.ts';
 import { COLOUR_NAMES } from '../nodes/formula/names.ts';
-import { FormulaError } from '../nodes/formula/parse.ts';
 import { type PictureMap, resolvePicture, samplePicture } from './picture.ts';
 import { placeUv, rotationPair } from './placement.ts';
 import { seedColour } from './seeds.ts';
@@ -97,16 +95,13 @@ const colourEnv = { z: [0, 0] as [number, number], x: 0, y: 0, n: 0, s: 1 };
  * undefined (the tile node refuses a formula that does not check).
  */
 export function colourFormulaValue(text: string, m: MeasureSource): number {
-  const f = checkedFormula(text, COLOUR_NAMES);
-  if (f instanceof FormulaError || f.type !== 'number') return 0;
   colourEnv.z[0] = m.x;
   colourEnv.z[1] = m.y;
   colourEnv.x = m.x;
   colourEnv.y = m.y;
   colourEnv.n = m.depth;
   colourEnv.s = m.s;
-  const v = f.run(colourEnv as unknown as Record<string, FormulaValue>) as number;
-  return Number.isFinite(v) ? v : 0;
+  return finiteValue(text, COLOUR_NAMES, colourEnv);
 }
 
 /** Linear colour of a measure m: the cosine palette of t = offset + scale·m. */

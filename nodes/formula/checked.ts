@@ -5,23 +5,29 @@
  */
 import { type Diagnostic, diag } from '../core/diagnostics.ts';
 import { type CompiledFormula, compileFormula, typeName } from './compile.ts';
-import type { FormulaType } from './functions.ts';
+import type { FormulaType, FormulaValue } from './functions.ts';
 import { type Formula, FormulaError, parseFormula } from './parse.ts';
 
 export interface CheckedFormula extends CompiledFormula {
   readonly tree: Formula;
 }
 
-const cache = new Map<string, CheckedFormula | FormulaError>();
+type Names = Readonly<Record<string, FormulaType>>;
+/**
+ * Per name table (the tables are module constants), by text: a colour formula is looked up at every
+ * pixel, so the lookup must not build a key string.
+ */
+const caches = new WeakMap<Names, Map<string, CheckedFormula | FormulaError>>();
 const CACHE_SIZE = 256;
 
 /** The checked formula for `text` with these names, or the FormulaError that says what is wrong. */
-export function checkedFormula(
-  text: string,
-  names: Readonly<Record<string, FormulaType>>,
-): CheckedFormula | FormulaError {
-  const key = `${Object.entries(names).join(';')}\n${text}`;
-  const hit = cache.get(key);
+export function checkedFormula(text: string, names: Names): CheckedFormula | FormulaError {
+  let cache = caches.get(names);
+  if (!cache) {
+    cache = new Map();
+    caches.set(names, cache);
+  }
+  const hit = cache.get(text);
   if (hit) return hit;
   let result: CheckedFormula | FormulaError;
   try {
@@ -32,8 +38,24 @@ export function checkedFormula(
     result = e;
   }
   if (cache.size >= CACHE_SIZE) cache.delete(cache.keys().next().value!);
-  cache.set(key, result);
+  cache.set(text, result);
   return result;
+}
+
+/**
+ * A colour function's value: the number formula `text` run in `env`, 0 where it does not check or
+ * is not finite (the GLSL twin: formula.glsl.ts finiteFormulaFunction).
+ */
+export function finiteValue(text: string, names: Names, env: object): number {
+  const run = numberRun(text, names);
+  const v = run ? (run(env as Record<string, FormulaValue>) as number) : 0;
+  return Number.isFinite(v) ? v : 0;
+}
+
+/** The run of a formula that checks and gives a number, else null (its node reports why). */
+export function numberRun(text: string, names: Names): CompiledFormula['run'] | null {
+  const f = checkedFormula(text, names);
+  return f instanceof FormulaError || f.type !== 'number' ? null : f.run;
 }
 
 /** Where in the text: “characters 5–7 (“foo”)”, “character 3 (“+”)”, or “at the end”. */

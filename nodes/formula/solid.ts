@@ -15,19 +15,15 @@
  * warns (KF330) and divides by more than it measured when it exceeds 1.
  */
 import type { Seed3d } from '../core/scene-3d.ts';
-import { checkedFormula } from './checked.ts';
+import { numberRun } from './checked.ts';
 import type { FormulaValue } from './functions.ts';
 import { SOLID_NAMES } from './names.ts';
-import { FormulaError } from './parse.ts';
 
 type SolidSeed = Extract<Seed3d, { kind: 'formula' }>;
 type Run = (env: Record<string, FormulaValue>) => FormulaValue;
 
 /** The run function of a solid formula, or null for one that does not check (the node says why). */
-export function solidRun(text: string): Run | null {
-  const f = checkedFormula(text, SOLID_NAMES);
-  return f instanceof FormulaError || f.type !== 'number' ? null : f.run;
-}
+export const solidRun = (text: string): Run | null => numberRun(text, SOLID_NAMES);
 
 /** One scratch environment, refilled per call (each renderer thread has its own module copy). */
 const env: Record<string, number> = { a: 0, b: 0, c: 0, x: 0, y: 0, z: 0 };

@@ -6,8 +6,9 @@
  * formula (pow of a negative base, round at halves, clamp with lo > hi, JavaScript's %), a helper
  * with the CPU's formula is used instead, so GPU and CPU agree.
  */
-import { CONSTANTS } from '../../nodes/formula/functions.ts';
-import type { Formula } from '../../nodes/formula/parse.ts';
+import { checkedFormula } from '../../nodes/formula/checked.ts';
+import { CONSTANTS, type FormulaType } from '../../nodes/formula/functions.ts';
+import { type Formula, FormulaError } from '../../nodes/formula/parse.ts';
 import { floatLiteral } from './literal.ts';
 import { type GlslFunction, glslFunction } from './snippet.ts';
 
@@ -78,6 +79,34 @@ export interface FormulaGlsl {
   readonly expr: string;
   /** Helper functions the expression calls. */
   readonly deps: readonly GlslFunction[];
+}
+
+/**
+ * `float name(params)`: the number formula `text` (checked with `names`, its names mapped by
+ * `glslNames` to the parameters), 0 where it does not check or is not finite — the colour
+ * functions' twin of nodes/formula/checked.ts finiteValue.
+ */
+export function finiteFormulaFunction(
+  name: string,
+  params: string,
+  text: string,
+  names: Readonly<Record<string, FormulaType>>,
+  glslNames: Readonly<Record<string, string>>,
+): GlslFunction {
+  const f = checkedFormula(text, names);
+  const body =
+    f instanceof FormulaError || f.type !== 'number'
+      ? { expr: '0.0', deps: [] }
+      : formulaGlsl(f.tree, glslNames);
+  return glslFunction(
+    name,
+    `
+float ${name}(${params}) {
+  float v = ${body.expr};
+  return isnan(v) || isinf(v) ? 0.0 : v;
+}`,
+    body.deps,
+  );
 }
 
 /**

@@ -9,14 +9,12 @@
  */
 import type { Measure, Scene, SceneElement } from '../../nodes/core/scene.ts';
 import type { Circle } from '../../nodes/core/values.ts';
-import { checkedFormula } from '../../nodes/formula/checked.ts';
 import { COLOUR_NAMES } from '../../nodes/formula/names.ts';
-import { FormulaError } from '../../nodes/formula/parse.ts';
 import type { ElementRecord } from '../elements/element-kind.ts';
 import { elementRecord } from '../elements/index.ts';
 import { farDisk, limitReach } from '../far-disk.ts';
 import { type ColourSpace, shadeGlsl } from './colour.glsl.ts';
-import { formulaGlsl } from './formula.glsl.ts';
+import { finiteFormulaFunction } from './formula.glsl.ts';
 import { floatLiteral } from './literal.ts';
 import type { SeedArg, SeedsGlsl } from './seeds.glsl.ts';
 import { type GlslFunction, glslFunction } from './snippet.ts';
@@ -186,25 +184,15 @@ float orbitTrapDistance(vec2 p, vec3 trap) {
 }`,
 );
 
-/**
- * The GLSL of colour.ts colourFormulaValue: the colour function written from its checked tree
- * (formula.glsl.ts: nothing of the text is pasted), 0 where it is not finite, like the CPU.
- */
-function colourFormulaGlsl(text: string): { expr: string; deps: readonly GlslFunction[] } {
-  const f = checkedFormula(text, COLOUR_NAMES);
-  if (f instanceof FormulaError || f.type !== 'number') return { expr: '0.0', deps: [] };
-  const body = formulaGlsl(f.tree, { z: 'p', x: 'p.x', y: 'p.y', n: 'float(depth)', s: 's' });
-  const fn = glslFunction(
-    'colourFormula',
-    `
-float colourFormula(vec2 p, int depth, float s) {
-  float v = ${body.expr};
-  return isnan(v) || isinf(v) ? 0.0 : v;
-}`,
-    [...body.deps],
-  );
-  return { expr: 'colourFormula(p, depth, s)', deps: [fn] };
-}
+/** `float colourFormula(vec2 p, int depth, float s)`: colour.ts colourFormulaValue's twin. */
+const colourFormulaGlsl = (text: string): GlslFunction =>
+  finiteFormulaFunction('colourFormula', 'vec2 p, int depth, float s', text, COLOUR_NAMES, {
+    z: 'p',
+    x: 'p.x',
+    y: 'p.y',
+    n: 'float(depth)',
+    s: 's',
+  });
 
 /** The GLSL expression of colour.ts measureValue (every input in scope in shadeSample). */
 function measureExpr(measure: Measure): string {
@@ -288,7 +276,7 @@ export function shadeSampleGlsl(
   }
   const shadeArgs = ['clipped', 'escaped', 'depth', 'edgePixels', 'p', 'limitPixels', 'seed'];
   if (coloring.mode === 'measure') {
-    if (coloring.measure === 'formula') deps.push(...colourFormulaGlsl(coloring.formula ?? '0').deps);
+    if (coloring.measure === 'formula') deps.push(colourFormulaGlsl(coloring.formula ?? '0'));
     lines.push(`  float measure = ${measureExpr(coloring.measure)};`);
     shadeArgs.push('measure');
   }

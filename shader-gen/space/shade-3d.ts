@@ -14,10 +14,8 @@
 
 import type { Coloring3d, Scene3d } from '../../nodes/core/scene-3d.ts';
 import type { Color } from '../../nodes/core/values.ts';
-import { checkedFormula } from '../../nodes/formula/checked.ts';
-import type { FormulaValue } from '../../nodes/formula/functions.ts';
+import { finiteValue } from '../../nodes/formula/checked.ts';
 import { COLOUR_3D_NAMES } from '../../nodes/formula/names.ts';
-import { FormulaError } from '../../nodes/formula/parse.ts';
 import type { Vec3 } from '../../nodes/geometry/space/vec3.ts';
 import { cosinePalette, hsvToRgb } from '../colour.ts';
 import { type Rgb, toLinear } from '../srgb.ts';
@@ -75,14 +73,11 @@ const colourEnv = { x: 0, y: 0, z: 0, n: 0 };
  * (docs/formula.md "Colour functions"); 0 where it is not a finite number, as in the GLSL twin.
  */
 export function colourFormula3d(text: string, p: Vec3, depth: number): number {
-  const f = checkedFormula(text, COLOUR_3D_NAMES);
-  if (f instanceof FormulaError || f.type !== 'number') return 0;
   colourEnv.x = p[0];
   colourEnv.y = p[1];
   colourEnv.z = p[2];
   colourEnv.n = depth;
-  const v = f.run(colourEnv as unknown as Record<string, FormulaValue>) as number;
-  return Number.isFinite(v) ? v : 0;
+  return finiteValue(text, COLOUR_3D_NAMES, colourEnv);
 }
 
 /**

@@ -6,11 +6,9 @@
  */
 
 import type { Coloring3d, Scene3d } from '../../../nodes/core/scene-3d.ts';
-import { checkedFormula } from '../../../nodes/formula/checked.ts';
 import { COLOUR_3D_NAMES } from '../../../nodes/formula/names.ts';
-import { FormulaError } from '../../../nodes/formula/parse.ts';
 import { cosinePaletteGlsl, hsvToRgbGlsl, toLinearGlsl } from '../../glsl/colour.glsl.ts';
-import { formulaGlsl } from '../../glsl/formula.glsl.ts';
+import { finiteFormulaFunction } from '../../glsl/formula.glsl.ts';
 import { floatLiteral, intLiteral } from '../../glsl/literal.ts';
 import { type GlslFunction, glslFunction } from '../../glsl/snippet.ts';
 import type { SceneValues } from '../../glsl/values.ts';
@@ -162,26 +160,14 @@ function baseColourGlsl(coloring: Coloring3d, v: SceneValues): GlslFunction {
   }
 }
 
-/**
- * `float colourFormula3d(vec3 point, float depth)`: ../shade-3d.ts colourFormula3d, written from the
- * checked tree (../../glsl/formula.glsl.ts: nothing of the text is pasted); 0 where not finite.
- */
-function colourFormula3dGlsl(text: string): GlslFunction {
-  const f = checkedFormula(text, COLOUR_3D_NAMES);
-  const body =
-    f instanceof FormulaError || f.type !== 'number'
-      ? { expr: '0.0', deps: [] }
-      : formulaGlsl(f.tree, { x: 'point.x', y: 'point.y', z: 'point.z', n: 'depth' });
-  return glslFunction(
-    'colourFormula3d',
-    `
-float colourFormula3d(vec3 point, float depth) {
-  float v = ${body.expr};
-  return isnan(v) || isinf(v) ? 0.0 : v;
-}`,
-    [...body.deps],
-  );
-}
+/** `float colourFormula3d(vec3 point, float depth)`: ../shade-3d.ts colourFormula3d's twin. */
+const colourFormula3dGlsl = (text: string): GlslFunction =>
+  finiteFormulaFunction('colourFormula3d', 'vec3 point, float depth', text, COLOUR_3D_NAMES, {
+    x: 'point.x',
+    y: 'point.y',
+    z: 'point.z',
+    n: 'depth',
+  });
 
 /** `vec4 seedData(float k)`: seed k's sRGB colour and size (../seeds-3d.ts seedSize). */
 function seedDataGlsl(scene: Scene3d, v: SceneValues): GlslFunction {

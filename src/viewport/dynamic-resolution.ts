@@ -26,7 +26,11 @@ export class DynamicResolution {
   private lastScale = 1;
   private generation = 0;
 
-  constructor(private readonly policy: ScalePolicy = DEFAULT_SCALE_POLICY) {}
+  constructor(
+    private readonly policy: ScalePolicy = DEFAULT_SCALE_POLICY,
+    /** The time in ms (performance.now; tests pass their own, so a timing never reads the real clock). */
+    private readonly clock: () => number = () => performance.now(),
+  ) {}
 
   /** The picture changed (camera, value, size): interaction until `settleMs` of stillness. */
   changed(now: number): void {
@@ -62,7 +66,7 @@ export class DynamicResolution {
 
   /** Call right before a frame's draw calls; returns the start time for `end`. */
   begin(): number {
-    return performance.now();
+    return this.clock();
   }
 
   /** Call after a frame's draw calls: times it unless another timed frame is still running. */
@@ -77,7 +81,7 @@ export class DynamicResolution {
   poll(gl: WebGL2RenderingContext): void {
     const t = this.timing;
     if (!t || t.fence.waiting(gl)) return;
-    const ms = performance.now() - t.start;
+    const ms = this.clock() - t.start;
     this.timing = null;
     if (t.generation !== this.generation) return;
     this.lastFrameMs = ms;

@@ -15,7 +15,7 @@
 import { DynamicResolution } from './dynamic-resolution.ts';
 import { BAND_MS, bandRows, firstBandRows, grownBandRows, nextBandRows } from './frame-bands.ts';
 import { GpuFence } from './gpu-fence.ts';
-import { scaledSize } from './render-scale.ts';
+import { DEFAULT_SCALE_POLICY, scaledSize } from './render-scale.ts';
 import type { Extent } from './resolve-pass.ts';
 
 export interface FramePlan {
@@ -84,7 +84,7 @@ interface Sent {
 
 export class FrameSchedule {
   /** The 3D pane's frame timing and interactive scale. */
-  readonly dynamic = new DynamicResolution();
+  readonly dynamic: DynamicResolution;
   private readonly inFlight = new GpuFence();
   private band: Band | null = null;
   /** The band size the last band measured, for the next sample of the same program and height. */
@@ -103,7 +103,9 @@ export class FrameSchedule {
   constructor(
     private readonly bandMs: number = BAND_MS,
     private readonly clock: () => number = () => performance.now(),
-  ) {}
+  ) {
+    this.dynamic = new DynamicResolution(DEFAULT_SCALE_POLICY, clock);
+  }
 
   /** The picture changed (camera, value, size): interaction begins, and the picture restarts. */
   changed(now: number): void {

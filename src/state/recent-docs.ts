@@ -25,6 +25,8 @@ export interface RecentStore {
   put(entry: RecentEntry): Promise<void>;
   /** Newest first. */
   list(): Promise<RecentEntry[]>;
+  /** Forgets the entry with this id (nothing happens when there is none). */
+  remove(id: string): Promise<void>;
 }
 
 /** The newest `limit` of `all`, and the ids of the rest (to delete). */
@@ -57,6 +59,9 @@ export function idbRecentStore(): RecentStore {
       await set(entry.id, entry, store());
       const { dropped } = keepNewest(await list());
       for (const id of dropped) await del(id, store());
+    },
+    async remove(id) {
+      await del(id, store());
     },
   };
 }

@@ -1,7 +1,9 @@
 /**
  * Recent documents: what this browser autosaved (any tab, any session), newest first, each a button
  * with its picture, title and when it was saved. A list of buttons, so Tab and Enter reach every
- * one; Escape closes. Styled like the Examples gallery, which it resembles.
+ * one; Escape closes. Styled like the Examples gallery, which it resembles. Each entry but the one this
+ * tab is editing (it would be saved again at the next change) has a Remove button; the last removal
+ * can be undone from the dialog, so a slip of the finger costs nobody their work.
  */
 import { useEffect, useRef, useState } from 'react';
 import type { GraphDoc } from '../../../nodes/graph/document.ts';
@@ -18,13 +20,25 @@ interface Props {
   /** The entry this tab is editing (marked, so nobody wonders where the current work went). */
   readonly currentId: string;
   onOpen(entry: RecentEntry): void;
+  onRemove(entry: RecentEntry): void;
+  /** The entry removed last, while it can still be put back. */
+  readonly removed: RecentEntry | null;
+  onUndoRemove(): void;
   onClose(): void;
 }
 
 const when = (ms: number) =>
   new Date(ms).toLocaleString(undefined, { dateStyle: 'medium', timeStyle: 'short' });
 
-export function RecentDialog({ entries, currentId, onOpen, onClose }: Props) {
+export function RecentDialog({
+  entries,
+  currentId,
+  onOpen,
+  onRemove,
+  removed,
+  onUndoRemove,
+  onClose,
+}: Props) {
   const dialog = useModalDialog(onClose);
   const heading = useRef<HTMLHeadingElement>(null);
   // Opened with Enter, the key's keypress comes after showModal focused the first button (close):
@@ -46,13 +60,26 @@ export function RecentDialog({ entries, currentId, onOpen, onClose }: Props) {
         </button>
       </header>
       <p className="kf-dialog__lead">Documents this browser saved as you worked, in any tab.</p>
+      {removed && (
+        <p role="status" className="kf-recent__removed">
+          Removed “{removed.title}”.{' '}
+          <button
+            type="button"
+            className="kf-link"
+            aria-label={`Undo removing “${removed.title}”`}
+            onClick={onUndoRemove}
+          >
+            Undo
+          </button>
+        </p>
+      )}
       {entries === null && <p role="status">Reading…</p>}
       {typeof entries === 'string' && <p role="status">{entries}</p>}
       {Array.isArray(entries) && entries.length === 0 && <p role="status">Nothing saved yet.</p>}
       {Array.isArray(entries) && entries.length > 0 && (
         <ul className="kf-gallery__cards" aria-label="Recent documents">
           {entries.map((e) => (
-            <li key={e.id}>
+            <li key={e.id} className="kf-recent__entry">
               <button type="button" className="kf-gallery__card" onClick={() => onOpen(e)}>
                 {e.thumbnail ? (
                   <img src={e.thumbnail} alt="" width={96} height={96} />
@@ -67,6 +94,17 @@ export function RecentDialog({ entries, currentId, onOpen, onClose }: Props) {
                   </span>
                 </span>
               </button>
+              {e.id !== currentId && (
+                <button
+                  type="button"
+                  className="kf-icon-button kf-recent__remove"
+                  aria-label={`Remove “${e.title}” from Recent`}
+                  title="Remove from Recent"
+                  onClick={() => onRemove(e)}
+                >
+                  ×
+                </button>
+              )}
             </li>
           ))}
         </ul>
@@ -89,6 +127,10 @@ export function RecentPanel({
   notify(text: string): void;
 }) {
   const [entries, setEntries] = useState<readonly RecentEntry[] | null | string>(null);
+  const [removed, setRemoved] = useState<RecentEntry | null>(null);
+  /** Bumped to read the list again after a removal or its undo. */
+  const [version, setVersion] = useState(0);
+  // biome-ignore lint/correctness/useExhaustiveDependencies: `version` is the re-read trigger.
   useEffect(() => {
     let live = true;
     recent.store.list().then(
@@ -98,7 +140,20 @@ export function RecentPanel({
     return () => {
       live = false;
     };
-  }, [recent.store]);
+  }, [recent.store, version]);
+  const failed = () => setEntries(RECENT_UNAVAILABLE);
+  const remove = (entry: RecentEntry) =>
+    recent.store.remove(entry.id).then(() => {
+      setRemoved(entry);
+      setVersion((v) => v + 1);
+    }, failed);
+  const undoRemove = () => {
+    if (!removed) return;
+    recent.store.put(removed).then(() => {
+      setRemoved(null);
+      setVersion((v) => v + 1);
+    }, failed);
+  };
   const open = (entry: RecentEntry) => {
     const loaded = parseDocumentText(entry.text, registry);
     if (!loaded.ok) {
@@ -114,6 +169,9 @@ export function RecentPanel({
       entries={entries}
       currentId={recent.currentId()}
       onOpen={open}
+      onRemove={remove}
+      removed={removed}
+      onUndoRemove={undoRemove}
       onClose={() => recent.setOpen(false)}
     />
   );

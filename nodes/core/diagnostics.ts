@@ -27,6 +27,11 @@ export interface Diagnostic {
   readonly path?: string;
   readonly nodeId?: string;
   readonly port?: string;
+  /**
+   * For a text param (a formula): the characters at fault, [start, end) of its text, so the editor
+   * can underline them where the person types.
+   */
+  readonly span?: readonly [number, number];
   readonly fix?: DiagnosticFix;
 }
 

@@ -71,7 +71,8 @@ export function formulaPlace(text: string, [start, end]: readonly [number, numbe
 /**
  * A node's formula, checked with `names`, or what the node says when it cannot use it: KF327
  * naming the characters of a formula that does not check, or KF327 for one whose type is not
- * among `accepts` (`needs` says what the node takes).
+ * among `accepts` (`needs` says what the node takes). The diagnostic names the param (`param`, as
+ * its port) and carries the span, so the node's field underlines the characters at fault.
  */
 export function formulaFor(
   nodeId: string,
@@ -79,11 +80,22 @@ export function formulaFor(
   names: Readonly<Record<string, FormulaType>>,
   accepts: readonly FormulaType[],
   needs: string,
+  param = 'formula',
 ): { readonly formula: CheckedFormula } | { readonly problem: Diagnostic } {
   const f = checkedFormula(text, names);
   if (f instanceof FormulaError)
-    return { problem: diag('formula', { nodeId }, f.message, formulaPlace(text, f.span)) };
+    return {
+      problem: {
+        ...diag('formula', { nodeId, port: param }, f.message, formulaPlace(text, f.span)),
+        span: f.span,
+      },
+    };
   if (!accepts.includes(f.type))
-    return { problem: diag('formula', { nodeId }, `${needs}, not ${typeName(f.type)}`, 'as a whole') };
+    return {
+      problem: {
+        ...diag('formula', { nodeId, port: param }, `${needs}, not ${typeName(f.type)}`, 'as a whole'),
+        span: [0, text.length],
+      },
+    };
   return { formula: f };
 }

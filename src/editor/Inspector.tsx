@@ -15,7 +15,7 @@ import { FixButton } from './FixButton.tsx';
 import { InspectorExtrasContext } from './inspector-extras.ts';
 import { SaveGroup } from './tools/SaveGroup.tsx';
 import { hasInlineEditor } from './widgets/inline-editor.ts';
-import { InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
+import { InputWidget, ParamWidget, textProblem } from './widgets/ValueWidget.tsx';
 
 interface Props {
   readonly node: GraphNode;
@@ -107,6 +107,7 @@ export function Inspector({ node, connected, evaluation, diagnostics, onLabel, o
                 spec={spec}
                 value={node.params[name]}
                 onEdit={editParam(node.id, name)}
+                problem={textProblem(diagnostics, name)}
               />
               {spec.doc && <p className="kf-inspector__hint">{spec.doc}</p>}
             </div>

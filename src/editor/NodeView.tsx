@@ -18,7 +18,7 @@ import { useKeyboardWireContext } from './keyboard-wire.ts';
 import { MoreSection } from './MoreSection.tsx';
 import { type NodeField, nodeFields } from './node-fields.ts';
 import { hasInlineEditor } from './widgets/inline-editor.ts';
-import { InputWidget, ParamWidget } from './widgets/ValueWidget.tsx';
+import { InputWidget, ParamWidget, textProblem } from './widgets/ValueWidget.tsx';
 
 /** "source:point:p1" while a wire is dragged from an output of type point on node p1. */
 function useWireInProgress(): { side: 'source' | 'target'; type: PortType; nodeId: string } | null {
@@ -141,6 +141,7 @@ function NodeViewImpl({ id, data, selected }: NodeProps<KfNode>) {
             spec={f.spec}
             value={node.params[f.name]}
             onEdit={editParam(id, f.name)}
+            problem={textProblem(problems, f.name)}
           />
         </div>
       );

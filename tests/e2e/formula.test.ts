@@ -4,9 +4,11 @@
  * second formula, a mistake shown on the node with the characters at fault, and undo bringing
  * the previous formula back into the field. Help lists the language.
  */
+import { mkdirSync } from 'node:fs';
+import { join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { type ServedApp, serveApp } from './app-server.ts';
+import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
 import { addNode, connect, edgeCount, emptyCanvasPoint, nodeCount, nodeEl } from './editor-page.ts';
 
 let app: ServedApp;
@@ -59,12 +61,18 @@ describe('Formula node', () => {
     expect(await badge.first().getAttribute('title')).toContain(
       'characters 5–10 (“sin(p)”): sin takes sin(number)',
     );
+    // The field itself says so: invalid for screen readers, the characters at fault underlined.
+    expect(await formulaField(page, f).getAttribute('aria-invalid')).toBe('true');
+    expect(await nodeEl(page, f).locator('.kf-field__problem mark').textContent()).toBe('sin(p)');
+    mkdirSync(join(repoRoot, 'test-artifacts'), { recursive: true });
+    await page.screenshot({ path: join(repoRoot, 'test-artifacts', 'formula-error.png') });
 
     // Undo: the field shows the formula before the mistake again, and the error is gone.
     await clickCanvas(page);
     await page.keyboard.press('Control+z');
     await expect.poll(() => formulaField(page, f).inputValue()).toBe('sqrt(a*a + b*b) / 2');
     await expect.poll(() => badge.count()).toBe(0);
+    expect(await formulaField(page, f).getAttribute('aria-invalid')).toBeNull();
 
     await page.getByRole('button', { name: 'Help' }).click();
     const help = page.getByRole('dialog', { name: 'Help' });

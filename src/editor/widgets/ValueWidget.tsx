@@ -8,7 +8,7 @@ import type { Circle, Line, Vec2 } from '../../../nodes/core/values.ts';
 import type { OnEdit } from './edit.ts';
 import { isVec2, isVec3 } from './inline-editor.ts';
 import { NumberField } from './NumberField.tsx';
-import { ColorField, EnumField, TextField, ToggleField } from './simple-fields.tsx';
+import { ColorField, EnumField, TextField, type TextProblem, ToggleField } from './simple-fields.tsx';
 
 const AXES = ['x', 'y', 'z'] as const;
 
@@ -144,9 +144,11 @@ interface ParamProps {
   readonly spec: ParamSpec;
   readonly value: unknown;
   readonly onEdit: OnEdit<unknown>;
+  /** A diagnostic on this param naming characters of its text (a formula's error), if any. */
+  readonly problem?: TextProblem;
 }
 
-export function ParamWidget({ name, spec, value, onEdit }: ParamProps) {
+export function ParamWidget({ name, spec, value, onEdit, problem }: ParamProps) {
   const label = spec.label ?? name;
   switch (spec.kind) {
     case 'boolean':
@@ -194,7 +196,17 @@ export function ParamWidget({ name, spec, value, onEdit }: ParamProps) {
           title={spec.doc}
           value={typeof value === 'string' ? value : spec.default}
           onEdit={onEdit}
+          problem={problem}
         />
       );
   }
+}
+
+/** The first of `diagnostics` on param `name` that names characters of its text. */
+export function textProblem(
+  diagnostics: readonly { port?: string; message: string; span?: readonly [number, number] }[],
+  name: string,
+): TextProblem | undefined {
+  const d = diagnostics.find((x) => x.port === name && x.span);
+  return d?.span ? { message: d.message, span: d.span } : undefined;
 }

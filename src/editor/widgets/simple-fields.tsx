@@ -1,5 +1,5 @@
 /** Toggles, enum selects and colour pickers: edits that end at once (each is one undo step). */
-import { useEffect, useRef } from 'react';
+import { useEffect, useId, useRef } from 'react';
 import type { OnEdit } from './edit.ts';
 
 /** What every simple field takes: its label, value, edit callback and tooltip. */
@@ -79,12 +79,46 @@ export function ColorField({ label, value, onEdit, title }: FieldProps<string>) 
   );
 }
 
+/** What is wrong with a text field's saved text, and which characters [start, end) are at fault. */
+export interface TextProblem {
+  readonly message: string;
+  readonly span: readonly [number, number];
+}
+
+/**
+ * The saved text again, its faulty characters marked (a wavy underline) — an input cannot style
+ * part of its text. A span at the end (something missing) marks a space after the last character.
+ */
+function TextProblemLine({ id, text, problem }: { id: string; text: string; problem: TextProblem }) {
+  const start = Math.min(Math.max(problem.span[0], 0), text.length);
+  const end = Math.min(Math.max(problem.span[1], start + 1), text.length);
+  const bad = text.slice(start, end) || ' ';
+  return (
+    <span className="kf-field__problem" id={id}>
+      <code aria-hidden>
+        {text.slice(0, start)}
+        <mark>{bad}</mark>
+        {text.slice(end)}
+      </code>
+      <span className="kf-visually-hidden">{problem.message}</span>
+    </span>
+  );
+}
+
 /**
  * A one-line text (a formula, a file name): typed freely, committed as one undo step on Enter or
  * when focus leaves, Esc puts the saved text back; an undo or another tab's edit shows at once.
+ * With a `problem`, the field is marked invalid and the characters at fault are underlined under it.
  */
-export function TextField({ label, value, onEdit, title }: FieldProps<string>) {
+export function TextField({
+  label,
+  value,
+  onEdit,
+  title,
+  problem,
+}: FieldProps<string> & { problem?: TextProblem }) {
   const input = useRef<HTMLInputElement>(null);
+  const problemId = useId();
   useEffect(() => {
     if (input.current && document.activeElement !== input.current) input.current.value = value;
   }, [value]);
@@ -98,6 +132,8 @@ export function TextField({ label, value, onEdit, title }: FieldProps<string>) {
         ref={input}
         className="kf-input"
         aria-label={label}
+        aria-invalid={problem ? true : undefined}
+        aria-describedby={problem ? problemId : undefined}
         spellCheck={false}
         defaultValue={value}
         onBlur={(e) => commit(e.currentTarget)}
@@ -108,6 +144,7 @@ export function TextField({ label, value, onEdit, title }: FieldProps<string>) {
           e.stopPropagation();
         }}
       />
+      {problem && <TextProblemLine id={problemId} text={value} problem={problem} />}
     </label>
   );
 }

@@ -228,6 +228,25 @@ describe('3D view', () => {
     await expect.poll(async () => (await seedParams()).center, SLOW).toEqual([0, 0, 0]);
   }, 180_000);
 
+  it('the keyboard moves the seed’s centre handle: Tab reaches it by name, arrows and Page Up move it', async () => {
+    const knob = page.locator('[data-handle="seed/center"]');
+    expect(await knob.getAttribute('aria-label')).toMatch(/center at 0, 0, 0: arrow keys move it/);
+    await knob.focus();
+    await page.keyboard.press('ArrowRight');
+    await expect.poll(async () => (await seedParams()).center, SLOW).not.toEqual([0, 0, 0]);
+    const across = (await seedParams()).center as number[];
+    await knob.focus();
+    await page.keyboard.press('PageUp');
+    await expect.poll(async () => (await seedParams()).center, SLOW).not.toEqual(across);
+    expect(await docCamera()).toBeUndefined(); // the keys moved the handle, not the camera
+    // Two presses, two undo steps.
+    await page.locator('.kf-graph').click({ position: { x: 10, y: 10 } });
+    await page.keyboard.press('Control+z');
+    await expect.poll(async () => (await seedParams()).center, SLOW).toEqual(across);
+    await page.keyboard.press('Control+z');
+    await expect.poll(async () => (await seedParams()).center, SLOW).toEqual([0, 0, 0]);
+  }, 180_000);
+
   it('an inspector edit of the seed’s radius redraws without compiling', async () => {
     const before = await compiles();
     const picture = await renderPixels(page);

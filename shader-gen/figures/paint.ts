@@ -2,13 +2,14 @@
  * Paints a figure layer (layer.ts) onto an 8-bit sRGB RGBA image (row 0 at the top, raster.ts's
  * layout): each stroke segment and dot covers a pixel by c = clamp(w/2 + ½ − d, 0, 1), d the
  * distance from the pixel centre to the segment (or dot centre minus radius), and blends
- * out = (1 − c)·out + c·colour. Labels are not painted (the PNG has no font; SVG and the overlay
- * write them). Shared by the CLI's PNG and the editor's PNG export.
+ * out = (1 − c)·out + c·colour. Labels are drawn with a single-stroke font (stroke-font.ts), placed as
+ * the overlay and SVG place them. Shared by the CLI's PNG and the editor's PNG export.
  */
 import type { View } from '../../nodes/core/scene.ts';
 import type { Color, Vec2 } from '../../nodes/core/values.ts';
 import { worldToPixel } from '../../nodes/core/view.ts';
 import type { FigureLayer } from './layer.ts';
+import { textStrokes } from './stroke-font.ts';
 
 export interface PaintTarget {
   readonly width: number;
@@ -46,34 +47,44 @@ function eachPixel(
   for (let y = y0; y <= y1; y++) for (let x = x0; x <= x1; x++) f(x, y, x + 0.5, y + 0.5);
 }
 
+/**
+ * One polyline in image pixels, `w` wide: one coverage per pixel over the whole polyline, so its
+ * joints are not blended twice.
+ */
+function paintPolyline(img: PaintTarget, pts: readonly Vec2[], w: number, color: Color): void {
+  const h = w / 2 + 1;
+  const cover = new Map<number, number>();
+  for (let i = 1; i < pts.length; i++) {
+    const [a, b] = [pts[i - 1], pts[i]];
+    const box = [
+      Math.min(a[0], b[0]) - h,
+      Math.max(a[0], b[0]) + h,
+      Math.min(a[1], b[1]) - h,
+      Math.max(a[1], b[1]) + h,
+    ];
+    eachPixel(img, box, (x, y, cx, cy) => {
+      const c = Math.min(1, Math.max(0, w / 2 + 0.5 - segmentDistance(cx, cy, a, b)));
+      const k = y * img.width + x;
+      if (c > (cover.get(k) ?? 0)) cover.set(k, c);
+    });
+  }
+  for (const [k, c] of cover) blend(img, k % img.width, Math.floor(k / img.width), color, c);
+}
+
+/** Labels as the overlay and SVG place them: 4 px right of and above the point, 14 px type. */
+export const LABEL_OFFSET_PX = 4;
+const LABEL_CAP_PX = 10;
+const LABEL_STROKE_PX = 1.6;
+const LABEL_OUTLINE_PX = 1.5;
+const BLACK: Color = [0, 0, 0];
+
 /** `pxScale` widens strokes and dots (an export larger than the live view keeps their look). */
 export function paintFigures(img: PaintTarget, view: View, layer: FigureLayer, pxScale = 1): void {
   const toImage = (p: Vec2): Vec2 => {
     const [x, y] = worldToPixel(view, img.width, img.height, p);
     return [x, img.height - y];
   };
-  for (const s of layer.strokes) {
-    const pts = s.points.map(toImage);
-    const w = s.width * pxScale;
-    const h = w / 2 + 1;
-    // One coverage per pixel over the whole polyline, so joints are not blended twice.
-    const cover = new Map<number, number>();
-    for (let i = 1; i < pts.length; i++) {
-      const [a, b] = [pts[i - 1], pts[i]];
-      const box = [
-        Math.min(a[0], b[0]) - h,
-        Math.max(a[0], b[0]) + h,
-        Math.min(a[1], b[1]) - h,
-        Math.max(a[1], b[1]) + h,
-      ];
-      eachPixel(img, box, (x, y, cx, cy) => {
-        const c = Math.min(1, Math.max(0, w / 2 + 0.5 - segmentDistance(cx, cy, a, b)));
-        const k = y * img.width + x;
-        if (c > (cover.get(k) ?? 0)) cover.set(k, c);
-      });
-    }
-    for (const [k, c] of cover) blend(img, k % img.width, Math.floor(k / img.width), s.color, c);
-  }
+  for (const s of layer.strokes) paintPolyline(img, s.points.map(toImage), s.width * pxScale, s.color);
   for (const d of layer.dots) {
     const p = toImage(d.at);
     const r = d.r * pxScale;
@@ -81,5 +92,15 @@ export function paintFigures(img: PaintTarget, view: View, layer: FigureLayer, p
     eachPixel(img, [p[0] - h, p[0] + h, p[1] - h, p[1] + h], (x, y, cx, cy) => {
       blend(img, x, y, d.color, Math.min(1, Math.max(0, r + 0.5 - Math.hypot(cx - p[0], cy - p[1]))));
     });
+  }
+  // Labels in the single-stroke font (stroke-font.ts), a dark outline under the colour so they read
+  // on any picture, as the overlay's paint-order stroke does.
+  for (const l of layer.labels) {
+    const [x, y] = toImage(l.at);
+    const off = LABEL_OFFSET_PX * pxScale;
+    const lines = textStrokes(l.text, [x + off, y - off], LABEL_CAP_PX * pxScale);
+    const w = LABEL_STROKE_PX * pxScale;
+    for (const line of lines) paintPolyline(img, line, w + 2 * LABEL_OUTLINE_PX * pxScale, BLACK);
+    for (const line of lines) paintPolyline(img, line, w, l.color);
   }
 }

@@ -42,6 +42,11 @@ export const SHORTCUTS: readonly { group: string; items: readonly Shortcut[] }[]
         keys: ['← ↑ → ↓ on a render handle'],
         action: 'Move the point (Shift: 5× as far; each press is one undo step)',
       },
+      {
+        keys: ['Page Up / Page Down on a 3D handle'],
+        action:
+          'Move it away from / nearer to the camera by a tenth of its distance (arrows move it across the screen)',
+      },
     ],
   },
   {

@@ -18,7 +18,7 @@ import { fail, fmt } from './shared.ts';
 
 /** Sakugawa's default A, B written out: the "matrices" field starts from the family's picture. */
 const DEFAULT_MATRICES = (() => {
-  const q = (v: Quaternion) => v.map((x) => fmt(x)).join(' ');
+  const q = (v: Quaternion) => v.map((x) => String(Number(x.toFixed(10)))).join(' ');
   return sakugawaGenerators(-2, 0.3, 0.3)
     .map((m, i) => `${i === 0 ? 'A' : 'B'}: ${[m.a, m.b, m.c, m.d].map(q).join(', ')}`)
     .join('; ');
@@ -40,6 +40,9 @@ export function parseQuaternionMatrices(text: string): readonly [QMatrix, QMatri
   });
   return [matrix(0), matrix(16)];
 }
+
+/** Relative tolerance of the Sp^K(1,1) conditions for typed-in matrices. */
+const TYPED_TOLERANCE = 1e-4;
 
 export const quaternionGroupNode = defineNode({
   type: 'quaternion-group',
@@ -130,7 +133,8 @@ export const quaternionGroupNode = defineNode({
     }
     const names = ['A', 'B'];
     for (const [n, g] of generators.entries()) {
-      const problem = spProblem(g);
+      // Typed-in numbers are rounded: conditions hold to 1e-4 of the entries' size.
+      const problem = spProblem(g, TYPED_TOLERANCE);
       if (problem)
         return {
           diagnostics: [

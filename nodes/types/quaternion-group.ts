@@ -90,7 +90,13 @@ export const quaternionGroupNode = defineNode({
       step: 0.1,
       doc: 'dot radius at the camera’s target distance',
     },
-    maxDepth: { type: 'number', label: 'max depth', default: 60, doc: 'the longest word, 1…500', more: true },
+    maxDepth: {
+      type: 'number',
+      label: 'max depth',
+      default: 300,
+      doc: 'the longest word, 1…2000 (words near a parabolic fixed point shrink only like 1/n)',
+      more: true,
+    },
     maxWords: {
       type: 'number',
       label: 'max words',
@@ -149,7 +155,7 @@ export const quaternionGroupNode = defineNode({
       generators: [spNormalised(generators[0]), spNormalised(generators[1])],
       leafPx: Math.min(50, Math.max(0.3, i.leafPx)),
       dotPx: Math.min(50, Math.max(0.1, i.dotPx)),
-      maxDepth: Math.round(Math.min(500, Math.max(1, i.maxDepth))),
+      maxDepth: Math.round(Math.min(2000, Math.max(1, i.maxDepth))),
       maxWords: Math.round(Math.min(5_000_000, Math.max(1, i.maxWords))),
       colors: [i.colorA, i.colorB, i.colorAi, i.colorBi],
     };

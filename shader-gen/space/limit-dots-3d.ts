@@ -115,10 +115,12 @@ export function paintLimitDots3d(
         const nh = Math.max(0, dx * h[0] - dy * h[1] + nz * h[2]);
         const spec = specular * nh ** shininess;
         const o = 4 * (y * width + x);
+        // Over a transparent pixel (the app's overlay canvas) the edge fades by alpha alone.
+        const clear = data[o + 3] === 0;
         for (let i = 0; i < 3; i++) {
-          const lit = Math.min(1, base[i]! * (ambient + diffuse * nl) + spec);
-          const under = data[o + i]! / 255;
-          data[o + i] = Math.round(255 * (linearToSrgb(lit) * cover + under * (1 - cover)));
+          const lit = linearToSrgb(Math.min(1, base[i]! * (ambient + diffuse * nl) + spec));
+          const under = clear ? lit : data[o + i]! / 255;
+          data[o + i] = Math.round(255 * (lit * cover + under * (1 - cover)));
         }
         data[o + 3] = Math.max(data[o + 3]!, Math.round(255 * cover));
       }

@@ -35,7 +35,7 @@ describe('quaternion-group', () => {
     expect(r.codes).toEqual([]);
     expect(r.group?.nodeId).toBe('n');
     for (const g of r.group!.generators) expect(pseudoDeterminant(g)[0]).toBeCloseTo(1, 12);
-    expect(r.group!.maxDepth).toBe(60);
+    expect(r.group!.maxDepth).toBe(300);
   });
 
   it('types the default matrices out so that "matrices" starts from the same group', () => {

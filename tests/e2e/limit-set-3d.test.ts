@@ -1,14 +1,16 @@
 /**
  * Fig. 6 in real Chromium: the quaternion Kleinian group example draws its limit set as shaded dots
  * on the 3D view's overlay canvas (the painter of `kleinflow render`, shader-gen/space/
- * limit-dots-3d.ts), and an orbit of the camera redraws them from the new point of view.
+ * limit-dots-3d.ts), an orbit of the camera redraws them from the new point of view, and
+ * Export → PNG carries them.
  */
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { decodePng } from '../../src/io/png.ts';
 import { repoRoot, type ServedApp } from './app-server.ts';
-import { openViaPicker } from './io-page.ts';
+import { menu, openViaPicker } from './io-page.ts';
 import { openSmall3dPane } from './view-3d-page.ts';
 
 const ID = 'fig06-quaternion-kleinian-group';
@@ -61,4 +63,19 @@ describe('the limit set of a quaternion Kleinian group in the 3D view', () => {
     await expect.poll(async () => (await dotPixels()).where, SLOW).not.toBe(before.where);
     expect((await dotPixels()).count).toBeGreaterThan(200);
   });
+
+  it('paints the dots into the exported PNG (the background alone is dark)', async () => {
+    await menu(page, 'Export', 'PNG image');
+    const dialog = page.getByRole('dialog', { name: 'Export PNG' });
+    await dialog.getByLabel('Samples').fill('1');
+    const [download] = await Promise.all([
+      page.waitForEvent('download', { timeout: 120_000 }),
+      dialog.getByRole('button', { name: /^Export \d+/ }).click(),
+    ]);
+    const image = decodePng(new Uint8Array(readFileSync((await download.path()) as string)));
+    let lit = 0;
+    for (let i = 0; i < image.data.length; i += 4)
+      if (Math.max(image.data[i]!, image.data[i + 1]!, image.data[i + 2]!) > 100) lit++;
+    expect(lit).toBeGreaterThan(200);
+  }, 150_000);
 });

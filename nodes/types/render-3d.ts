@@ -285,7 +285,9 @@ export const render3dNode = defineNode({
     return {
       outputs: {},
       diagnostics,
-      readout: `${plural(elements.length, 'element')}, ${plural(seeds.length, 'seed')}`,
+      readout: `${plural(elements.length, 'element')}, ${plural(seeds.length, 'seed')}${
+        i.limitSets.length > 0 ? `, ${plural(i.limitSets.length, 'limit set')}` : ''
+      }`,
       render3d: settings,
     };
   },

@@ -5,7 +5,7 @@ import { pseudoDeterminant } from '../../../nodes/geometry/space/quaternion-mobi
 import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
 import { registry } from '../../../nodes/types/index.ts';
 import { parseQuaternionMatrices } from '../../../nodes/types/quaternion-group.ts';
-import { doc, node } from '../support/doc.ts';
+import { doc, edge, node } from '../support/doc.ts';
 
 const alone = (params: Record<string, unknown> = {}) => {
   const result = evaluateGraph(doc([node('n', 'quaternion-group', params)]), registry).nodes.get('n')!;
@@ -74,5 +74,16 @@ describe('quaternion-group', () => {
   it('needs 32 numbers', () => {
     expect(parseQuaternionMatrices('A: 1 0 0 0')).toMatch(/needs 32 numbers .* it has 4/);
     expect(alone({ family: 'matrices', matrices: '1 2 3' }).codes).toEqual(['KF303']);
+  });
+
+  it('wired into Render 3D, becomes the scene’s limit set (and the render needs no seed)', () => {
+    const e = evaluateGraph(
+      doc([node('g', 'quaternion-group'), node('r', 'render-3d')], [edge('e', 'g.group', 'r.limitSets')]),
+      registry,
+    );
+    expect(e.scene3d?.limitSets?.map((l) => l.nodeId)).toEqual(['g']);
+    const render = e.nodes.get('r')!;
+    expect(render.readout).toBe('0 elements, 0 seeds, 1 limit set');
+    expect(render.diagnostics).toEqual([]);
   });
 });

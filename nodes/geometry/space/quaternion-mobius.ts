@@ -154,7 +154,7 @@ export function attractingFixedPoint(m: QMatrix): QPoint {
  *   A = [[q_A, 0], [z q_A, q_A]],   B = [[q_B, q_B], [0, q_B]],
  *   z = x + R j,  R = √(−x (x + 4)) · |sin(θ_A + θ_B)|,  −4 < x < 0.
  * B is the screw motion x ↦ q_B (x + 1) q_B⁻¹ (a turn by 2θ_B about the first axis after a unit
- * step along it); A is conjugate to such a screw by the inversion x ↦ −x⁻¹.
+ * step along it); A is conjugate by x ↦ x⁻¹ to the motion y ↦ z + q_A y q_A⁻¹ (1/(A·x) = z + q_A x⁻¹ q_A⁻¹).
  */
 export function sakugawaGenerators(x: number, thetaA: number, thetaB: number): readonly [QMatrix, QMatrix] {
   const R = Math.sqrt(-x * (x + 4)) * Math.abs(Math.sin(thetaA + thetaB));

@@ -192,6 +192,18 @@ export const DIAGNOSTICS = table({
       `the formula is not a number at some points of the bounding ball, e.g. ${at} from the centre: the tracer cannot tell how far the surface is there and draws those points as surface`,
   },
   outsideSphairahedronSpace: { code: 'KF335', severity: 'warning', text: (detail: string) => detail },
+  // Quaternion Kleinian groups (docs/math-3d.md "Quaternion Kleinian groups").
+  quaternionSingular: {
+    code: 'KF340',
+    severity: 'error',
+    text: (name: string, detail: string) => `generator ${name} is singular: ${detail}`,
+  },
+  quaternionNotSp: {
+    code: 'KF341',
+    severity: 'error',
+    text: (name: string, detail: string) =>
+      `generator ${name} is not a Möbius transformation of space (not in Sp^K(1,1)): ${detail}`,
+  },
   drawnInstead: { code: 'KF315', severity: 'info', text: (detail: string) => detail },
   cameraInside: {
     code: 'KF316',

@@ -4,6 +4,7 @@
  */
 import { z } from 'zod';
 import { normalize3 } from '../geometry/space/vec3.ts';
+import type { LimitSet3d } from './limit-set-3d.ts';
 import type { ManyPortType, PortType } from './ports.ts';
 import type { NodeElement3d, Plane, Seed3d, Sphere, Vec3 } from './scene-3d.ts';
 import type { SceneElement } from './scene-elements.ts';
@@ -27,6 +28,7 @@ export interface PortValueMap {
   plane: Plane;
   element3: readonly NodeElement3d[];
   seed3: Seed3d;
+  limit3: LimitSet3d;
 }
 
 /** One value of a many-type's list (an element output already carries a list). */
@@ -81,6 +83,7 @@ export const PORT_VALUE_SCHEMA: Readonly<Record<PortType, z.ZodType | null>> = {
   plane,
   element3: null,
   seed3: null,
+  limit3: null,
 };
 
 /** Runtime value → the JSON that PORT_VALUE_SCHEMA reads back (the inverse of parsing). */

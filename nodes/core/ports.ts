@@ -19,6 +19,7 @@ export const PORT_TYPES = [
   'plane',
   'element3',
   'seed3',
+  'limit3',
 ] as const;
 export type PortType = (typeof PORT_TYPES)[number];
 
@@ -85,6 +86,12 @@ export const PORT_TYPE_INFO = {
     many: true,
     accepts: ONLY_ITSELF,
     doc: 'one or more 3D orbit seeds (spheres, boxes) whose images the 3D render draws',
+  },
+  limit3: {
+    color: '#ff8a65',
+    many: true,
+    accepts: ONLY_ITSELF,
+    doc: 'one or more quaternion Kleinian groups whose limit sets the 3D render draws as dots',
   },
 } satisfies Readonly<Record<PortType, PortTypeInfo>>;
 

@@ -11,6 +11,7 @@ import type { Element3d } from '../geometry/space/iis-3d.ts';
 import type { SphairahedronTile } from '../geometry/space/sphairahedron-tile.ts';
 import type { Plane, Sphere } from '../geometry/space/sphere.ts';
 import type { Vec3 } from '../geometry/space/vec3.ts';
+import type { LimitSet3d } from './limit-set-3d.ts';
 import type { Color } from './values.ts';
 
 export type { Element3d } from '../geometry/space/iis-3d.ts';
@@ -187,4 +188,6 @@ export interface Scene3d {
   readonly renderNodeId: string;
   readonly overlays: readonly Overlay3dItem[];
   readonly handles: readonly Handle3dItem[];
+  /** Quaternion Kleinian groups whose limit sets are drawn as dots over the traced picture. */
+  readonly limitSets?: readonly LimitSet3d[];
 }

@@ -31,6 +31,7 @@ import { planeReflectionNode } from './plane-reflection.ts';
 import { pointNode } from './point.ts';
 import { point3dNode } from './point-3d.ts';
 import { invertPointNode, midpointNode, reflectPointNode } from './point-constructions.ts';
+import { quaternionGroupNode } from './quaternion-group.ts';
 import { recipeNode } from './recipe.ts';
 import { rectangleKaleidoscopeNode } from './rectangle-kaleidoscope.ts';
 import { reflectionNode } from './reflection.ts';
@@ -107,6 +108,7 @@ export const NODE_TYPES = [
   mobius3dNode,
   compoundLoxodromic3dNode,
   compoundParabolic3dNode,
+  quaternionGroupNode,
   boxFoldNode,
   seedSphereNode,
   seedBoxNode,

@@ -116,6 +116,12 @@ export const render3dNode = defineNode({
   inputs: {
     elements: element3Input('elements'),
     seeds: { type: 'seed3', label: 'seeds', optional: true, doc: 'the shapes whose images are drawn' },
+    limitSets: {
+      type: 'limit3',
+      label: 'limit sets',
+      optional: true,
+      doc: 'quaternion Kleinian groups whose limit sets are drawn as dots over the picture',
+    },
     camera: point3Input('camera', cx, cy, cz, 'where the eye is (z is up)'),
     target: point3Input('look at', tx, ty, tz, 'the point the camera looks at'),
     fov: setting('field of view °', DEFAULT_CAMERA_3D.fovDeg, 'vertical field of view, 1°…170°'),
@@ -227,7 +233,7 @@ export const render3dNode = defineNode({
       diagnostics.push(diag('tooManySeeds', { port: 'seeds' }, seeds.length, LIMITS.maxSeeds));
       seeds = seeds.slice(0, LIMITS.maxSeeds);
     }
-    if (seeds.length === 0)
+    if (seeds.length === 0 && i.limitSets.length === 0)
       diagnostics.push({
         ...diag('clamped', { port: 'seeds' }, 'no seeds wired in: there is nothing to draw'),
         severity: 'info',
@@ -273,12 +279,15 @@ export const render3dNode = defineNode({
       coloring,
       background: params.background,
       samples: clampTo('samples', i.samples, 1, LIMITS.maxSamples, diagnostics, true),
+      ...(i.limitSets.length > 0 ? { limitSets: i.limitSets } : {}),
     };
     const plural = (n: number, w: string) => `${n} ${w}${n === 1 ? '' : 's'}`;
     return {
       outputs: {},
       diagnostics,
-      readout: `${plural(elements.length, 'element')}, ${plural(seeds.length, 'seed')}`,
+      readout: `${plural(elements.length, 'element')}, ${plural(seeds.length, 'seed')}${
+        i.limitSets.length > 0 ? `, ${plural(i.limitSets.length, 'limit set')}` : ''
+      }`,
       render3d: settings,
     };
   },

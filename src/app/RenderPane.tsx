@@ -18,6 +18,7 @@ import { liveMedia } from '../viewport/live-media.ts';
 import { attachOrbitControls } from '../viewport/orbit-controls.ts';
 import { OrbitOverlay } from '../viewport/overlay/OrbitOverlay.tsx';
 import { type NodePatch, RenderOverlay } from '../viewport/overlay/RenderOverlay.tsx';
+import { LimitSetOverlay3d } from '../viewport/overlay-3d/LimitSetOverlay3d.tsx';
 import { RenderOverlay3d } from '../viewport/overlay-3d/RenderOverlay3d.tsx';
 import { attachPanZoom } from '../viewport/pan-zoom.ts';
 import { Viewport } from '../viewport/viewport.ts';
@@ -250,6 +251,9 @@ export function RenderPane({
       data-testid="render-pane"
     >
       <canvas ref={canvas} className="kf-render__canvas" aria-label="Rendered picture" />
+      {size.width > 0 && scene3d && (
+        <LimitSetOverlay3d scene={scene3d} camera={camera3d.camera} width={size.width} height={size.height} />
+      )}
       {size.width > 0 && scene3d && (
         <RenderOverlay3d
           evaluation={evaluation}

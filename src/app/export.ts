@@ -6,6 +6,7 @@ import type { Scene, View } from '../../nodes/core/scene.ts';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { figureLayer } from '../../shader-gen/figures/layer.ts';
 import { paintFigures } from '../../shader-gen/figures/paint.ts';
+import { paintSceneLimitSets3d } from '../../shader-gen/space/limit-dots-3d.ts';
 import { standaloneShader } from '../../shader-gen/standalone.ts';
 import { embedGraph } from '../io/png-graph.ts';
 import { type Drawable, is3d } from '../viewport/drawable.ts';
@@ -54,6 +55,11 @@ export async function renderPng(
     onProgress,
   });
   if (!pixels) return null;
+  if (live && is3d(live) && live.limitSets?.length) {
+    // Fig. 6: the quaternion groups' limit-set dots, as the view's overlay paints them.
+    const seen = doc.camera3d ? { ...live, camera: doc.camera3d } : live;
+    paintSceneLimitSets3d(seen, { width: o.width, height: o.height, data: pixels });
+  }
   if (!(live && is3d(live))) {
     // The render node's figures (Cayley graph, depth-first limit set), as the live overlay draws
     // them: enumerated for the live view's pixel size, widened like the tile edges.

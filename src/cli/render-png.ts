@@ -8,6 +8,7 @@ import type { Scene3d } from '../../nodes/core/scene-3d.ts';
 import { figureLayer } from '../../shader-gen/figures/layer.ts';
 import { paintFigures } from '../../shader-gen/figures/paint.ts';
 import { rasterize } from '../../shader-gen/raster.ts';
+import { paintSceneLimitSets3d } from '../../shader-gen/space/limit-dots-3d.ts';
 import { encodePng } from '../io/png.ts';
 import { PNG_GRAPH_KEY } from './load-graph.ts';
 import { type Pool3dRequest, renderScene3dOnPool } from './render-3d-pool.ts';
@@ -50,12 +51,15 @@ const keepGoing = (onProgress?: (done: number) => void) =>
 
 /**
  * A 3D graph's picture: the CPU sphere tracer at the graph's camera, in bands over `threads`
- * worker threads (render-3d-pool.ts), graph embedded like 2D.
+ * worker threads (render-3d-pool.ts), limit-set dots painted over it, graph embedded like 2D.
  */
 export async function renderScene3dPngOnPool(
   scene: Scene3d,
   graphText: string | null,
   request: Pool3dRequest,
 ): Promise<Uint8Array> {
-  return encodeWithGraph(await renderScene3dOnPool(scene, request), graphText);
+  const raster = await renderScene3dOnPool(scene, request);
+  // The quaternion groups' limit sets (Fig. 6) are dots over the traced picture, as in the app.
+  paintSceneLimitSets3d(scene, raster);
+  return encodeWithGraph(raster, graphText);
 }

@@ -71,6 +71,7 @@ export const GALLERY_SECTIONS: readonly GallerySection[] = [
   {
     title: '3D',
     ids: [
+      'fig06-quaternion-kleinian-group',
       'fig11-sphere-inversion-fractal',
       'fig12-eight-spheres-three-seeds',
       'fig24-orbit-of-a-cube',

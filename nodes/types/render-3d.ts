@@ -113,7 +113,7 @@ export const render3dNode = defineNode({
   label: 'Render 3D',
   category: 'Output',
   color: '#ffffff',
-  doc: 'The 3D picture: sphere-traces the orbits of the seeds under every 3D element wired in (tested in graph order), lit and coloured.',
+  doc: 'The 3D picture: sphere-traces the orbits of the seeds under every 3D element wired in (tested in graph order), lit and coloured — or, with render: volume, draws the nesting depth of the mirrors as a translucent cloud (Fig. 10).',
   inputs: {
     elements: element3Input('elements'),
     seeds: { type: 'seed3', label: 'seeds', optional: true, doc: 'the shapes whose images are drawn' },

@@ -91,6 +91,9 @@ export function volumeRay(
   const rgb: Rgb = [0, 0, 0];
   let T = 1;
   let tau = 0;
+  // The colour depends on the depth alone: recomputed only when the depth changes.
+  let lastDepth = -1;
+  let c: Rgb = [0, 0, 0];
   for (let i = 0; i < n; i++) {
     const t = span[0] + (i + jitter) * dt;
     walk3d(plan, o[0] + d[0] * t, o[1] + d[1] * t, o[2] + d[2] * t, false, w);
@@ -98,7 +101,10 @@ export function volumeRay(
     const sigma = extinction(v, w.depth) * dt;
     tau += sigma;
     const alpha = 1 - Math.exp(-sigma);
-    const c = volumeColour(v, transferPlace(v, w.depth));
+    if (w.depth !== lastDepth) {
+      c = volumeColour(v, transferPlace(v, w.depth));
+      lastDepth = w.depth;
+    }
     for (let k = 0; k < 3; k++) rgb[k]! += T * alpha * c[k]!;
     T *= 1 - alpha;
     if (T < EXIT_TRANSMITTANCE) return { rgb, transmittance: T, opticalDepth: tau, samples: i + 1 };

@@ -17,6 +17,7 @@ const BENCHES = [
   './editor.ts',
   './animation.ts',
   './trace3d.ts',
+  './volume3d.ts',
   './cpu3d.ts',
   './mesh.ts',
 ] as const;

@@ -3,7 +3,8 @@
  * real Chromium (WebGL2 through SwiftShader): compile3d's volume probe, (opacity, optical depth,
  * samples, 0) per pixel centre, agrees with the float64 CPU reference (render-3d.ts probeVolume3d),
  * the same hashed sample offsets included; the colour program's medium over the background matches
- * volume-3d.ts; new values re-render without a new program.
+ * volume-3d.ts; the hand-written bench renderer draws the same picture; new values re-render
+ * without a new program.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
@@ -11,6 +12,9 @@ import { rayDirection } from '../../shader-gen/space/camera-3d.ts';
 import { cameraUniforms, compile3d } from '../../shader-gen/space/compile-3d.ts';
 import { probeVolume3d, render3dFrame } from '../../shader-gen/space/render-3d.ts';
 import { overBackground, volumeJitter, volumeRay } from '../../shader-gen/space/volume-3d.ts';
+import { HAND_WRITTEN_VOLUME } from '../bench/hand-written/trace3d.ts';
+import { opacityDiffer } from '../bench/volume3d.ts';
+import { exampleScenes3d } from '../shader-gen/space/scenes-3d.ts';
 import { NESTED, ONE_MIRROR } from '../shader-gen/space/volume-scenes.ts';
 import { GpuProbe } from './gpu-probe.ts';
 
@@ -95,6 +99,17 @@ describe('volume renderer: GPU = CPU (SwiftShader)', () => {
     expect(median).toBeLessThan(0.002);
     expect(p99).toBeLessThan(0.03);
   }, 300_000);
+
+  for (const { example, source } of HAND_WRITTEN_VOLUME) {
+    it(`the hand-written bench renderer draws what the generated program draws (${example})`, async () => {
+      const scene = exampleScenes3d()[example]!;
+      const generated = await gpuImage(scene, 'volume-probe');
+      const index = await gpu.program(compile3d(scene).vertexSource, source);
+      const image = await gpu.render(index, cameraUniforms(scene.camera), { center: [0, 0], scale: 1 });
+      expect(image.data.filter((v, i) => i % 4 === 0 && v > 0.05).length).toBeGreaterThan(0.1 * W * H);
+      expect(opacityDiffer(generated.data, image.data)).toBeLessThan(0.01);
+    }, 300_000);
+  }
 
   it('new volume values re-render from uniforms without a new program', async () => {
     const denser: Scene3d = { ...NESTED, volume: { ...NESTED.volume!, density: 4 } };

@@ -2,7 +2,8 @@
  * The GLSL volume renderer, twin of ../volume-3d.ts line by line (docs/math-3d.md "§11 Volume
  * rendering of the nesting depth"): the pixel's sample offset (the same integer hash, in uint
  * arithmetic mod 2³²), the span in the regions' ball, N samples of walkPlain's depth through the
- * transfer, front-to-back compositing with the early exit. Values that users drag (samples, density,
+ * transfer, front-to-back compositing with the early exit. The colour is a function of the depth
+ * alone, so it is only recomputed when the depth changes from one sample to the next. Values that users drag (samples, density,
  * depth range, palette, bounds) come through `v` (uniforms, or literals when baked).
  */
 import type { Volume3d } from '../../../nodes/core/scene-3d.ts';
@@ -62,6 +63,8 @@ vec4 volumeRay(vec3 o, vec3 d, float jitter, out vec3 rgb) {
   float dt = (span.y - span.x) / float(n);
   float T = 1.0;
   float tau = 0.0;
+  float lastK = -1.0;
+  vec3 colour = vec3(0.0);
   for (int i = 0; i < n; ++i) {
     float t = span.x + (float(i) + jitter) * dt;
     vec4 info;
@@ -73,7 +76,11 @@ vec4 volumeRay(vec3 o, vec3 d, float jitter, out vec3 rgb) {
     float sigma = tr.x * pow(tr.w, k - tr.y) * dt;
     tau += sigma;
     float alpha = 1.0 - exp(-sigma);
-    rgb += T * alpha * toLinear(cosinePalette(${pa}, ${pb}, ${pc}, ${pd}, u));
+    if (k != lastK) {
+      colour = toLinear(cosinePalette(${pa}, ${pb}, ${pc}, ${pd}, u));
+      lastK = k;
+    }
+    rgb += T * alpha * colour;
     T *= 1.0 - alpha;
     if (T < ${floatLiteral(EXIT_TRANSMITTANCE)}) return vec4(T, tau, float(i + 1), 0.0);
   }

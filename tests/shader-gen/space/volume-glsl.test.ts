@@ -3,12 +3,13 @@
  * program — colour, probe and volume probe, uniform and baked, Shadertoy — passes glslangValidator
  * and the WebGL identifier rules; the values users drag (samples, density, growth, depth range,
  * palette, the mirrors) are uniforms, so the source stays the same; a volume probe of a surface
- * scene is refused.
+ * scene is refused. The hand-written bench renderer passes glslangValidator too.
  */
 import { describe, expect, it } from 'vitest';
 import type { Scene3d } from '../../../nodes/core/scene-3d.ts';
 import { PALETTES } from '../../../nodes/types/colour.ts';
 import { compile3d, shadertoySource3d } from '../../../shader-gen/space/compile-3d.ts';
+import { HAND_WRITTEN_VOLUME } from '../../bench/hand-written/trace3d.ts';
 import {
   type ShaderToCheck,
   shadertoyWrapper,
@@ -37,6 +38,8 @@ describe('compile3d, volume mode', () => {
     ),
     { name: `${name}.shadertoy`, source: shadertoyWrapper(shadertoySource3d(scene)), stage: 'frag' as const },
   ]);
+  for (const { example, source } of HAND_WRITTEN_VOLUME)
+    shaders.push({ name: `hand-written-${example}`, source, stage: 'frag' });
   const results = validateShaders(shaders);
   for (const shader of shaders) {
     it(`${shader.name} passes glslangValidator`, () => {

@@ -72,6 +72,7 @@ export const GALLERY_SECTIONS: readonly GallerySection[] = [
     title: '3D',
     ids: [
       'fig11-sphere-inversion-fractal',
+      'fig10-volume-nesting-spheres',
       'fig12-eight-spheres-three-seeds',
       'fig24-orbit-of-a-cube',
       'formula-tilted-torus',

@@ -19,6 +19,7 @@ const BENCHES = [
   './trace3d.ts',
   './volume3d.ts',
   './cpu3d.ts',
+  './cpu-volume.ts',
   './mesh.ts',
 ] as const;
 

@@ -13,7 +13,7 @@ import { cosinePalette } from '../colour.ts';
 import { type Rgb, toLinear } from '../srgb.ts';
 import { boundedRegions, enclosingBall, type TracePlan } from './plan.ts';
 import { rayInterval } from './trace-3d.ts';
-import { walk3d, walkResult } from './walk.ts';
+import { walkDepth3d } from './walk.ts';
 
 /** Compositing stops once the transmittance is below this (the ray is ≈ 99 % opaque). */
 export const EXIT_TRANSMITTANCE = 0.01;
@@ -72,9 +72,6 @@ export interface VolumeRay {
 
 const EMPTY: VolumeRay = { rgb: [0, 0, 0], transmittance: 1, opticalDepth: 0, samples: 0 };
 
-/** Scratch walk result (the CPU renderer is single-threaded). */
-const w = walkResult();
-
 /** Integrates the ray o + t·d (d unit) through the nesting depth with sample offset `jitter`. */
 export function volumeRay(
   plan: TracePlan,
@@ -96,14 +93,14 @@ export function volumeRay(
   let c: Rgb = [0, 0, 0];
   for (let i = 0; i < n; i++) {
     const t = span[0] + (i + jitter) * dt;
-    walk3d(plan, o[0] + d[0] * t, o[1] + d[1] * t, o[2] + d[2] * t, false, w);
-    if (w.depth < v.depthFrom) continue;
-    const sigma = extinction(v, w.depth) * dt;
+    const depth = walkDepth3d(plan, o[0] + d[0] * t, o[1] + d[1] * t, o[2] + d[2] * t);
+    if (depth < v.depthFrom) continue;
+    const sigma = extinction(v, depth) * dt;
     tau += sigma;
     const alpha = 1 - Math.exp(-sigma);
-    if (w.depth !== lastDepth) {
-      c = volumeColour(v, transferPlace(v, w.depth));
-      lastDepth = w.depth;
+    if (depth !== lastDepth) {
+      c = volumeColour(v, transferPlace(v, depth));
+      lastDepth = depth;
     }
     for (let k = 0; k < 3; k++) rgb[k]! += T * alpha * c[k]!;
     T *= 1 - alpha;

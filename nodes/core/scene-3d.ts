@@ -141,6 +141,30 @@ export type Coloring3d =
       readonly offset: number;
     };
 
+/**
+ * Volume rendering of the nesting depth (paper §4.2, Fig. 10; docs/math-3d.md "§11 Volume rendering
+ * of the nesting depth"): along each ray `steps` samples, each point's IIS depth k (k ≥ depthFrom;
+ * shallower points are empty) clamped to k' = min(k, depthTo) gives the extinction
+ * σ = density·growth^(k' − depthFrom) per world unit and the cosine palette colour at
+ * u = (k' − depthFrom + 1)/(depthTo − depthFrom + 1).
+ */
+export interface Volume3d {
+  /** Samples per ray inside the bounding ball of the element regions (the quality). */
+  readonly steps: number;
+  /** Extinction per world unit at depth `depthFrom`. */
+  readonly density: number;
+  /** Factor of the extinction per level deeper (deeper spheres are smaller: they need more). */
+  readonly growth: number;
+  /** The least depth with any density (≥ 1: depth 0 is the empty fundamental domain). */
+  readonly depthFrom: number;
+  /** The depth where the palette ends and the extinction stops growing (≥ depthFrom). */
+  readonly depthTo: number;
+  readonly a: Color;
+  readonly b: Color;
+  readonly c: Color;
+  readonly d: Color;
+}
+
 /** What the 3D view draws for a node (wireframe, in the node's colour). */
 export type Overlay3dShape =
   | { readonly shape: 'point'; readonly at: Vec3 }
@@ -184,6 +208,8 @@ export interface Scene3d {
   readonly background: Color;
   /** Progressive anti-aliasing samples per pixel when the view is still. */
   readonly samples: number;
+  /** Set: the picture is the volume-rendered nesting depth (Fig. 10) instead of the traced surfaces. */
+  readonly volume?: Volume3d;
   /** Id of the render-3d node. */
   readonly renderNodeId: string;
   readonly overlays: readonly Overlay3dItem[];

@@ -1,6 +1,6 @@
 /**
  * The 3D render node: the elements and orbit seeds of space, the camera, the sphere-tracing budget,
- * the lighting and the colouring (docs/math-3d.md §7). Its evaluate returns the settings; the
+ * the lighting and the colouring (docs/math-3d.md §7), or the volume mode (render-3d-volume.ts). Its evaluate returns the settings; the
  * evaluator makes them the Evaluation's `scene3d`. Out-of-range numbers are clamped with a
  * message (never an error: the picture keeps drawing while a slider passes through).
  */
@@ -24,6 +24,7 @@ import { COLOUR_3D_NAMES } from '../formula/names.ts';
 import { MAX_FORMULA_LENGTH } from '../formula/parse.ts';
 import { dist3, len3 } from '../geometry/space/vec3.ts';
 import { PALETTES } from './colour.ts';
+import { VOLUME_INPUTS, VOLUME_PARAMS, volumeSettings } from './render-3d-volume.ts';
 import { fail, fmt } from './shared.ts';
 import { cameraDiagnostics, gpuRangeDiagnostics3d, seedDiagnostics } from './space-checks.ts';
 import { element3Input, point3Input } from './space-shared.ts';
@@ -112,7 +113,7 @@ export const render3dNode = defineNode({
   label: 'Render 3D',
   category: 'Output',
   color: '#ffffff',
-  doc: 'The 3D picture: sphere-traces the orbits of the seeds under every 3D element wired in (tested in graph order), lit and coloured.',
+  doc: 'The 3D picture: sphere-traces the orbits of the seeds under every 3D element wired in (tested in graph order), lit and coloured — or, with render: volume, draws the nesting depth of the mirrors as a translucent cloud (Fig. 10).',
   inputs: {
     elements: element3Input('elements'),
     seeds: { type: 'seed3', label: 'seeds', optional: true, doc: 'the shapes whose images are drawn' },
@@ -177,6 +178,7 @@ export const render3dNode = defineNode({
     shininess: setting('shininess', DEFAULT_LIGHTING_3D.shininess, 'highlight exponent, 1…512', true),
     occlusion: setting('occlusion', DEFAULT_LIGHTING_3D.occlusion, 'ambient-occlusion strength, 0…1', true),
     shadow: setting('shadow', DEFAULT_LIGHTING_3D.shadow, 'soft-shadow strength, 0…1', true),
+    ...VOLUME_INPUTS,
   },
   outputs: {},
   params: {
@@ -205,6 +207,7 @@ export const render3dNode = defineNode({
       when: { param: 'coloring', is: PALETTED },
     },
     background: { kind: 'color', default: '#101018', label: 'background' },
+    ...VOLUME_PARAMS,
   },
   evaluate: ({ inputs: i, params, nodeId }) => {
     const diagnostics: Diagnostic[] = [];
@@ -233,7 +236,8 @@ export const render3dNode = defineNode({
       diagnostics.push(diag('tooManySeeds', { port: 'seeds' }, seeds.length, LIMITS.maxSeeds));
       seeds = seeds.slice(0, LIMITS.maxSeeds);
     }
-    if (seeds.length === 0 && i.limitSets.length === 0)
+    // The volume mode draws the mirrors' nesting depth, limit sets draw themselves: neither needs seeds.
+    if (seeds.length === 0 && i.limitSets.length === 0 && params.render !== 'volume')
       diagnostics.push({
         ...diag('clamped', { port: 'seeds' }, 'no seeds wired in: there is nothing to draw'),
         severity: 'info',
@@ -281,6 +285,9 @@ export const render3dNode = defineNode({
       samples: clampTo('samples', i.samples, 1, LIMITS.maxSamples, diagnostics, true),
       ...(i.limitSets.length > 0 ? { limitSets: i.limitSets } : {}),
     };
+    const volume = volumeSettings(i, params, (name, v, lo, hi, integer) =>
+      clampTo(name, v, lo, hi, diagnostics, integer),
+    );
     const plural = (n: number, w: string) => `${n} ${w}${n === 1 ? '' : 's'}`;
     return {
       outputs: {},
@@ -288,7 +295,7 @@ export const render3dNode = defineNode({
       readout: `${plural(elements.length, 'element')}, ${plural(seeds.length, 'seed')}${
         i.limitSets.length > 0 ? `, ${plural(i.limitSets.length, 'limit set')}` : ''
       }`,
-      render3d: settings,
+      render3d: volume ? { ...settings, volume } : settings,
     };
   },
 });

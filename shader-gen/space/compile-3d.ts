@@ -31,10 +31,13 @@ import { declaration, SceneValues, type UniformEntry } from '../glsl/values.ts';
 import { sampleOffsetGlsl } from '../glsl/view.glsl.ts';
 import { cameraRayGlsl } from './camera-3d.ts';
 import { backgroundGlsl, shadeGlsl, traceGlsl } from './glsl/trace.glsl.ts';
+import { volumeGlsl } from './glsl/volume.glsl.ts';
 import { emitSceneGlobals, emitWalk, placeWalk, walkFunctions } from './glsl/walk.glsl.ts';
 import { prepareTrace3d } from './plan.ts';
+import { volumeBounds } from './volume-3d.ts';
 
-export type Variant3d = 'color' | 'probe';
+/** 'volume-probe' (volume-rendered scenes only): (1 − T, τ, samples, 0), render-3d.ts probeVolume3d. */
+export type Variant3d = 'color' | 'probe' | 'volume-probe';
 
 export interface Compile3dOptions {
   /** Every scene value inlined as a literal (no scene uniforms; the frame uniforms stay). */
@@ -69,6 +72,34 @@ export const cameraUniforms = (c: Camera3d): UniformEntry[] => [
 
 const HEADER = ['precision highp float;', 'precision highp int;'];
 
+/** renderSample's body after the ray for the sphere tracer: shaded hit or background, or the probe. */
+const traceSample = (shaded: boolean, background: string | null): string[] => [
+  '  float angle = 2.0 * tan(radians(fov) * 0.5) / size.y;',
+  '  float t;',
+  '  vec4 info;',
+  '  vec3 fin;',
+  '  bool hit = traceRay(camPos, d, angle, t, info, fin);',
+  shaded
+    ? `  return hit ? vec4(shadeHit(camPos, d, angle, t, info, fin), 1.0) : vec4(${background}, bgAlpha);`
+    : '  return vec4(hit ? 1.0 : 0.0, t, info.y, info.z);',
+];
+
+/**
+ * renderSample's body for the volume renderer: the medium over the background, straight RGB and
+ * alpha 1 − T + T·bgAlpha (volume-3d.ts overBackground), or the volume probe.
+ */
+const volumeSample = (variant: Variant3d, background: string | null): string[] => [
+  '  vec3 rgb;',
+  '  vec4 r = volumeRay(camPos, d, volumeJitter(at), rgb);',
+  ...(variant === 'color'
+    ? [
+        `  vec3 bg = ${background};`,
+        '  float a = 1.0 - r.x + r.x * bgAlpha;',
+        '  return vec4(a > 0.0 ? (rgb + r.x * bgAlpha * bg) / a : bg, a);',
+      ]
+    : ['  return vec4(1.0 - r.x, r.y, r.z, 0.0);']),
+];
+
 /** The scene's functions after the header, and `vec4 renderSample(vec2 at, vec2 size, float bgAlpha)`. */
 function emitScene(
   out: SourceBuilder,
@@ -79,32 +110,32 @@ function emitScene(
 ) {
   const plan = prepareTrace3d(scene);
   const placed = placeWalk(plan, v);
-  const trace = traceGlsl(plan, v);
-  const shade = variant === 'color' ? shadeGlsl(plan, v) : null;
+  const volume = variant !== 'probe' ? scene.volume : undefined;
+  if (variant === 'volume-probe' && !volume) throw new Error('a volume probe needs a volume-rendered scene');
+  const trace = volume ? null : traceGlsl(plan, v);
+  const march = volume ? volumeGlsl(volumeBounds(plan), volume, v) : null;
+  const shade = variant === 'color' && !volume ? shadeGlsl(plan, v) : null;
   const background = variant === 'color' ? backgroundGlsl(scene, v) : null;
   let loadsScene = false;
   const emitFunctions = () => {
     loadsScene = emitSceneGlobals(out, placed);
     for (const code of collectFunctions([...walkFunctions(placed), cameraRayGlsl, ...extra]))
       out.push(code, '');
-    emitWalk(out, placed, true);
-    out.push('');
-    if (shade) {
+    if (trace) {
+      emitWalk(out, placed, true);
+      out.push('');
+    }
+    if (shade || march) {
       emitWalk(out, placed, false);
       out.push('');
     }
-    for (const code of collectFunctions([trace, ...(shade ? [shade] : [])])) out.push(code, '');
+    for (const code of collectFunctions([...(trace ? [trace] : []), ...(shade ? [shade] : [])]))
+      out.push(code, '');
+    if (march) for (const code of collectFunctions([march])) out.push(code, '');
     out.push(
       'vec4 renderSample(vec2 at, vec2 size, vec3 camPos, vec3 camTarget, float fov, float bgAlpha) {',
       '  vec3 d = cameraRay(camPos, camTarget, fov, size, at);',
-      '  float angle = 2.0 * tan(radians(fov) * 0.5) / size.y;',
-      '  float t;',
-      '  vec4 info;',
-      '  vec3 fin;',
-      '  bool hit = traceRay(camPos, d, angle, t, info, fin);',
-      shade
-        ? `  return hit ? vec4(shadeHit(camPos, d, angle, t, info, fin), 1.0) : vec4(${background}, bgAlpha);`
-        : '  return vec4(hit ? 1.0 : 0.0, t, info.y, info.z);',
+      ...(march ? volumeSample(variant, background) : traceSample(shade !== null, background)),
       '}',
       '',
     );

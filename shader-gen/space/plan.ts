@@ -156,7 +156,7 @@ function reachOf(
 }
 
 /** Whether every region of the element is a bounded ball (the orbit inside it is bounded). */
-function boundedRegions(e: Element3d): Sphere[] | null {
+export function boundedRegions(e: Element3d): Sphere[] | null {
   switch (e.kind) {
     case 'sphere-inversion':
       return [e.sphere];

@@ -11,6 +11,7 @@ import { type CameraBasis, cameraBasis, pixelAngle, rayDirection } from './camer
 import { prepareTrace3d, type TracePlan } from './plan.ts';
 import { shadeHit } from './shade-3d.ts';
 import { type Hit3d, traceRay } from './trace-3d.ts';
+import { overBackground, type VolumeBounds, volumeBounds, volumeJitter, volumeRay } from './volume-3d.ts';
 
 export interface Render3dOptions {
   /** Samples per pixel (default: the scene's). */
@@ -56,6 +57,8 @@ export interface Render3dFrame {
   readonly samples: number;
   readonly bg: readonly number[];
   readonly bgAlpha: number;
+  /** The volume renderer's bounds (volume-3d.ts), when the scene is volume rendered. */
+  readonly volumeBounds: VolumeBounds | null;
 }
 
 export function render3dFrame(
@@ -64,8 +67,10 @@ export function render3dFrame(
   height: number,
   options: Omit<Render3dOptions, 'onProgress'> = {},
 ): Render3dFrame {
+  const plan = prepareTrace3d(scene);
   return {
-    plan: prepareTrace3d(scene),
+    plan,
+    volumeBounds: scene.volume ? volumeBounds(plan) : null,
     basis: cameraBasis(scene.camera),
     width,
     height,
@@ -79,11 +84,20 @@ export function render3dFrame(
 export function renderPixel3d(f: Render3dFrame, px: number, row: number, data: Uint8ClampedArray, o: number) {
   const py = f.height - 1 - row;
   const sum = [0, 0, 0, 0];
+  const volume = f.plan.scene.volume;
   for (let k = 0; k < f.samples; k++) {
     const [jx, jy] = sampleOffset(k);
-    const { o: origin, d, angle, hit } = tracePixel(f.plan, f.width, f.height, px + jx, py + jy, f.basis);
-    const c = hit.hit ? shadeHit(f.plan, origin, d, angle, hit) : f.bg;
-    const a = hit.hit ? 1 : f.bgAlpha;
+    let c: readonly number[];
+    let a: number;
+    if (volume) {
+      const d = rayDirection(f.basis, f.width, f.height, px + jx, py + jy);
+      const ray = volumeRay(f.plan, f.volumeBounds, volume, f.basis.origin, d, volumeJitter(px, py));
+      [c, a] = overBackground(ray, f.bg, f.bgAlpha);
+    } else {
+      const { o: origin, d, angle, hit } = tracePixel(f.plan, f.width, f.height, px + jx, py + jy, f.basis);
+      c = hit.hit ? shadeHit(f.plan, origin, d, angle, hit) : f.bg;
+      a = hit.hit ? 1 : f.bgAlpha;
+    }
     for (let i = 0; i < 3; i++) sum[i]! += c[i]! * a;
     sum[3]! += a;
   }
@@ -123,6 +137,25 @@ export function renderScene3d(
     options.onProgress?.(rows / height),
   );
   return { width, height, data };
+}
+
+/**
+ * The volume probe per pixel centre, row 0 at the bottom: (opacity 1 − T, optical depth τ, samples
+ * taken, 0) — what GPU parity compares for a volume-rendered scene (compile3d's 'volume-probe').
+ */
+export function probeVolume3d(scene: Scene3d, width: number, height: number): Float32Array {
+  const f = render3dFrame(scene, width, height);
+  const volume = scene.volume;
+  if (!volume) throw new Error('probeVolume3d needs a volume-rendered scene');
+  const out = new Float32Array(width * height * 4);
+  for (let py = 0; py < height; py++) {
+    for (let px = 0; px < width; px++) {
+      const d = rayDirection(f.basis, width, height, px + 0.5, py + 0.5);
+      const r = volumeRay(f.plan, f.volumeBounds, volume, f.basis.origin, d, volumeJitter(px, py));
+      out.set([1 - r.transmittance, r.opticalDepth, r.samples, 0], 4 * (py * width + px));
+    }
+  }
+  return out;
 }
 
 /** (hit 0/1, t, depth, seed) per pixel centre, row 0 at the bottom — what GPU parity compares. */

@@ -30,8 +30,15 @@ export interface Hit3d {
   readonly steps: number;
 }
 
-/** [t0, t1] of the ray inside the scene's bounds, or null when it misses them. */
-export function rayInterval(plan: TracePlan, o: Vec3, d: Vec3): [number, number] | null {
+/**
+ * [t0, t1] of the ray inside the bounds (the scene's, or the volume renderer's), or null when it
+ * misses them.
+ */
+export function rayInterval(
+  plan: Pick<TracePlan, 'bounds' | 'bounded'>,
+  o: Vec3,
+  d: Vec3,
+): [number, number] | null {
   const { center: c, radius: r } = plan.bounds;
   const ox = o[0] - c[0];
   const oy = o[1] - c[1];

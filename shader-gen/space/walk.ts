@@ -269,6 +269,23 @@ function walkElements(plan: TracePlan, st: Walk3dState): boolean {
 const scratchPole: Pole3d = { x: 0, y: 0, z: 0 };
 const scratch: Walk3dState = { x: 0, y: 0, z: 0, s: 1, depth: 0, pole: null };
 
+/**
+ * The depth alone of (x, y, z): the same IIS steps as walk3d (the same element order and budget),
+ * without the pole, the seeds or the bound — what the volume renderer samples (volume-3d.ts).
+ */
+export function walkDepth3d(plan: TracePlan, x: number, y: number, z: number): number {
+  const st = scratch;
+  st.x = x;
+  st.y = y;
+  st.z = z;
+  st.s = 1;
+  st.depth = 0;
+  st.pole = null;
+  if (plan.inversionRows) walkInversions(plan.inversionRows, plan.scene.maxIterations, st);
+  else walkElements(plan, st);
+  return st.depth;
+}
+
 /** A fresh result to fill (the default `out` of walk3d). */
 export const walkResult = (): Walk3dResult => ({
   de: 0,

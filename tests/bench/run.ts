@@ -17,7 +17,9 @@ const BENCHES = [
   './editor.ts',
   './animation.ts',
   './trace3d.ts',
+  './volume3d.ts',
   './cpu3d.ts',
+  './cpu-volume.ts',
   './mesh.ts',
 ] as const;
 

@@ -19,7 +19,7 @@ const names = exampleNames(EXAMPLES_3D_DIR);
 
 /**
  * Whether the ray from the camera through normalised screen point (u, v) ∈ [−1, 1]² meets a seed
- * image within `far`: points along it at small steps, hit = the IIS carries one into a seed.
+ * image (in a volume-rendered scene: a point of the depths it draws) within `far`: points along it at small steps, hit = the IIS carries one into a seed.
  * A brute-force test of the scene, independent of any distance estimate.
  */
 function rayHits(scene: Scene3d, u: number, v: number, far: number, steps: number): boolean {
@@ -31,8 +31,9 @@ function rayHits(scene: Scene3d, u: number, v: number, far: number, steps: numbe
   const dir = normalize3(add3(forward, add3(scale3(right, u * t), scale3(up, v * t))));
   for (let i = 1; i <= steps; i++) {
     const p: Vec3 = add3(position, scale3(dir, (far * i) / steps));
-    const d = sampleSpace(scene, p).distance;
-    if (d !== null && d < 0) return true;
+    const s = sampleSpace(scene, p);
+    // A volume-rendered example (Fig. 10) shows the mirrors' nesting depth, not the seed images.
+    if (scene.volume ? s.depth >= scene.volume.depthFrom : s.distance !== null && s.distance < 0) return true;
   }
   return false;
 }

@@ -18,17 +18,15 @@ import { seedSize } from '../seeds-3d.ts';
 import { AO_SAMPLES, AO_STEP, SHADOW_K, SHADOW_STEPS } from '../shade-3d.ts';
 import { HIT_PIXELS, NEAR } from '../trace-3d.ts';
 
-/** rayInterval, hitTolerance and traceRay over the scene's bounds and march settings. */
-export function traceGlsl(plan: TracePlan, v: SceneValues): GlslFunction {
-  const { center: c, radius: r } = plan.bounds;
-  const bounds = v.vec('u_bounds', [c[0], c[1], c[2], r]);
-  const mode = v.float('u_boundsMode', plan.bounded ? 0 : 1);
-  const steps = v.int('u_marchSteps', plan.scene.marchSteps);
-  const deScale = v.float('u_deScale', plan.scene.deScale);
-  const interval = glslFunction(
-    'rayInterval',
+/**
+ * `bool <name>(vec3 o, vec3 d, out vec2 span)`: ../trace-3d.ts rayInterval over the ball `bounds`
+ * (a vec4 (centre, radius) expression); `mode` > 0.5 means unbounded (a far span from the origin).
+ */
+export function rayIntervalGlsl(name: string, bounds: string, mode: string): GlslFunction {
+  return glslFunction(
+    name,
     `
-bool rayInterval(vec3 o, vec3 d, out vec2 span) {
+bool ${name}(vec3 o, vec3 d, out vec2 span) {
   vec4 b = ${bounds};
   vec3 oc = o - b.xyz;
   span = vec2(0.0, length(oc) + ${floatLiteral(UNBOUNDED_REACH)} * b.w);
@@ -42,6 +40,16 @@ bool rayInterval(vec3 o, vec3 d, out vec2 span) {
   return true;
 }`,
   );
+}
+
+/** rayInterval, hitTolerance and traceRay over the scene's bounds and march settings. */
+export function traceGlsl(plan: TracePlan, v: SceneValues): GlslFunction {
+  const { center: c, radius: r } = plan.bounds;
+  const bounds = v.vec('u_bounds', [c[0], c[1], c[2], r]);
+  const mode = v.float('u_boundsMode', plan.bounded ? 0 : 1);
+  const steps = v.int('u_marchSteps', plan.scene.marchSteps);
+  const deScale = v.float('u_deScale', plan.scene.deScale);
+  const interval = rayIntervalGlsl('rayInterval', bounds, mode);
   const tolerance = glslFunction(
     'hitTolerance',
     `

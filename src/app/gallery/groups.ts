@@ -73,6 +73,7 @@ export const GALLERY_SECTIONS: readonly GallerySection[] = [
     ids: [
       'fig06-quaternion-kleinian-group',
       'fig11-sphere-inversion-fractal',
+      'fig10-volume-nesting-spheres',
       'fig12-eight-spheres-three-seeds',
       'fig24-orbit-of-a-cube',
       'formula-tilted-torus',

@@ -20,3 +20,12 @@ export const HAND_WRITTEN_3D: readonly HandWrittenTracer[] = [
   { example: 'fig11-sphere-inversion-fractal', source: read('fig11-fast.frag') },
   { example: 'fig26-quasi-sphere', source: read('fig26-fast.frag') },
 ];
+
+/**
+ * Hand-written volume renderers (same rules: literals, no arrays, early exit), probe output
+ * (1 − T, τ, samples, 0): tests/bench/volume3d.ts times the generated volume program against them;
+ * tests/parity/volume3d-parity.test.ts checks they draw the same picture.
+ */
+export const HAND_WRITTEN_VOLUME: readonly HandWrittenTracer[] = [
+  { example: 'fig10-volume-nesting-spheres', source: read('fig10-volume-fast.frag') },
+];

@@ -25,6 +25,23 @@ export interface SuiteSessionOptions extends SessionOptions {
   readonly ready?: (page: Page) => Promise<unknown>;
 }
 
+/**
+ * A `ready` for suites about one node's inspector: `doc` loaded into the running app (as if
+ * opened), node `nodeId` selected and the Inspector shown; the page waits up to a minute per step.
+ */
+export function inspectorOn(doc: unknown, nodeId: string): (page: Page) => Promise<void> {
+  return async (page) => {
+    page.setDefaultTimeout(60_000);
+    await page.waitForFunction(() => window.__kleinflow?.store && window.__kleinflow.viewport);
+    await page.evaluate(
+      (d) => window.__kleinflow!.store.dispatch({ type: 'load-document', doc: d as never }),
+      doc,
+    );
+    await page.evaluate((id) => window.__kleinflow!.store.setSelection([id]), nodeId);
+    await page.getByRole('button', { name: 'Inspector' }).click();
+  };
+}
+
 /** Before the suite: `open`, then `use` what it opened; after it: the app closed. */
 function forTheSuite<T>(
   open: () => Promise<T>,

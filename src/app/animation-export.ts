@@ -1,7 +1,7 @@
 /**
  * "Export animation…": frame i is the graph evaluated at t = i/fps (nodes/graph/frame-times.ts)
  * and rendered like the PNG export — tiled on the GPU at the full sample count, never a screen
- * capture — then handed in order to the file's encoder (animation-encoders.ts). A video source is
+ * capture — then handed in order to the file's encoder (src/io/animation-sink.ts). A video source is
  * sought to t (modulo its length) before each frame, so the video plays in the file.
  */
 import { hasErrors } from '../../nodes/core/diagnostics.ts';
@@ -10,9 +10,9 @@ import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { frameTime } from '../../nodes/graph/frame-times.ts';
 import { registry } from '../../nodes/types/index.ts';
+import { ANIMATION_FORMATS, type AnimationFormat } from '../io/animation-formats.ts';
 import { liveMedia } from '../viewport/live-media.ts';
 import type { Viewport } from '../viewport/viewport.ts';
-import { ANIMATION_FORMATS, type AnimationFormat } from './animation-formats.ts';
 import { scaleEdges } from './export.ts';
 import { download, fileStem } from './files.ts';
 
@@ -35,7 +35,7 @@ export async function recordAnimation(
   o: AnimationExportOptions,
   onProgress: (fraction: number) => boolean,
 ): Promise<Uint8Array | null> {
-  const { createSink } = await import('./animation-encoders.ts');
+  const { createSink } = await import('../io/animation-sink.ts');
   const sink = await createSink(o.format, o);
   let finished = false;
   try {

@@ -72,3 +72,6 @@ export class CliError extends Error {
 }
 
 export const usageError = (message: string): CliError => new CliError(message, EXIT.usage, true);
+
+/** The message of whatever was thrown (an Error's message, anything else as text). */
+export const errorMessage = (e: unknown): string => (e instanceof Error ? e.message : String(e));

@@ -1,6 +1,6 @@
 /**
  * A worker thread of `kleinflow render --frames`: renders frame i of a graph at t = i/fps and
- * answers with its PNG (graph embedded) or raw RGBA (for a GIF, which needs the frames in order
+ * answers with its PNG (graph embedded) or raw RGBA (for a GIF or a video, which take the frames in order
  * on the main thread). The document is parsed once per worker, not once per frame.
  */
 import { parentPort } from 'node:worker_threads';

@@ -5,6 +5,12 @@
  */
 import { LIMITS } from '../../nodes/core/scene.ts';
 import {
+  ANIMATION_FORMATS,
+  animationFormatOfPath,
+  evenSize,
+  isVideoFormat,
+} from '../io/animation-formats.ts';
+import {
   type OptionSpec,
   type ParsedArgs,
   parseIntegerOption,
@@ -13,13 +19,7 @@ import {
 } from './args.ts';
 import { type CliIo, EXIT, usageError } from './command.ts';
 import { loadScene } from './load-graph.ts';
-import {
-  frameFileName,
-  isGifPath,
-  parseFrameRange,
-  renderAnimation,
-  resolveFrameCount,
-} from './render-animation.ts';
+import { frameFileName, parseFrameRange, renderAnimation, resolveFrameCount } from './render-animation.ts';
 
 export const DEFAULT_FPS = 24;
 /** Default frame size of a sequence: smaller than a still's, frames are many. */
@@ -31,7 +31,11 @@ export const ANIMATION_OPTIONS: readonly OptionSpec[] = [
   { long: 'time', short: 't', value: 'T', doc: 'render the graph at animation time T seconds (default 0)' },
   { long: 'frames', value: 'N|loop', doc: 'render N frames at t = i/fps, or "loop": one exact loop' },
   { long: 'fps', value: 'F', doc: `frames per second of --frames (default ${DEFAULT_FPS})` },
-  { long: 'out', value: 'DIR/|X.gif', doc: 'with --frames: a folder of frame-NNNNN.png, or a looping GIF' },
+  {
+    long: 'out',
+    value: 'DIR/|X.gif|X.webm|X.mp4',
+    doc: 'with --frames: a folder of frame-NNNNN.png, a looping GIF, or a WebM (VP9) / MP4 (H.264) video',
+  },
   {
     long: 'frame-range',
     value: 'A:B',
@@ -47,7 +51,8 @@ export const ANIMATION_OPTIONS: readonly OptionSpec[] = [
 export const ANIMATION_USAGE = [
   'Animations: --time T renders one frame; --frames renders frame i at t = i/fps on every core.',
   'The same input gives the same bytes, and frames are independent: --frame-range 0:120 on one',
-  'machine and 120:240 on another write the files of one sequence.',
+  'machine and 120:240 on another write the files of one sequence. A video needs even sides: an',
+  'odd --size is rendered one pixel narrower or lower.',
 ];
 
 /** --time T: a finite number of seconds (decimal, may be negative). */
@@ -68,15 +73,22 @@ export function parseThreadsOption(parsed: ParsedArgs): number | undefined {
 
 export async function runAnimationCommand(parsed: ParsedArgs, graphPath: string, io: CliIo): Promise<number> {
   const out = stringOption(parsed, 'out') ?? stringOption(parsed, 'output');
-  if (!out) throw usageError('missing --out DIR/ or --out OUT.gif (where to write the frames)');
+  if (!out) throw usageError('missing --out DIR/, OUT.gif, OUT.webm or OUT.mp4 (where to write the frames)');
   if (stringOption(parsed, 'time') !== undefined)
     throw usageError('--time renders one frame; with --frames the times are i/fps');
   const fpsText = stringOption(parsed, 'fps');
   const fps = fpsText ? parseIntegerOption('fps', fpsText, 1, 240) : DEFAULT_FPS;
   const sizeText = stringOption(parsed, 'size');
-  const { width, height } = sizeText
-    ? parseSizeOption('size', sizeText, LIMITS.maxImageSide)
-    : DEFAULT_FRAME_SIZE;
+  const asked = sizeText ? parseSizeOption('size', sizeText, LIMITS.maxImageSide) : DEFAULT_FRAME_SIZE;
+  const format = animationFormatOfPath(out);
+  const video = format !== undefined && isVideoFormat(format);
+  // 4:2:0 video halves the chroma both ways, so H.264 (and the browser's encoders) want even sides.
+  const width = video ? evenSize(asked.width) : asked.width;
+  const height = video ? evenSize(asked.height) : asked.height;
+  if (width !== asked.width || height !== asked.height)
+    io.stderr.write(
+      `note: a video needs even sides: ${asked.width}×${asked.height} is rendered at ${width}×${height}\n`,
+    );
   const samplesText = stringOption(parsed, 'samples');
   const threads = parseThreadsOption(parsed);
   const load = await loadScene(io, graphPath);
@@ -107,8 +119,8 @@ export async function runAnimationCommand(parsed: ParsedArgs, graphPath: string,
     progress: width * height * samples * count >= PROGRESS_WORK,
   });
   const seconds = ((performance.now() - started) / 1000).toFixed(2);
-  const what = isGifPath(out)
-    ? out
+  const what = format
+    ? `${out} (${ANIMATION_FORMATS[format].label}, ${+(count / fps).toFixed(3)} s)`
     : `${out} (${frameFileName(range.start, frames)} … ${frameFileName(range.end - 1, frames)})`;
   io.stdout.write(
     `wrote ${count} frame${count === 1 ? '' : 's'} of ${frames} at ${fps} fps → ${what} (${width}×${height}, ${samples} samples/px, ${seconds} s)\n`,

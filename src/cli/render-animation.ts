@@ -1,7 +1,8 @@
 /**
- * `kleinflow render GRAPH --frames N|loop --fps F --out DIR/|x.gif [--frame-range A:B]`: frame i
- * at t = i/fps (nodes/graph/frame-times.ts), rendered on every core (one worker thread each),
- * written as DIR/frame-NNNNN.png or, in order, as one looping GIF. The frame numbers are global:
+ * `kleinflow render GRAPH --frames N|loop --fps F --out DIR/|x.gif|x.webm|x.mp4 [--frame-range A:B]`:
+ * frame i at t = i/fps (nodes/graph/frame-times.ts), rendered on every core (one worker thread
+ * each), written as DIR/frame-NNNNN.png or, in order, into one file: a looping GIF or a video
+ * (src/io/animation-sink.ts, the editor's export's writer). The frame numbers are global:
  * `--frame-range 0:50` on one machine and `50:100` on another give the files of one sequence.
  */
 import { mkdir } from 'node:fs/promises';
@@ -11,12 +12,19 @@ import type { GraphDoc } from '../../nodes/graph/document.ts';
 import type { Evaluation } from '../../nodes/graph/evaluate.ts';
 import { loopFrameCount, loopIsFrameExact } from '../../nodes/graph/frame-times.ts';
 import { loopPeriod } from '../../nodes/graph/loop-period.ts';
-import { gifWriter } from '../io/gif.ts';
+import {
+  type AnimationFormat,
+  animationFormatOfPath,
+  type FrameSink,
+  isVideoFormat,
+} from '../io/animation-formats.ts';
+import { createSink } from '../io/animation-sink.ts';
 import { parseIntegerOption } from './args.ts';
-import { CliError, type CliIo, usageError } from './command.ts';
+import { CliError, type CliIo, errorMessage, usageError } from './command.ts';
 import type { FrameJob, FrameResult } from './frame-job.ts';
 import { fileErrorMessage } from './load-graph.ts';
 import { progressLine } from './progress.ts';
+import { loadVideoEncoders } from './video-encoders.ts';
 import { runPool } from './worker-pool.ts';
 
 /** The most frames one command renders (an hour at 30 fps would be 108 000: split it with --frame-range). */
@@ -77,31 +85,50 @@ export interface AnimationRequest {
   readonly progress?: boolean;
 }
 
-export const isGifPath = (out: string): boolean => /\.gif$/i.test(out);
+/** The file's sink (a video loads its encoders first), or undefined for a folder of PNGs. */
+async function openSink(format: AnimationFormat | undefined, request: AnimationRequest) {
+  if (!format) return undefined;
+  if (isVideoFormat(format)) await loadVideoEncoders();
+  const { width, height, fps } = request;
+  try {
+    return await createSink(format, { width, height, fps });
+  } catch (e) {
+    throw new CliError(`cannot encode ${request.out}: ${errorMessage(e)}`);
+  }
+}
 
 export async function renderAnimation(io: CliIo, request: AnimationRequest): Promise<void> {
   const { start, end } = request.range;
-  const gif = isGifPath(request.out);
-  if (!gif) {
+  const format = animationFormatOfPath(request.out);
+  if (!format) {
     try {
       await mkdir(request.out, { recursive: true });
     } catch (e) {
       throw new CliError(fileErrorMessage('write', request.out, e));
     }
   }
+  const sink = await openSink(format, request);
   const jobs: FrameJob[] = [];
   for (let index = start; index < end; index++) {
     const { text, fps, width, height, samples } = request;
-    jobs.push({ text, index, fps, width, height, samples, encode: gif ? 'rgba' : 'png' });
+    jobs.push({ text, index, fps, width, height, samples, encode: sink ? 'rgba' : 'png' });
   }
-  const writer = gif ? gifWriter(request.fps) : undefined;
-  // Results arrive in any order: a GIF takes them in frame order, PNGs are written as they come.
+  // Results arrive in any order: a file takes them in frame order, PNGs are written as they come.
   const waiting = new Map<number, Uint8Array>();
-  let nextGif = start;
+  let next = start;
+  let encoding: Promise<void> = Promise.resolve();
   const writes: Promise<void>[] = [];
   let failure: string | undefined;
   const progress = request.progress ? progressLine(io.stderr, `rendering ${end - start} frames`) : undefined;
   let done = 0;
+  const take = (s: FrameSink, data: Uint8Array, index: number) => {
+    // One encode at a time, in order; the file's first frame is at 0 s whatever the range.
+    encoding = encoding
+      .then(() => (failure ? undefined : s.add(data, index - start)))
+      .catch((e) => {
+        failure ??= `cannot encode frame ${index} into ${request.out}: ${errorMessage(e)}`;
+      });
+  };
   await runPool<FrameJob, FrameResult>(
     new URL('./frame-job.ts', import.meta.url),
     jobs,
@@ -112,7 +139,7 @@ export async function renderAnimation(io: CliIo, request: AnimationRequest): Pro
         failure ??= `frame ${r.index}: ${r.error}`;
         return;
       }
-      if (!writer) {
+      if (!sink) {
         const path = join(request.out, frameFileName(r.index, request.frames));
         writes.push(
           io.writeFile(path, r.bytes).catch((e) => {
@@ -122,20 +149,28 @@ export async function renderAnimation(io: CliIo, request: AnimationRequest): Pro
         return;
       }
       waiting.set(r.index, r.bytes);
-      for (let data = waiting.get(nextGif); data; data = waiting.get(nextGif)) {
-        writer.addFrame({ width: request.width, height: request.height, data });
-        waiting.delete(nextGif++);
+      for (let data = waiting.get(next); data; data = waiting.get(next)) {
+        take(sink, data, next);
+        waiting.delete(next++);
       }
     },
-  );
+  ).catch(async (e) => {
+    await sink?.cancel().catch(() => undefined);
+    throw e;
+  });
   progress?.finish();
-  await Promise.all(writes);
-  if (failure) throw new CliError(failure);
-  if (writer) {
-    try {
-      await io.writeFile(request.out, writer.finish());
-    } catch (e) {
-      throw new CliError(fileErrorMessage('write', request.out, e));
-    }
+  await Promise.all([...writes, encoding]);
+  if (failure) {
+    await sink?.cancel().catch(() => undefined);
+    throw new CliError(failure);
+  }
+  if (!sink) return;
+  const bytes = await sink.finish().catch((e) => {
+    throw new CliError(`cannot encode ${request.out}: ${errorMessage(e)}`);
+  });
+  try {
+    await io.writeFile(request.out, bytes);
+  } catch (e) {
+    throw new CliError(fileErrorMessage('write', request.out, e));
   }
 }

@@ -8,18 +8,14 @@
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { describe, expect, it } from 'vitest';
+import { repoRoot, type ServedApp } from './app-server.ts';
+import { servedAppForSuite } from './app-suite.ts';
 import { nodeCount } from './editor-page.ts';
 
 let app: ServedApp;
-
-beforeAll(async () => {
-  app = await serveApp();
-}, 180_000);
-
-afterAll(async () => {
-  await app?.close();
+servedAppForSuite((served) => {
+  app = served;
 });
 
 type Box = { x: number; y: number; width: number; height: number };

@@ -7,26 +7,24 @@ import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { ALL_FORMATS, BufferSource, Input } from 'mediabunny';
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { countGifFrames, gifFrameBlocks } from '../../src/io/gif.ts';
-import { openAppSession, repoRoot, type ServedApp } from './app-server.ts';
+import { repoRoot } from './app-server.ts';
+import { appSessionForSuite } from './app-suite.ts';
 import { waitRendered } from './editor-page.ts';
 import { menu, openViaPicker } from './io-page.ts';
 
-let app: ServedApp;
 let page: Page;
 const problems: string[] = [];
 const EXAMPLE = join(repoRoot, 'examples', 'animated-breathing-loxodromic.kleinflow.json');
 
-beforeAll(async () => {
-  ({ app, page } = await openAppSession({ problems }));
-  await waitRendered(page);
-  await openViaPicker(page, 'animated.kleinflow.json', readFileSync(EXAMPLE));
-  await waitRendered(page);
-}, 180_000);
-
-afterAll(async () => {
-  await app?.close();
+appSessionForSuite((s) => ({ page } = s), {
+  problems,
+  async ready(p) {
+    await waitRendered(p);
+    await openViaPicker(p, 'animated.kleinflow.json', readFileSync(EXAMPLE));
+    await waitRendered(p);
+  },
 });
 
 /** Opens the dialog at 64 × 48, 1 fps, one loop, 2 samples, in `format`; returns the downloaded bytes. */

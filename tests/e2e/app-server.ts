@@ -95,19 +95,19 @@ export interface AppSession {
   readonly page: Page;
 }
 
+export interface SessionOptions {
+  readonly viewport?: { width: number; height: number };
+  readonly query?: string;
+  readonly problems?: string[];
+  readonly consoleErrors?: boolean;
+}
+
 /**
  * The set-up most suites share: the built app (serveApp), a fresh context (`viewport`), and a page
  * opened at the app (`query`, e.g. '?test', after its address) whose page errors — and console
  * errors too with `consoleErrors` — are added to `problems`.
  */
-export async function openAppSession(
-  options: {
-    readonly viewport?: { width: number; height: number };
-    readonly query?: string;
-    readonly problems?: string[];
-    readonly consoleErrors?: boolean;
-  } = {},
-): Promise<AppSession> {
+export async function openAppSession(options: SessionOptions = {}): Promise<AppSession> {
   const app = await serveApp();
   const context = await app.newContext(options.viewport);
   const page = await context.newPage();

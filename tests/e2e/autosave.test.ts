@@ -4,23 +4,18 @@
  * it is still there; "Discard it" resumes autosaving and the banner then says so.
  */
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { openAppSession, type ServedApp } from './app-server.ts';
+import { describe, expect, it } from 'vitest';
+import { appSessionForSuite } from './app-suite.ts';
 
-let app: ServedApp;
 let page: Page;
+appSessionForSuite((s) => ({ page } = s), {
+  viewport: { width: 1280, height: 720 },
+  query: '?test',
+  ready: (p) => p.waitForSelector('.react-flow__node'),
+});
 
 /** About 4.5 M characters of broken JSON (the rest of the storage is filled up before reload). */
 const BROKEN_CHARS = 4_500_000;
-
-beforeAll(async () => {
-  ({ app, page } = await openAppSession({ viewport: { width: 1280, height: 720 }, query: '?test' }));
-  await page.waitForSelector('.react-flow__node');
-}, 180_000);
-
-afterAll(async () => {
-  await app?.close();
-});
 
 const stored = () =>
   page.evaluate(() => {

@@ -4,38 +4,18 @@
  * Export → SVG and Export → PNG carry the figures.
  */
 import { readFileSync } from 'node:fs';
-import { join } from 'node:path';
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { decodePng } from '../../src/io/png.ts';
 import { parseXml } from '../support/xml.ts';
-import { openAppSession, repoRoot, type ServedApp } from './app-server.ts';
+import { appSessionForSuite } from './app-suite.ts';
 import { waitRendered } from './editor-page.ts';
-import { currentDoc, menu, openViaPicker } from './io-page.ts';
+import { menu, openExampleFile } from './io-page.ts';
 
-let app: ServedApp;
 let page: Page;
+appSessionForSuite((s) => ({ page } = s), { ready: waitRendered });
 
-const example = (id: string) => readFileSync(join(repoRoot, 'examples', `${id}.kleinflow.json`));
-
-beforeAll(async () => {
-  ({ app, page } = await openAppSession());
-  await waitRendered(page);
-}, 180_000);
-
-afterAll(async () => {
-  await app?.close();
-});
-
-async function openExample(id: string) {
-  const title = JSON.parse(example(id).toString('utf8')).meta.title as string;
-  await openViaPicker(page, `${id}.kleinflow.json`, example(id));
-  await expect
-    .poll(async () => ((await currentDoc(page)) as { meta: { title: string } }).meta.title, {
-      timeout: 30_000,
-    })
-    .toBe(title);
-}
+const openExample = (id: string) => openExampleFile(page, id);
 
 const overlay = () => page.getByTestId('figure-overlay');
 

@@ -6,22 +6,14 @@
  * recompile). The render pane is small (view-3d-page.ts): SwiftShader sphere-traces slowly.
  */
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { QUICK_START_3D } from '../../src/app/help/quick-start.ts';
-import type { ServedApp } from './app-server.ts';
+import { appSessionForSuite } from './app-suite.ts';
 import { addNode, connect, nodeCount, nodeEl, renderPixels, waitRendered } from './editor-page.ts';
 import { freePanePoint, openSmall3dPane } from './view-3d-page.ts';
 
-let app: ServedApp;
 let page: Page;
-
-beforeAll(async () => {
-  ({ app, page } = await openSmall3dPane());
-}, 180_000);
-
-afterAll(async () => {
-  await app?.close();
-});
+appSessionForSuite((s) => ({ page } = s), { open: openSmall3dPane });
 
 const camera = () => page.evaluate(() => window.__kleinflow!.store.getState().doc.camera3d);
 const stats = () => page.evaluate(() => window.__kleinflow!.viewport!.stats);

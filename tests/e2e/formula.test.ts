@@ -7,18 +7,14 @@
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { describe, expect, it } from 'vitest';
+import { repoRoot, type ServedApp } from './app-server.ts';
+import { servedAppForSuite } from './app-suite.ts';
 import { addNode, connect, edgeCount, emptyCanvasPoint, nodeCount, nodeEl } from './editor-page.ts';
 
 let app: ServedApp;
-
-beforeAll(async () => {
-  app = await serveApp();
-}, 180_000);
-
-afterAll(async () => {
-  await app?.close();
+servedAppForSuite((served) => {
+  app = served;
 });
 
 const readout = (page: Page, id: string) => nodeEl(page, id).locator('.kf-node__readout').textContent();

@@ -6,8 +6,9 @@
  * is added to a wire, dragged and removed.
  */
 import type { BrowserContext, Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { openAppSession, type ServedApp } from './app-server.ts';
+import { describe, expect, it } from 'vitest';
+import type { ServedApp } from './app-server.ts';
+import { appSessionForSuite } from './app-suite.ts';
 import {
   emptyCanvasPoint,
   nodeCount,
@@ -23,14 +24,7 @@ let app: ServedApp;
 let context: BrowserContext;
 let page: Page;
 const problems: string[] = [];
-
-beforeAll(async () => {
-  ({ app, context, page } = await openAppSession({ problems }));
-}, 180_000);
-
-afterAll(async () => {
-  await app?.close();
-});
+appSessionForSuite((s) => ({ app, context, page } = s), { problems });
 
 const byType = (type: string) => page.locator(`.react-flow__node:has([data-node-type="${type}"])`).first();
 /** The picture once it has all its samples and stopped changing (a re-render may not have begun yet). */

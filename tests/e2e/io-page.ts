@@ -1,6 +1,9 @@
 /** Helpers for the open/save/share/export suite: what a person does with files, links and the clipboard. */
 import { readFileSync } from 'node:fs';
+import { basename, join } from 'node:path';
 import type { Page } from 'playwright-core';
+import { expect } from 'vitest';
+import { repoRoot } from './app-server.ts';
 
 /** Clicks Save and returns the downloaded file's name and text. */
 export async function saveViaButton(page: Page): Promise<{ name: string; text: string }> {
@@ -18,6 +21,20 @@ export const currentDoc = async (page: Page): Promise<unknown> =>
 /** Opens a file through the hidden file input (as the Open… button's picker would). */
 export async function openViaPicker(page: Page, name: string, buffer: Buffer, mimeType = 'application/json') {
   await page.getByTestId('open-file').setInputFiles({ name, mimeType, buffer });
+}
+
+/**
+ * Opens examples/`folder`/`id`.kleinflow.json through the picker and waits (up to `timeout` ms)
+ * until the document Save writes has the example's title: the example is the open document.
+ */
+export async function openExampleFile(page: Page, id: string, folder = '', timeout = 30_000) {
+  const path = join(repoRoot, 'examples', folder, `${id}.kleinflow.json`);
+  const file = readFileSync(path);
+  const title = JSON.parse(file.toString('utf8')).meta.title as string;
+  await openViaPicker(page, basename(path), file);
+  await expect
+    .poll(async () => ((await currentDoc(page)) as { meta: { title: string } }).meta.title, { timeout })
+    .toBe(title);
 }
 
 /** Drags a file over the window (the drop overlay must show) and drops it. */

@@ -9,10 +9,11 @@
 import { mkdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { beforeAll, describe, expect, it } from 'vitest';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { shareLinkFor } from '../../src/app/io/share-link.ts';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { repoRoot, type ServedApp } from './app-server.ts';
+import { servedAppForSuite } from './app-suite.ts';
 import { menu } from './io-page.ts';
 
 const shots = join(repoRoot, 'test-artifacts');
@@ -20,11 +21,10 @@ const DESKTOP = { width: 1280, height: 720 };
 const PHONE = { width: 390, height: 844 };
 
 let app: ServedApp;
-beforeAll(async () => {
-  mkdirSync(shots, { recursive: true });
-  app = await serveApp();
-}, 180_000);
-afterAll(() => app?.close());
+beforeAll(() => mkdirSync(shots, { recursive: true }));
+servedAppForSuite((served) => {
+  app = served;
+});
 
 async function newPage(viewport: { width: number; height: number }, firstVisit = false, url = '?test') {
   const page = await (await app.newContext(viewport, { firstVisit })).newPage();

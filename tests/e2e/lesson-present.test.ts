@@ -8,10 +8,11 @@
 import { mkdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { beforeAll, describe, expect, it } from 'vitest';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { presentLinks } from '../../src/app/present/present-link.ts';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { repoRoot, type ServedApp } from './app-server.ts';
+import { servedAppForSuite } from './app-suite.ts';
 import { nodeEl } from './editor-page.ts';
 import { openViaPicker } from './io-page.ts';
 
@@ -29,11 +30,10 @@ function warped(): GraphDoc {
 }
 
 let app: ServedApp;
-beforeAll(async () => {
-  mkdirSync(shots, { recursive: true });
-  app = await serveApp();
-}, 180_000);
-afterAll(() => app?.close());
+beforeAll(() => mkdirSync(shots, { recursive: true }));
+servedAppForSuite((served) => {
+  app = served;
+});
 
 async function openDoc(viewport: { width: number; height: number }, doc: GraphDoc): Promise<Page> {
   const page = await (await app.newContext(viewport)).newPage();

@@ -9,9 +9,10 @@
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { BrowserContext, Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { beforeAll, describe, expect, it } from 'vitest';
 import { countGifFrames, gifFrameBlocks } from '../../src/io/gif.ts';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { repoRoot, type ServedApp } from './app-server.ts';
+import { servedAppForSuite } from './app-suite.ts';
 import { nodeEl, renderPixels } from './editor-page.ts';
 import { menu } from './io-page.ts';
 
@@ -21,12 +22,12 @@ const EXAMPLE = JSON.parse(
 );
 const CAMERA_ID = 'cam';
 
-beforeAll(async () => {
-  app = await serveApp({
-    launchArgs: ['--use-fake-device-for-media-stream', '--use-fake-ui-for-media-stream'],
-  });
-}, 180_000);
-afterAll(() => app?.close());
+servedAppForSuite(
+  (served) => {
+    app = served;
+  },
+  { launchArgs: ['--use-fake-device-for-media-stream', '--use-fake-ui-for-media-stream'] },
+);
 
 const stats = (page: Page) => page.evaluate(() => window.__kleinflow!.viewport!.stats);
 

@@ -5,40 +5,23 @@
  * that one is needed, in the dialog, and downloads nothing.
  */
 import { readFileSync } from 'node:fs';
-import { join } from 'node:path';
 import { unzipSync } from 'fflate';
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { readStl } from '../../src/io/stl.ts';
-import { repoRoot, type ServedApp } from './app-server.ts';
-import { currentDoc, menu, openViaPicker } from './io-page.ts';
+import { appSessionForSuite } from './app-suite.ts';
+import { menu, openExampleFile } from './io-page.ts';
 import { openSmall3dPane } from './view-3d-page.ts';
 
 /** The Export menu's item (a regular expression: the parenthesis is escaped). */
 const MESH_ITEM = 'Mesh \\(3D print';
 
-let app: ServedApp;
 let page: Page;
-
-const example = (id: string) => readFileSync(join(repoRoot, 'examples', '3d', `${id}.kleinflow.json`));
-
-beforeAll(async () => {
-  // A small render pane (view-3d-page.ts); the export does not depend on it.
-  ({ app, page } = await openSmall3dPane());
-}, 180_000);
-
-afterAll(async () => {
-  await app?.close();
-});
+// A small render pane (view-3d-page.ts); the export does not depend on it.
+appSessionForSuite((s) => ({ page } = s), { open: openSmall3dPane });
 
 async function openExample(id: string) {
-  const title = JSON.parse(example(id).toString('utf8')).meta.title as string;
-  await openViaPicker(page, `${id}.kleinflow.json`, example(id));
-  await expect
-    .poll(async () => ((await currentDoc(page)) as { meta: { title: string } }).meta.title, {
-      timeout: 90_000,
-    })
-    .toBe(title);
+  await openExampleFile(page, id, '3d', 90_000);
   // The picture is not what is tested: make the sphere tracer cheap (march steps and shading are
   // values only — the mesh depends on the geometry and max iterations, which stay as they are),
   // so the page is not frozen by SwiftShader while the test clicks the menus.

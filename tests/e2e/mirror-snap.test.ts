@@ -9,8 +9,9 @@
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Locator, Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { openAppSession, repoRoot, type ServedApp } from './app-server.ts';
+import { beforeAll, describe, expect, it } from 'vitest';
+import { repoRoot } from './app-server.ts';
+import { appSessionForSuite } from './app-suite.ts';
 import {
   diagnosticsList as listedList,
   listedDiagnostics as listedText,
@@ -20,19 +21,11 @@ import {
 } from './editor-page.ts';
 import { buildTriangle } from './triangle-page.ts';
 
-let app: ServedApp;
 let page: Page;
 const problems: string[] = [];
 const shots = join(repoRoot, 'test-artifacts');
-
-beforeAll(async () => {
-  ({ app, page } = await openAppSession({ problems, query: '?test' }));
-  mkdirSync(shots, { recursive: true });
-}, 180_000);
-
-afterAll(async () => {
-  await app?.close();
-});
+beforeAll(() => mkdirSync(shots, { recursive: true }));
+appSessionForSuite((s) => ({ page } = s), { problems, query: '?test' });
 
 const status = () => statusLine(page);
 const diagnosticsList = () => listedList(page);

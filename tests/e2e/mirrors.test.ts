@@ -8,8 +8,9 @@
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { openAppSession, repoRoot, type ServedApp } from './app-server.ts';
+import { describe, expect, it } from 'vitest';
+import { repoRoot } from './app-server.ts';
+import { appSessionForSuite } from './app-suite.ts';
 import {
   diagnosticsList as listedList,
   listedDiagnostics as listedText,
@@ -23,17 +24,9 @@ import {
 } from './editor-page.ts';
 import { buildTriangle } from './triangle-page.ts';
 
-let app: ServedApp;
 let page: Page;
 const problems: string[] = [];
-
-beforeAll(async () => {
-  ({ app, page } = await openAppSession({ problems }));
-}, 180_000);
-
-afterAll(async () => {
-  await app?.close();
-});
+appSessionForSuite((s) => ({ page } = s), { problems });
 
 const status = () => statusLine(page);
 const diagnosticsList = () => listedList(page);

@@ -7,29 +7,18 @@
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { LIMITS } from '../../nodes/core/limits.ts';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { repoRoot } from './app-server.ts';
+import { appSessionForSuite, inspectorOn } from './app-suite.ts';
 
 const EXAMPLE = JSON.parse(
   readFileSync(join(repoRoot, 'examples/image-kaleidoscope-245.kleinflow.json'), 'utf8'),
 );
 const PIC = 'pic';
 
-let app: ServedApp;
 let page: Page;
-
-beforeAll(async () => {
-  app = await serveApp();
-  page = await (await app.newContext()).newPage();
-  page.setDefaultTimeout(60_000);
-  await page.goto(`${app.url}?test`);
-  await page.waitForFunction(() => window.__kleinflow?.viewport);
-  await page.evaluate((d) => window.__kleinflow!.store.dispatch({ type: 'load-document', doc: d }), EXAMPLE);
-  await page.evaluate((id) => window.__kleinflow!.store.setSelection([id]), PIC);
-  await page.getByRole('button', { name: 'Inspector' }).click();
-}, 180_000);
-afterAll(() => app?.close());
+appSessionForSuite((s) => ({ page } = s), { query: '?test', ready: inspectorOn(EXAMPLE, PIC) });
 
 const inspector = () => page.getByRole('complementary', { name: 'Inspector' });
 const params = () =>

@@ -5,8 +5,8 @@
  * step it. The page runs with `?test` (window.__kleinflow).
  */
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { type ServedApp, serveApp } from './app-server.ts';
+import { describe, expect, it } from 'vitest';
+import { appSessionForSuite, inspectorOn } from './app-suite.ts';
 
 /** One sphairahedron node (no render node: the panel is the inspector's, not the picture's). */
 const DOC = {
@@ -27,23 +27,8 @@ const DOC = {
 };
 
 const SCREENSHOT = 'examples/screenshots/sphairahedron-space.png';
-let app: ServedApp;
 let page: Page;
-
-beforeAll(async () => {
-  app = await serveApp();
-  page = await (await app.newContext()).newPage();
-  page.setDefaultTimeout(60_000);
-  await page.goto(`${app.url}?test`);
-  await page.waitForFunction(() => window.__kleinflow?.store);
-  await page.evaluate(
-    (d) => window.__kleinflow!.store.dispatch({ type: 'load-document', doc: d as never }),
-    DOC,
-  );
-  await page.evaluate(() => window.__kleinflow!.store.setSelection(['sph']));
-  await page.getByRole('button', { name: 'Inspector' }).click();
-}, 180_000);
-afterAll(() => app?.close());
+appSessionForSuite((s) => ({ page } = s), { query: '?test', ready: inspectorOn(DOC, 'sph') });
 
 const inspector = () => page.getByRole('complementary', { name: 'Inspector' });
 const params = () =>

@@ -12,11 +12,12 @@
 import { mkdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { beforeAll, describe, expect, it } from 'vitest';
 import { LIMITS } from '../../nodes/core/limits.ts';
 import { DEFAULT_LIGHTING_3D } from '../../nodes/core/scene-3d.ts';
 import { decodePng } from '../../src/io/png.ts';
 import { repoRoot, type ServedApp } from './app-server.ts';
+import { appSessionForSuite } from './app-suite.ts';
 import { renderPixels, thumbDiff, waitRendered } from './editor-page.ts';
 import { menu } from './io-page.ts';
 import { freePanePoint, openSmall3dPane } from './view-3d-page.ts';
@@ -127,12 +128,8 @@ async function dragMouse(from: { x: number; y: number }, dx: number, dy: number)
   await page.mouse.up();
 }
 
-beforeAll(async () => {
-  mkdirSync(shots, { recursive: true });
-  ({ app, page } = await openSmall3dPane());
-}, 180_000);
-
-afterAll(() => app?.close());
+beforeAll(() => mkdirSync(shots, { recursive: true }));
+appSessionForSuite((s) => ({ app, page } = s), { open: openSmall3dPane });
 
 describe('3D view', () => {
   let initial: Awaited<ReturnType<typeof renderPixels>>;

@@ -55,7 +55,7 @@ export const renderCommand: CliCommand = {
   summary: 'render a graph to a PNG on the CPU (the graph is embedded in the PNG)',
   usage: [
     'Usage: kleinflow render GRAPH -o OUT.png [--size WxH] [--samples N] [--time T]',
-    '       kleinflow render GRAPH --frames N|loop [--fps F] --out DIR/|OUT.gif [--frame-range A:B]',
+    '       kleinflow render GRAPH --frames N|loop [--fps F] --out DIR/|OUT.gif|OUT.webm|OUT.mp4 [--frame-range A:B]',
     '',
     'Renders the graph with the CPU interpreter at its saved view. The view height fills the',
     'image height; a wider image shows more to the sides. GRAPH is a .json document or a PNG',

@@ -13,13 +13,14 @@ export const sphairahedronSpaceNode = defineNode({
   type: 'sphairahedron-space',
   version: 1,
   label: 'Sphairahedron parameter space',
-  category: '3D',
+  category: 'Output',
   color: '#7e57c2',
-  doc: 'A view of the parameter space of the wired Sphairahedron (paper Fig. 30): its (zb, zc) plane (the zb axis for prisms and cakes) painted by what the shape is there — valid, bridges, tunnels, both, or no shape — with the current parameter as a red point. The render pane shows it beside or instead of the 3D picture; click in it to choose (zb, zc), drag to pan, wheel to zoom, arrow keys to step.',
+  // A view, like the render nodes: it has no outputs; its picture is the render pane's (or the PNG's).
+  doc: 'A view of the parameter space of the wired Sphairahedron (paper Fig. 30): the plane of its two height parameters (one axis for prisms and cakes) painted by what the shape is there — valid, bridges, tunnels, both, or no shape — with the current parameter as a red point. The render pane shows it beside or instead of the 3D picture; click in it to choose the parameter, drag to pan, wheel to magnify, arrow keys to step.',
   inputs: {
     sphairahedron: {
       ...element3Input('sphairahedron'),
-      doc: "wire a Sphairahedron node's elements here: its type, zb and zc are what the view shows and sets",
+      doc: "wire a Sphairahedron node's elements here: its type and heights are what the view shows and sets",
     },
   },
   outputs: {},

@@ -44,6 +44,7 @@ import { seedSolidNode } from './seed-solid.ts';
 import { seedSphereNode } from './seed-sphere.ts';
 import { seedDiskNode, seedImageNode } from './seeds.ts';
 import { sphairahedronNode } from './sphairahedron.ts';
+import { sphairahedronSpaceNode } from './sphairahedron-space.ts';
 import { sphereNode } from './sphere.ts';
 import { sphere4ptNode } from './sphere-4pt.ts';
 import { sphereInversionNode } from './sphere-inversion.ts';
@@ -114,6 +115,7 @@ export const NODE_TYPES = [
   seedBoxNode,
   seedSolidNode,
   sphairahedronNode,
+  sphairahedronSpaceNode,
   render3dNode,
 ] as const;
 

@@ -33,7 +33,6 @@ import { Presentation } from './present/Presentation.tsx';
 import { type RenderInfo, RenderPane } from './RenderPane.tsx';
 import { RecentPanel } from './recent/RecentDialog.tsx';
 import { pictureDone, useRecent } from './recent/use-recent.ts';
-import { SphairahedronSpaceSection } from './SphairahedronSpaceSection.tsx';
 import { SplitPane } from './SplitPane.tsx';
 import { StatusBar } from './StatusBar.tsx';
 import { TopBar } from './TopBar.tsx';
@@ -68,7 +67,6 @@ const imageSections = (node: GraphNode) => (
   <>
     <PictureFileSection node={node} />
     <LiveSourceSection node={node} />
-    <SphairahedronSpaceSection node={node} />
   </>
 );
 

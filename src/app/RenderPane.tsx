@@ -10,6 +10,7 @@ import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import type { View } from '../../nodes/core/scene.ts';
 import type { Evaluation } from '../../nodes/graph/evaluate.ts';
 import { isUnder, type NodePath, pathOf } from '../../nodes/graph/flatten.ts';
+import { spaceViewTarget } from '../../nodes/graph/space-view.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { isTyping } from '../editor/typing.ts';
 import { useEditorState, useStore } from '../state/use-store.ts';
@@ -25,6 +26,7 @@ import { Viewport } from '../viewport/viewport.ts';
 import { InspectPanel } from './inspect/InspectPanel.tsx';
 import { usePixelInspect } from './inspect/use-pixel-inspect.ts';
 import { renderHint } from './render-hint.ts';
+import { SpaceView } from './SpaceView.tsx';
 import { exposeForTests } from './test-hooks.ts';
 import { useCamera3d } from './use-camera-3d.ts';
 import { useLiveSources } from './use-live-sources.ts';
@@ -63,6 +65,16 @@ interface Props {
 }
 
 const NONE: ReadonlySet<string> = new Set();
+
+/** What the pane shows when the graph has both a 3D picture and a parameter-space view. */
+type PaneShows = '3d' | 'space' | 'both';
+/** Side by side only from this pane width (CSS pixels): narrower, the two take turns. */
+const BOTH_MIN_WIDTH = 900;
+const SHOWS_LABEL: Record<PaneShows, string> = {
+  '3d': '3D picture',
+  space: 'Parameter space',
+  both: 'Side by side',
+};
 
 /** The flattened ids of the nodes at or inside `path` (what the overlay draws for it). */
 function nodesUnder(evaluation: Evaluation, path: NodePath | null): ReadonlySet<string> {
@@ -191,6 +203,13 @@ export function RenderPane({
     b.addEventListener('pointerdown', stop);
     return () => b.removeEventListener('pointerdown', stop);
   }, []);
+  // The same for the view switch's buttons.
+  const paneGroup = useCallback((g: HTMLFieldSetElement | null) => {
+    if (!g) return undefined;
+    const stop = (e: PointerEvent) => e.stopPropagation();
+    g.addEventListener('pointerdown', stop);
+    return () => g.removeEventListener('pointerdown', stop);
+  }, []);
   const fitRef = useRef(fit);
   fitRef.current = fit;
   useEffect(() => {
@@ -237,9 +256,24 @@ export function RenderPane({
 
   // The hints tell an editor what to wire next: nothing for an audience (read-only), where a
   // presentation's early steps have no mirrors yet by design.
+  const spaceTarget = useMemo(() => spaceViewTarget(doc), [doc]);
+  // The parameter-space view (docs/math-3d.md "The parameter-space view"): alone, or beside the
+  // 3D picture when wide, else one of the two by the pane's switch (side by side by default).
+  const [chosen, setChosen] = useState<PaneShows | null>(null);
+  const wide = size.width >= BOTH_MIN_WIDTH;
+  const choices: PaneShows[] = wide ? ['3d', 'space', 'both'] : ['3d', 'space'];
+  const shows: PaneShows = !spaceTarget
+    ? '3d'
+    : !is3d
+      ? 'space'
+      : chosen && choices.includes(chosen)
+        ? chosen
+        : wide
+          ? 'both'
+          : '3d';
   const hint = useMemo(
-    () => (readOnly ? null : renderHint(doc, evaluation, registry)),
-    [readOnly, doc, evaluation],
+    () => (readOnly || spaceTarget ? null : renderHint(doc, evaluation, registry)),
+    [readOnly, doc, evaluation, spaceTarget],
   );
   const hoveredNodeIds = useMemo(() => nodesUnder(evaluation, hovered), [evaluation, hovered]);
   const onHoverNode = (id: string | null) => onHover(id === null ? null : pathOf(evaluation.origin, id));
@@ -251,10 +285,10 @@ export function RenderPane({
       data-testid="render-pane"
     >
       <canvas ref={canvas} className="kf-render__canvas" aria-label="Rendered picture" />
-      {size.width > 0 && scene3d && (
+      {size.width > 0 && scene3d && shows !== 'space' && (
         <LimitSetOverlay3d scene={scene3d} camera={camera3d.camera} width={size.width} height={size.height} />
       )}
-      {size.width > 0 && scene3d && (
+      {size.width > 0 && scene3d && shows !== 'space' && (
         <RenderOverlay3d
           evaluation={evaluation}
           scene={scene3d}
@@ -296,7 +330,7 @@ export function RenderPane({
       {inspected.inspection && (
         <InspectPanel inspection={inspected.inspection} place={inspected.place} onClose={inspected.close} />
       )}
-      {(bounds || is3d) && (
+      {(bounds || is3d) && shows !== 'space' && (
         <button
           type="button"
           className="kf-button kf-render__fit"
@@ -317,6 +351,26 @@ export function RenderPane({
         >
           Start camera
         </button>
+      )}
+      {spaceTarget && (
+        <div className={`kf-render__space kf-render__space--${shows}`} hidden={shows === '3d'}>
+          {shows !== '3d' && <SpaceView target={spaceTarget} readOnly={readOnly} />}
+        </div>
+      )}
+      {spaceTarget && is3d && (
+        <fieldset className="kf-render__shows" aria-label="The render pane shows" ref={paneGroup}>
+          {choices.map((c) => (
+            <button
+              key={c}
+              type="button"
+              className="kf-button"
+              aria-pressed={shows === c}
+              onClick={() => setChosen(c)}
+            >
+              {SHOWS_LABEL[c]}
+            </button>
+          ))}
+        </fieldset>
       )}
       {failure && <div className="kf-render__failure">{failure}</div>}
       {hint && (

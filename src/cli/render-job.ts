@@ -6,6 +6,7 @@
  * Answers each job with its time or its error.
  */
 import { parentPort } from 'node:worker_threads';
+import { spaceViewTarget } from '../../nodes/graph/space-view.ts';
 import { CliError } from './command.ts';
 import { loadAnyScene, loadScene } from './load-graph.ts';
 import { nodeIo } from './node-io.ts';
@@ -52,12 +53,13 @@ export function runRenderJob(job: RenderJob): Promise<RenderJobResult> {
 /** A 3D example on `threads` worker threads (render-3d-pool.ts). */
 export function render3dJob(job: RenderJob, threads: number): Promise<RenderJobResult> {
   return timedJob(job, async () => {
-    const { picture, text } = await loadAnyScene(nodeIo(), job.input);
+    const { picture, text, doc } = await loadAnyScene(nodeIo(), job.input);
     if (picture.kind !== '3d') throw new CliError(`"${job.input}" is not a 3D graph`);
     const { width, height } = job;
     const samples = job.samples ?? picture.scene3d.samples;
     const request = { width, height, samples, threads };
-    return renderScene3dPngOnPool(picture.scene3d, job.embedGraph ? text : null, request);
+    const space = doc ? spaceViewTarget(doc) : null;
+    return renderScene3dPngOnPool(picture.scene3d, job.embedGraph ? text : null, request, space);
   });
 }
 

@@ -5,6 +5,8 @@
  */
 import type { Scene } from '../../nodes/core/scene.ts';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
+import { insetSpaceView } from '../../nodes/geometry/space/sphairahedron-space-picture.ts';
+import type { SpaceViewTarget } from '../../nodes/graph/space-view.ts';
 import { figureLayer } from '../../shader-gen/figures/layer.ts';
 import { paintFigures } from '../../shader-gen/figures/paint.ts';
 import { rasterize } from '../../shader-gen/raster.ts';
@@ -51,15 +53,19 @@ const keepGoing = (onProgress?: (done: number) => void) =>
 
 /**
  * A 3D graph's picture: the CPU sphere tracer at the graph's camera, in bands over `threads`
- * worker threads (render-3d-pool.ts), limit-set dots painted over it, graph embedded like 2D.
+ * worker threads (render-3d-pool.ts), limit-set dots painted over it, graph embedded like 2D; with
+ * `space`, the graph's parameter-space view as a panel in the lower right corner.
  */
 export async function renderScene3dPngOnPool(
   scene: Scene3d,
   graphText: string | null,
   request: Pool3dRequest,
+  space: SpaceViewTarget | null = null,
 ): Promise<Uint8Array> {
-  const raster = await renderScene3dOnPool(scene, request);
+  const image = await renderScene3dOnPool(scene, request);
   // The quaternion groups' limit sets (Fig. 6) are dots over the traced picture, as in the app.
-  paintSceneLimitSets3d(scene, raster);
-  return encodeWithGraph(raster, graphText);
+  paintSceneLimitSets3d(scene, image);
+  // A parameter-space view in the graph: its panel in the corner (docs/math-3d.md "The parameter-space view").
+  if (space) insetSpaceView(image, space);
+  return encodeWithGraph(image, graphText);
 }

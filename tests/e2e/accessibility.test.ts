@@ -5,57 +5,15 @@
  * with the browser's computed styles (contrast needs those).
  */
 import { mkdirSync, readFileSync } from 'node:fs';
-import { createRequire } from 'node:module';
 import { join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { audit, readable } from './axe-audit.ts';
 import { waitRendered } from './editor-page.ts';
 import { menu, openViaPicker } from './io-page.ts';
 
-const axeSource = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
 const shots = join(repoRoot, 'test-artifacts');
-const TAGS = ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa'];
-
-interface Violation {
-  id: string;
-  impact: string | null;
-  help: string;
-  nodes: { target: string[]; failureSummary?: string }[];
-}
-
-/** Serious and critical violations of the page as it is now. */
-async function audit(page: Page): Promise<Violation[]> {
-  if (!(await page.evaluate(() => 'axe' in window))) await page.addScriptTag({ content: axeSource });
-  const violations = await page.evaluate(async (tags) => {
-    // axe is the global the injected script defines.
-    const axe = (
-      window as unknown as { axe: { run: (...a: unknown[]) => Promise<{ violations: Violation[] }> } }
-    ).axe;
-    const result = await axe.run(document, {
-      runOnly: { type: 'tag', values: tags },
-      resultTypes: ['violations'],
-    });
-    return result.violations.map((v) => ({
-      id: v.id,
-      impact: v.impact,
-      help: v.help,
-      nodes: v.nodes.map((n) => ({ target: n.target, failureSummary: n.failureSummary })),
-    }));
-  }, TAGS);
-  return violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
-}
-
-/** One line per offending element, so a failure says what to fix where. */
-const readable = (vs: Violation[]) =>
-  vs
-    .flatMap((v) =>
-      v.nodes.map(
-        (n) =>
-          `${v.impact} ${v.id} (${v.help}): ${n.target.join(' ')}\n    ${(n.failureSummary ?? '').replace(/\n/g, ' ')}`,
-      ),
-    )
-    .join('\n');
 
 /** Audits, runs `after` (closing a dialog, so the next case starts clean), then asserts. */
 async function expectClean(page: Page, after?: () => Promise<void>) {

@@ -84,7 +84,9 @@ export function floorTop(corners: readonly Vec3[], spheres: readonly Sphere[]): 
         const w = 1 - u - v;
         const x = u * a[0] + v * b[0] + w * g[0];
         const y = u * a[1] + v * b[1] + w * g[1];
-        const top = Math.max(...spheres.map((s) => ballTop(s, x, y)));
+        // A loop, not Math.max over a mapped array: the parameter-space view calls this per pixel.
+        let top = -Infinity;
+        for (const s of spheres) top = Math.max(top, ballTop(s, x, y));
         if (top === -Infinity) hole = true;
         else lowest = Math.min(lowest, top);
       }

@@ -5,6 +5,7 @@
 import { availableParallelism } from 'node:os';
 import { LIMITS } from '../../../nodes/core/scene.ts';
 import type { Scene3d } from '../../../nodes/core/scene-3d.ts';
+import { type SpaceViewTarget, spaceViewTarget } from '../../../nodes/graph/space-view.ts';
 import {
   expectPositionals,
   formatOptions,
@@ -88,7 +89,8 @@ export const renderCommand: CliCommand = {
     if (any.picture.kind === '3d') {
       if (time !== 0) throw usageError('--time needs a 2D graph: a 3D graph renders one still picture');
       const threads = parseThreadsOption(parsed);
-      const request = { width, height, samples, threads, always };
+      const space = any.doc ? spaceViewTarget(any.doc) : null;
+      const request = { width, height, samples, threads, always, space };
       return render3d(io, any.picture.scene3d, any.text, output, request);
     }
     const loaded = { ...any, scene: any.picture.scene };
@@ -150,6 +152,8 @@ interface Still3dRequest {
   /** Worker threads (undefined: every core, or this thread alone for a render of a moment). */
   readonly threads: number | undefined;
   readonly always: boolean;
+  /** The graph's parameter-space view, drawn as a panel in the corner. */
+  readonly space: SpaceViewTarget | null;
 }
 
 /**
@@ -179,6 +183,11 @@ async function render3d(
   };
   const secondsPerRow = single / height;
   return writeStill(io, output, still, (onProgress) =>
-    renderScene3dPngOnPool(scene, text, { width, height, samples, threads, secondsPerRow, onProgress }),
+    renderScene3dPngOnPool(
+      scene,
+      text,
+      { width, height, samples, threads, secondsPerRow, onProgress },
+      request.space,
+    ),
   );
 }

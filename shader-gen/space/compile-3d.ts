@@ -30,7 +30,8 @@ import { VERTEX_SOURCE } from '../glsl/template.ts';
 import { declaration, SceneValues, type UniformEntry } from '../glsl/values.ts';
 import { sampleOffsetGlsl } from '../glsl/view.glsl.ts';
 import { cameraRayGlsl } from './camera-3d.ts';
-import { backgroundGlsl, shadeGlsl, traceGlsl } from './glsl/trace.glsl.ts';
+import { radianceGlsl } from './glsl/reflect.glsl.ts';
+import { shadeGlsl, traceGlsl } from './glsl/trace.glsl.ts';
 import { emitSceneGlobals, emitWalk, placeWalk, walkFunctions } from './glsl/walk.glsl.ts';
 import { prepareTrace3d } from './plan.ts';
 
@@ -80,8 +81,7 @@ function emitScene(
   const plan = prepareTrace3d(scene);
   const placed = placeWalk(plan, v);
   const trace = traceGlsl(plan, v);
-  const shade = variant === 'color' ? shadeGlsl(plan, v) : null;
-  const background = variant === 'color' ? backgroundGlsl(scene, v) : null;
+  const shade = variant === 'color' ? radianceGlsl(plan, v, trace, shadeGlsl(plan, v)) : null;
   let loadsScene = false;
   const emitFunctions = () => {
     loadsScene = emitSceneGlobals(out, placed);
@@ -101,9 +101,9 @@ function emitScene(
       '  float t;',
       '  vec4 info;',
       '  vec3 fin;',
-      '  bool hit = traceRay(camPos, d, angle, t, info, fin);',
+      '  bool hit = traceRay(camPos, d, angle, 0.0, t, info, fin);',
       shade
-        ? `  return hit ? vec4(shadeHit(camPos, d, angle, t, info, fin), 1.0) : vec4(${background}, bgAlpha);`
+        ? '  return vec4(radiance(camPos, d, angle, hit, t, info, fin), hit ? 1.0 : bgAlpha);'
         : '  return vec4(hit ? 1.0 : 0.0, t, info.y, info.z);',
       '}',
       '',

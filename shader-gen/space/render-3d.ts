@@ -1,15 +1,15 @@
 /**
  * Renders a Scene3d on the CPU (the reference for the GPU, and `kleinflow render` for 3D graphs):
  * per pixel `samples` jittered rays (the 2D sample pattern, shader-gen/view.ts), shaded in linear
- * light, averaged, encoded as 8-bit sRGB RGBA with row 0 at the TOP (PNG order). A probe image
+ * light (mirror seeds reflecting, reflect-3d.ts), averaged, encoded as 8-bit sRGB RGBA with row 0 at the TOP (PNG order). A probe image
  * gives what parity compares: (hit, t, depth, seed) per pixel, row 0 at the BOTTOM like the GPU.
  */
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
-import { linearToSrgb, toLinear } from '../srgb.ts';
+import { linearToSrgb } from '../srgb.ts';
 import { sampleOffset } from '../view.ts';
 import { type CameraBasis, cameraBasis, pixelAngle, rayDirection } from './camera-3d.ts';
 import { prepareTrace3d, type TracePlan } from './plan.ts';
-import { shadeHit } from './shade-3d.ts';
+import { type Environment, environmentOf, radiance } from './reflect-3d.ts';
 import { type Hit3d, traceRay } from './trace-3d.ts';
 
 export interface Render3dOptions {
@@ -54,7 +54,8 @@ export interface Render3dFrame {
   readonly width: number;
   readonly height: number;
   readonly samples: number;
-  readonly bg: readonly number[];
+  /** What rays that hit nothing see (the background; also what mirrors reflect). */
+  readonly env: Environment;
   readonly bgAlpha: number;
 }
 
@@ -70,7 +71,7 @@ export function render3dFrame(
     width,
     height,
     samples: Math.max(1, Math.round(options.samples ?? scene.samples)),
-    bg: toLinear(scene.background),
+    env: environmentOf(scene),
     bgAlpha: options.bgAlpha ?? 1,
   };
 }
@@ -82,7 +83,7 @@ export function renderPixel3d(f: Render3dFrame, px: number, row: number, data: U
   for (let k = 0; k < f.samples; k++) {
     const [jx, jy] = sampleOffset(k);
     const { o: origin, d, angle, hit } = tracePixel(f.plan, f.width, f.height, px + jx, py + jy, f.basis);
-    const c = hit.hit ? shadeHit(f.plan, origin, d, angle, hit) : f.bg;
+    const c = radiance(f.plan, f.env, origin, d, angle, hit);
     const a = hit.hit ? 1 : f.bgAlpha;
     for (let i = 0; i < 3; i++) sum[i]! += c[i]! * a;
     sum[3]! += a;

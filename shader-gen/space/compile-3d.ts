@@ -1,7 +1,8 @@
 /**
  * Scene3d → one GLSL ES 3.00 sphere-tracing fragment shader (docs/math-3d.md "§8 The tracer's distance bound", docs/math-3d.md "§9 The sphere tracer: march, hit, shading"), the 3D twin of
  * shader-gen/compile.ts. The source depends only on the scene's STRUCTURE — the element kinds in
- * order, the number of seeds, the colouring mode, whether every element is a sphere inversion —
+ * order, the number of seeds, the colouring mode, whether every element is a sphere inversion,
+ * which seeds are mirrors and the environment's kind (docs/math-3d.md "Mirror material") —
  * and every value (positions, radii, colours, lighting, iteration and march budgets, bounds)
  * travels as a uniform, so editing a value never recompiles; `bake: true` writes them as literals
  * instead (the faster program once the view is still). The CPU tracer (render-3d.ts) is the

@@ -3,8 +3,8 @@
  * (docs/math-3d.md "Mirror material"): `vec3 environment(vec3 d)` and
  * `vec3 radiance(vec3 o, vec3 d, float angle, bool hit, float t, vec4 info, vec3 fin)`, which
  * shades the first trace and, off mirror seeds, traces the reflected rays with the same traceRay.
- * The bounce loop runs to the constant MAX_REFLECTIONS and stops at the scene's reflections
- * (a uniform): dragging the depth or a reflectivity never recompiles. Without mirror seeds the
+ * The bounce loop runs to the scene's reflections (a uniform, clamped to MAX_REFLECTIONS):
+ * dragging the depth or a reflectivity never recompiles. Without mirror seeds the
  * loop is not emitted (radiance is shadeHit or the environment).
  */
 import { MAX_REFLECTIONS } from '../../../nodes/core/scene-3d.ts';
@@ -70,8 +70,10 @@ ${head}
 ${head}
   vec3 colour = vec3(0.0);
   vec3 weight = vec3(1.0);
-  int depth = ${depth};
-  for (int bounce = 0; bounce <= ${intLiteral(MAX_REFLECTIONS)}; ++bounce) {
+  // At most MAX_REFLECTIONS bounces; a bound read from the uniform (not a constant) keeps the
+  // compiler from unrolling the loop into one copy of the march and shading per bounce.
+  int depth = min(${depth}, ${intLiteral(MAX_REFLECTIONS)});
+  for (int bounce = 0; bounce <= depth; ++bounce) {
     if (!hit) return colour + weight * environment(d);
     vec3 n;
     vec3 base;

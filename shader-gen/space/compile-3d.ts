@@ -99,13 +99,15 @@ function emitScene(
       'vec4 renderSample(vec2 at, vec2 size, vec3 camPos, vec3 camTarget, float fov, float bgAlpha) {',
       '  vec3 d = cameraRay(camPos, camTarget, fov, size, at);',
       '  float angle = 2.0 * tan(radians(fov) * 0.5) / size.y;',
-      '  float t;',
-      '  vec4 info;',
-      '  vec3 fin;',
-      '  bool hit = traceRay(camPos, d, angle, 0.0, t, info, fin);',
-      shade
-        ? '  return vec4(radiance(camPos, d, angle, hit, t, info, fin), hit ? 1.0 : bgAlpha);'
-        : '  return vec4(hit ? 1.0 : 0.0, t, info.y, info.z);',
+      ...(shade
+        ? ['  return radiance(camPos, d, angle, bgAlpha);']
+        : [
+            '  float t;',
+            '  vec4 info;',
+            '  vec3 fin;',
+            '  bool hit = traceRay(camPos, d, angle, 0.0, t, info, fin);',
+            '  return vec4(hit ? 1.0 : 0.0, t, info.y, info.z);',
+          ]),
       '}',
       '',
     );

@@ -1,8 +1,9 @@
 /**
  * The GLSL environment and mirror reflections, twins of ../reflect-3d.ts line by line
  * (docs/math-3d.md "Mirror material"): `vec3 environment(vec3 d)` and
- * `vec3 radiance(vec3 o, vec3 d, float angle, bool hit, float t, vec4 info, vec3 fin)`, which
- * shades the first trace and, off mirror seeds, traces the reflected rays with the same traceRay.
+ * `vec4 radiance(vec3 o, vec3 d, float angle, float bgAlpha)`, which traces and shades the ray
+ * and, off mirror seeds, the reflected rays with the same traceRay (alpha: 1 on a hit, bgAlpha
+ * where the primary ray hits nothing).
  * The bounce loop runs to the scene's reflections (a uniform, clamped to MAX_REFLECTIONS):
  * dragging the depth or a reflectivity never recompiles. Without mirror seeds the
  * loop is not emitted (radiance is shadeHit or the environment).
@@ -51,15 +52,19 @@ function seedReflectivityGlsl(plan: TracePlan, v: SceneValues): GlslFunction {
 /** `radiance`, over the trace and shade functions (../glsl/trace.glsl.ts). */
 export function radianceGlsl(plan: TracePlan, v: SceneValues, trace: GlslFunction, shade: GlslFunction) {
   const environment = environmentGlsl(plan, v);
-  const head = 'vec3 radiance(vec3 o, vec3 d, float angle, bool hit, float t, vec4 info, vec3 fin) {';
+  const head = 'vec4 radiance(vec3 o, vec3 d, float angle, float bgAlpha) {';
   if (!hasMirrors(plan.scene))
     return glslFunction(
       'radiance',
       `
 ${head}
+  float t;
+  vec4 info;
+  vec3 fin;
   vec3 n;
   vec3 base;
-  return hit ? shadeHit(o, d, angle, t, info, fin, n, base) : environment(d);
+  if (!traceRay(o, d, angle, 0.0, t, info, fin)) return vec4(environment(d), bgAlpha);
+  return vec4(shadeHit(o, d, angle, t, info, fin, n, base), 1.0);
 }`,
       [trace, shade, environment],
     );
@@ -73,13 +78,20 @@ ${head}
   // At most MAX_REFLECTIONS bounces; a bound read from the uniform (not a constant) keeps the
   // compiler from unrolling the loop into one copy of the march and shading per bounce.
   int depth = min(${depth}, ${intLiteral(MAX_REFLECTIONS)});
+  // One call site of traceRay and of shadeHit (the primary ray is bounce 0): the program stays
+  // the size of the matte one.
+  float t0 = 0.0;
+  float t;
+  vec4 info;
+  vec3 fin;
   for (int bounce = 0; bounce <= depth; ++bounce) {
-    if (!hit) return colour + weight * environment(d);
+    if (!traceRay(o, d, angle, t0, t, info, fin))
+      return vec4(colour + weight * environment(d), bounce == 0 ? bgAlpha : 1.0);
     vec3 n;
     vec3 base;
     vec3 matte = shadeHit(o, d, angle, t, info, fin, n, base);
     float r = seedReflectivity(info.z);
-    if (bounce >= depth || !(r > 0.0)) return colour + weight * matte;
+    if (bounce >= depth || !(r > 0.0)) return vec4(colour + weight * matte, 1.0);
     vec3 p = o + d * t;
     float eps = hitTolerance(angle, t);
     float m = 1.0 - clamp(-dot(d, n), 0.0, 1.0);
@@ -89,10 +101,9 @@ ${head}
     // The reflected ray continues the path: origin moved back by t, its march starting at t.
     d = normalize(d - 2.0 * dot(d, n) * n);
     o = p + n * (2.0 * eps) - d * t;
-    float t0 = t;
-    hit = traceRay(o, d, angle, t0, t, info, fin);
+    t0 = t;
   }
-  return colour;
+  return vec4(colour, 1.0);
 }`,
     [trace, shade, environment, seedReflectivityGlsl(plan, v)],
   );

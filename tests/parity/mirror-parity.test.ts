@@ -33,8 +33,10 @@ afterAll(async () => {
 
 /**
  * Opt-in (KLEINFLOW_MIRROR_PARITY=1): on the shared 2-core test machine SwiftShader did not finish
- * even a 4×3 draw of the mirror program in about four minutes (why is not known yet), so in the
- * default run this file would only time out. Not yet seen passing: see docs/math-3d.md
+ * even a 4×3 draw of the mirror program in about four minutes; the same scene with its mirrors made
+ * matte (flat background too) was as slow, while Fig. 11 drew 4×3 in 0.5 s, so the cause is in
+ * this scene (four outer seeds), not in the reflection loop — not found yet. In the default run
+ * this file would only time out. Not yet seen passing: see docs/math-3d.md
  * "Mirror material".
  */
 const OPT_IN = process.env.KLEINFLOW_MIRROR_PARITY !== '1';

@@ -68,6 +68,11 @@ export type Seed3d = (
    * "Sphairahedra (paper §5.3)"): the render does not warn that it is outside the domain.
    */
   readonly clipped?: true;
+  /**
+   * A mirror seed's reflectivity in [0, 1], Fresnel's F0 (docs/math-3d.md "Mirror material");
+   * absent for a matte seed.
+   */
+  readonly reflectivity?: number;
 };
 export type Seed3dKind = Seed3d['kind'];
 
@@ -165,6 +170,19 @@ export interface Volume3d {
   readonly d: Color;
 }
 
+/**
+ * What a ray that hits nothing sees, primary or reflected (docs/math-3d.md "Mirror material"):
+ * `flat` the background colour; `sky` a gradient from the horizon colour up to the background
+ * colour at the zenith, and below the horizon the ground colour.
+ */
+export type Environment3d =
+  | { readonly mode: 'flat' }
+  | { readonly mode: 'sky'; readonly horizon: Color; readonly ground: Color };
+
+/** Bounces a reflected ray may take at most (the shader's loop bound; the depth is a uniform). */
+export const MAX_REFLECTIONS = 4;
+export const DEFAULT_REFLECTIONS = 2;
+
 /** What the 3D view draws for a node (wireframe, in the node's colour). */
 export type Overlay3dShape =
   | { readonly shape: 'point'; readonly at: Vec3 }
@@ -206,6 +224,10 @@ export interface Scene3d {
   readonly lighting: Lighting3d;
   readonly coloring: Coloring3d;
   readonly background: Color;
+  /** What rays that hit nothing see (absent: `flat`, the background colour). */
+  readonly environment?: Environment3d;
+  /** Reflections a ray may take off mirror seeds, 0…MAX_REFLECTIONS (absent: DEFAULT_REFLECTIONS). */
+  readonly reflections?: number;
   /** Progressive anti-aliasing samples per pixel when the view is still. */
   readonly samples: number;
   /** Set: the picture is the volume-rendered nesting depth (Fig. 10) instead of the traced surfaces. */

@@ -14,6 +14,7 @@ import {
   DEFAULT_CAMERA_3D,
   DEFAULT_LIGHTING_3D,
   type Lighting3d,
+  MAX_REFLECTIONS,
   type NodeElement3d,
   type Seed3d,
 } from '../core/scene-3d.ts';
@@ -24,6 +25,7 @@ import { COLOUR_3D_NAMES } from '../formula/names.ts';
 import { MAX_FORMULA_LENGTH } from '../formula/parse.ts';
 import { dist3, len3 } from '../geometry/space/vec3.ts';
 import { PALETTES } from './colour.ts';
+import { ENVIRONMENT_PARAMS, environment3d, REFLECTIONS_INPUT } from './environment-3d.ts';
 import { VOLUME_INPUTS, VOLUME_PARAMS, volumeSettings } from './render-3d-volume.ts';
 import { fail, fmt } from './shared.ts';
 import { cameraDiagnostics, gpuRangeDiagnostics3d, seedDiagnostics } from './space-checks.ts';
@@ -138,6 +140,7 @@ export const render3dNode = defineNode({
       'each march step goes this fraction (≤ 1) of the distance estimate',
       true,
     ),
+    reflections: REFLECTIONS_INPUT,
     samples: setting('samples / pixel', 4, 'anti-aliasing samples when the view is still', true),
     step: {
       type: 'number',
@@ -207,6 +210,7 @@ export const render3dNode = defineNode({
       when: { param: 'coloring', is: PALETTED },
     },
     background: { kind: 'color', default: '#101018', label: 'background' },
+    ...ENVIRONMENT_PARAMS,
     ...VOLUME_PARAMS,
   },
   evaluate: ({ inputs: i, params, nodeId }) => {
@@ -282,6 +286,8 @@ export const render3dNode = defineNode({
       lighting,
       coloring,
       background: params.background,
+      environment: environment3d(params.environment, params.horizon, params.ground),
+      reflections: clampTo('reflections', i.reflections, 0, MAX_REFLECTIONS, diagnostics, true),
       samples: clampTo('samples', i.samples, 1, LIMITS.maxSamples, diagnostics, true),
       ...(i.limitSets.length > 0 ? { limitSets: i.limitSets } : {}),
     };

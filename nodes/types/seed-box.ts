@@ -1,5 +1,6 @@
 import { defineNode } from '../core/define-node.ts';
 import type { Seed3d } from '../core/scene-3d.ts';
+import { MATERIAL_PARAM, REFLECTIVITY_INPUT, withMaterial } from './seed-material.ts';
 import { fail } from './shared.ts';
 import { boxHandles, boxProblem, dragBox, fmt3, point3Input } from './space-shared.ts';
 
@@ -14,20 +15,22 @@ export const seedBoxNode = defineNode({
     center: point3Input('centre', 0, 0, 0),
     halfSize: point3Input('half size', 0.4, 0.4, 0.4, 'half the box’s extent along x, y and z'),
     color: { type: 'color', label: 'colour', default: '#f4a259' },
+    reflectivity: REFLECTIVITY_INPUT,
   },
   outputs: { seed: { type: 'seed3', label: 'seed' } },
-  params: {},
-  evaluate: ({ inputs, nodeId }) => {
+  params: { material: MATERIAL_PARAM },
+  evaluate: ({ inputs, params, nodeId }) => {
     const problem = boxProblem(inputs.halfSize);
     if (problem) return fail(problem);
-    const seed: Seed3d = {
+    const plain: Seed3d = {
       kind: 'box',
       nodeId,
       center: inputs.center,
       halfSize: inputs.halfSize,
       color: inputs.color,
     };
-    return { outputs: { seed }, readout: `half size ${fmt3(inputs.halfSize)}` };
+    const { seed, diagnostics } = withMaterial(plain, params.material, inputs.reflectivity);
+    return { outputs: { seed }, diagnostics, readout: `half size ${fmt3(inputs.halfSize)}` };
   },
   overlay3d: (_ctx, out) =>
     out.seed.kind === 'box' ? [{ shape: 'box', center: out.seed.center, halfSize: out.seed.halfSize }] : [],

@@ -12,6 +12,7 @@ import { formulaFor } from '../formula/checked.ts';
 import { SOLID_NAMES } from '../formula/names.ts';
 import { MAX_FORMULA_LENGTH } from '../formula/parse.ts';
 import { type SlopeCheck, sampledSlope } from '../formula/solid.ts';
+import { MATERIAL_PARAM, REFLECTIVITY_INPUT, withMaterial } from './seed-material.ts';
 import { fail, fmt } from './shared.ts';
 import { fmt3, point3Input, radiusTo, sphereHandles, sphereProblem } from './space-shared.ts';
 
@@ -41,9 +42,11 @@ export const seedSolidNode = defineNode({
     b: { type: 'number', label: 'b', default: 0.1, step: 0.01 },
     c: { type: 'number', label: 'c', default: 0, step: 0.01 },
     color: { type: 'color', label: 'colour', default: '#ffb454' },
+    reflectivity: REFLECTIVITY_INPUT,
   },
   outputs: { seed: { type: 'seed3', label: 'seed' } },
   params: {
+    material: MATERIAL_PARAM,
     formula: {
       kind: 'string',
       default: TORUS,
@@ -77,7 +80,7 @@ export const seedSolidNode = defineNode({
         'the formula is nowhere negative at the points sampled in the bounding ball (a 10 × 10 × 10 grid): the solid is empty, or much smaller than its ball (make the bounding radius fit it)',
       );
     const divisor = slope > 1.001 ? slope * SLOPE_MARGIN : 1;
-    const seed: Seed3d = {
+    const plain: Seed3d = {
       kind: 'formula',
       nodeId,
       center: inputs.center,
@@ -87,7 +90,9 @@ export const seedSolidNode = defineNode({
       slope: divisor,
       color: inputs.color,
     };
+    const { seed, diagnostics: material } = withMaterial(plain, params.material, inputs.reflectivity);
     const diagnostics = [
+      ...material,
       ...(divisor > 1 ? [diag('formulaSlope', { nodeId }, fmt(slope), fmt(divisor))] : []),
       ...(undefinedAt ? [diag('formulaUndefined', { nodeId }, fmt3(undefinedAt))] : []),
     ];

@@ -1,5 +1,6 @@
 import { defineNode } from '../core/define-node.ts';
 import type { Seed3d } from '../core/scene-3d.ts';
+import { MATERIAL_PARAM, REFLECTIVITY_INPUT, withMaterial } from './seed-material.ts';
 import { fail, fmt } from './shared.ts';
 import { point3Input, radiusTo, sphereHandles, sphereProblem } from './space-shared.ts';
 
@@ -14,15 +15,17 @@ export const seedSphereNode = defineNode({
     center: point3Input('centre', 0, 0, 0),
     radius: { type: 'number', label: 'radius', default: 0.5, step: 0.01 },
     color: { type: 'color', label: 'colour', default: '#7bd389' },
+    reflectivity: REFLECTIVITY_INPUT,
   },
   outputs: { seed: { type: 'seed3', label: 'seed' } },
-  params: {},
-  evaluate: ({ inputs, nodeId }) => {
+  params: { material: MATERIAL_PARAM },
+  evaluate: ({ inputs, params, nodeId }) => {
     const sphere = { center: inputs.center, radius: inputs.radius };
     const problem = sphereProblem(sphere, 'the seed sphere');
     if (problem) return fail(problem);
-    const seed: Seed3d = { kind: 'sphere', nodeId, sphere, color: inputs.color };
-    return { outputs: { seed }, readout: `r = ${fmt(inputs.radius)}` };
+    const plain: Seed3d = { kind: 'sphere', nodeId, sphere, color: inputs.color };
+    const { seed, diagnostics } = withMaterial(plain, params.material, inputs.reflectivity);
+    return { outputs: { seed }, diagnostics, readout: `r = ${fmt(inputs.radius)}` };
   },
   overlay3d: (_ctx, out) =>
     out.seed.kind === 'sphere' ? [{ shape: 'sphere', sphere: out.seed.sphere }] : [],

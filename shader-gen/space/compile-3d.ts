@@ -1,7 +1,8 @@
 /**
  * Scene3d → one GLSL ES 3.00 sphere-tracing fragment shader (docs/math-3d.md "§8 The tracer's distance bound", docs/math-3d.md "§9 The sphere tracer: march, hit, shading"), the 3D twin of
  * shader-gen/compile.ts. The source depends only on the scene's STRUCTURE — the element kinds in
- * order, the number of seeds, the colouring mode, whether every element is a sphere inversion —
+ * order, the number of seeds, the colouring mode, whether every element is a sphere inversion,
+ * which seeds are mirrors and the environment's kind (docs/math-3d.md "Mirror material") —
  * and every value (positions, radii, colours, lighting, iteration and march budgets, bounds)
  * travels as a uniform, so editing a value never recompiles; `bake: true` writes them as literals
  * instead (the faster program once the view is still). The CPU tracer (render-3d.ts) is the
@@ -29,8 +30,10 @@ import { SourceBuilder } from '../glsl/source.ts';
 import { VERTEX_SOURCE } from '../glsl/template.ts';
 import { declaration, SceneValues, type UniformEntry } from '../glsl/values.ts';
 import { sampleOffsetGlsl } from '../glsl/view.glsl.ts';
+import { toLinear } from '../srgb.ts';
 import { cameraRayGlsl } from './camera-3d.ts';
-import { backgroundGlsl, shadeGlsl, traceGlsl } from './glsl/trace.glsl.ts';
+import { radianceGlsl } from './glsl/reflect.glsl.ts';
+import { shadeGlsl, traceGlsl } from './glsl/trace.glsl.ts';
 import { volumeGlsl } from './glsl/volume.glsl.ts';
 import { emitSceneGlobals, emitWalk, placeWalk, walkFunctions } from './glsl/walk.glsl.ts';
 import { prepareTrace3d } from './plan.ts';
@@ -72,16 +75,21 @@ export const cameraUniforms = (c: Camera3d): UniformEntry[] => [
 
 const HEADER = ['precision highp float;', 'precision highp int;'];
 
-/** renderSample's body after the ray for the sphere tracer: shaded hit or background, or the probe. */
-const traceSample = (shaded: boolean, background: string | null): string[] => [
+/**
+ * renderSample's body after the ray for the sphere tracer: the ray's radiance (shaded hit and its
+ * reflections, or the environment; glsl/reflect.glsl.ts), or the probe.
+ */
+const traceSample = (shaded: boolean): string[] => [
   '  float angle = 2.0 * tan(radians(fov) * 0.5) / size.y;',
-  '  float t;',
-  '  vec4 info;',
-  '  vec3 fin;',
-  '  bool hit = traceRay(camPos, d, angle, t, info, fin);',
-  shaded
-    ? `  return hit ? vec4(shadeHit(camPos, d, angle, t, info, fin), 1.0) : vec4(${background}, bgAlpha);`
-    : '  return vec4(hit ? 1.0 : 0.0, t, info.y, info.z);',
+  ...(shaded
+    ? ['  return radiance(camPos, d, angle, bgAlpha);']
+    : [
+        '  float t;',
+        '  vec4 info;',
+        '  vec3 fin;',
+        '  bool hit = traceRay(camPos, d, angle, 0.0, t, info, fin);',
+        '  return vec4(hit ? 1.0 : 0.0, t, info.y, info.z);',
+      ]),
 ];
 
 /**
@@ -114,8 +122,9 @@ function emitScene(
   if (variant === 'volume-probe' && !volume) throw new Error('a volume probe needs a volume-rendered scene');
   const trace = volume ? null : traceGlsl(plan, v);
   const march = volume ? volumeGlsl(volumeBounds(plan), volume, v) : null;
-  const shade = variant === 'color' && !volume ? shadeGlsl(plan, v) : null;
-  const background = variant === 'color' ? backgroundGlsl(scene, v) : null;
+  const shade = variant === 'color' && trace ? radianceGlsl(plan, v, trace, shadeGlsl(plan, v)) : null;
+  // The volume's medium lies over the flat background colour (volume-3d.ts overBackground).
+  const background = variant === 'color' && volume ? v.vec('u_background', toLinear(scene.background)) : null;
   let loadsScene = false;
   const emitFunctions = () => {
     loadsScene = emitSceneGlobals(out, placed);
@@ -135,7 +144,7 @@ function emitScene(
     out.push(
       'vec4 renderSample(vec2 at, vec2 size, vec3 camPos, vec3 camTarget, float fov, float bgAlpha) {',
       '  vec3 d = cameraRay(camPos, camTarget, fov, size, at);',
-      ...(march ? volumeSample(variant, background) : traceSample(shade !== null, background)),
+      ...(march ? volumeSample(variant, background) : traceSample(shade !== null)),
       '}',
       '',
     );

@@ -1,7 +1,7 @@
 /**
  * Renders a Scene3d on the CPU (the reference for the GPU, and `kleinflow render` for 3D graphs):
  * per pixel `samples` jittered rays (the 2D sample pattern, shader-gen/view.ts), shaded in linear
- * light, averaged, encoded as 8-bit sRGB RGBA with row 0 at the TOP (PNG order). A probe image
+ * light (mirror seeds reflecting, reflect-3d.ts), averaged, encoded as 8-bit sRGB RGBA with row 0 at the TOP (PNG order). A probe image
  * gives what parity compares: (hit, t, depth, seed) per pixel, row 0 at the BOTTOM like the GPU.
  */
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
@@ -9,7 +9,7 @@ import { linearToSrgb, toLinear } from '../srgb.ts';
 import { sampleOffset } from '../view.ts';
 import { type CameraBasis, cameraBasis, pixelAngle, rayDirection } from './camera-3d.ts';
 import { prepareTrace3d, type TracePlan } from './plan.ts';
-import { shadeHit } from './shade-3d.ts';
+import { type Environment, environmentOf, radiance } from './reflect-3d.ts';
 import { type Hit3d, traceRay } from './trace-3d.ts';
 import { overBackground, type VolumeBounds, volumeBounds, volumeJitter, volumeRay } from './volume-3d.ts';
 
@@ -55,6 +55,9 @@ export interface Render3dFrame {
   readonly width: number;
   readonly height: number;
   readonly samples: number;
+  /** What rays that hit nothing see (the background; also what mirrors reflect). */
+  readonly env: Environment;
+  /** The flat background colour (linear), under the volume renderer's medium. */
   readonly bg: readonly number[];
   readonly bgAlpha: number;
   /** The volume renderer's bounds (volume-3d.ts), when the scene is volume rendered. */
@@ -75,6 +78,7 @@ export function render3dFrame(
     width,
     height,
     samples: Math.max(1, Math.round(options.samples ?? scene.samples)),
+    env: environmentOf(scene),
     bg: toLinear(scene.background),
     bgAlpha: options.bgAlpha ?? 1,
   };
@@ -95,7 +99,7 @@ export function renderPixel3d(f: Render3dFrame, px: number, row: number, data: U
       [c, a] = overBackground(ray, f.bg, f.bgAlpha);
     } else {
       const { o: origin, d, angle, hit } = tracePixel(f.plan, f.width, f.height, px + jx, py + jy, f.basis);
-      c = hit.hit ? shadeHit(f.plan, origin, d, angle, hit) : f.bg;
+      c = radiance(f.plan, f.env, origin, d, angle, hit);
       a = hit.hit ? 1 : f.bgAlpha;
     }
     for (let i = 0; i < 3; i++) sum[i]! += c[i]! * a;

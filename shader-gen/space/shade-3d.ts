@@ -134,17 +134,38 @@ const at = (p: Vec3, d: Vec3, t: number): Vec3 => [p[0] + d[0] * t, p[1] + d[1] 
 const dot = (a: Vec3, b: Vec3) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 const f = (plan: TracePlan, p: Vec3) => walk3d(plan, p[0], p[1], p[2], false).imageDistance;
 
-/** Linear colour of the hit `h` of the ray o + t·d (angle per pixel `angle`). */
-export function shadeHit(plan: TracePlan, o: Vec3, d: Vec3, angle: number, h: Hit3d): Rgb {
-  const scene: Scene3d = plan.scene;
-  const light = scene.lighting;
+/** Where a hit is: the point, its unit normal, its base colour (linear) and the tolerance ε there. */
+export interface Surface3d {
+  readonly p: Vec3;
+  readonly n: Vec3;
+  readonly base: Rgb;
+  readonly eps: number;
+}
+
+/** The surface at the hit `h` of the ray o + t·d (angle per pixel `angle`). */
+export function surfaceAt(plan: TracePlan, o: Vec3, d: Vec3, angle: number, h: Hit3d): Surface3d {
   const p = at(o, d, h.t);
   const eps = hitTolerance(plan, angle, h.t);
   let g: Vec3 = [0, 0, 0];
   for (const k of TETRA) g = at(g, k, f(plan, at(p, k, eps)));
-  const n = normalize(g);
+  const seed = plan.scene.seeds[h.seed]!;
+  const base = toLinear(baseColour(plan.scene.coloring, seed.color, h.depth, p, h.final));
+  return { p, n: normalize(g), base, eps };
+}
+
+/** Linear colour of the hit `h` of the ray o + t·d (angle per pixel `angle`), lit matte. */
+export function shadeHit(
+  plan: TracePlan,
+  o: Vec3,
+  d: Vec3,
+  angle: number,
+  h: Hit3d,
+  surface: Surface3d = surfaceAt(plan, o, d, angle, h),
+): Rgb {
+  const scene: Scene3d = plan.scene;
+  const light = scene.lighting;
+  const { p, n, base, eps } = surface;
   const seed = scene.seeds[h.seed]!;
-  const base = toLinear(baseColour(scene.coloring, seed.color, h.depth, p, h.final));
   const l = normalize(light.direction);
   const diff = Math.max(dot(n, l), 0);
   const half = normalize([l[0] - d[0], l[1] - d[1], l[2] - d[2]]);

@@ -58,11 +58,16 @@ export const hitTolerance = (plan: TracePlan, angle: number, t: number): number 
 
 const MISS: Hit3d = { hit: false, t: 0, depth: 0, seed: -1, final: [0, 0, 0], factor: 1, steps: 0 };
 
-/** Traces the ray o + t·d (d unit); `angle` is the angle per pixel. */
-export function traceRay(plan: TracePlan, o: Vec3, d: Vec3, angle: number): Hit3d {
+/**
+ * Traces the ray o + t·d (d unit) from t = max(tStart, where it enters the bounds); `angle` is the
+ * angle per pixel. A reflected ray starts at tStart = the path length so far, from an origin moved
+ * back along it by that much, so its hit tolerance keeps growing with the whole path
+ * (docs/math-3d.md "Mirror material").
+ */
+export function traceRay(plan: TracePlan, o: Vec3, d: Vec3, angle: number, tStart = 0): Hit3d {
   const span = plan.scene.seeds.length > 0 ? rayInterval(plan, o, d) : null;
   if (!span) return MISS;
-  let t = span[0];
+  let t = Math.max(span[0], tStart);
   const w = walkResult();
   for (let i = 0; i < plan.scene.marchSteps; i++) {
     const eps = hitTolerance(plan, angle, t);

@@ -12,7 +12,6 @@ import { finiteFormulaFunction } from '../../glsl/formula.glsl.ts';
 import { floatLiteral, intLiteral } from '../../glsl/literal.ts';
 import { type GlslFunction, glslFunction } from '../../glsl/snippet.ts';
 import type { SceneValues } from '../../glsl/values.ts';
-import { toLinear } from '../../srgb.ts';
 import { type TracePlan, UNBOUNDED_REACH } from '../plan.ts';
 import { seedSize } from '../seeds-3d.ts';
 import { AO_SAMPLES, AO_STEP, SHADOW_K, SHADOW_STEPS } from '../shade-3d.ts';
@@ -61,13 +60,13 @@ float hitTolerance(float angle, float t) {
   return glslFunction(
     'traceRay',
     `
-bool traceRay(vec3 o, vec3 d, float angle, out float t, out vec4 info, out vec3 fin) {
+bool traceRay(vec3 o, vec3 d, float angle, float tStart, out float t, out vec4 info, out vec3 fin) {
   t = 0.0;
   info = vec4(0.0, 0.0, -1.0, 1.0);
   fin = vec3(0.0);
   vec2 span;
   if (${hasSeeds ? '!rayInterval(o, d, span)' : 'true'}) return false;
-  t = span.x;
+  t = max(span.x, tStart);
   int steps = ${steps};
   float deScale = ${deScale};
   for (int i = 0; i < steps; ++i) {
@@ -188,7 +187,10 @@ function seedDataGlsl(scene: Scene3d, v: SceneValues): GlslFunction {
   return glslFunction('seedData', lines.join('\n'));
 }
 
-/** `vec3 shadeHit(vec3 o, vec3 d, float angle, float t, vec4 info, vec3 fin)`: ../shade-3d.ts shadeHit. */
+/**
+ * `vec3 shadeHit(vec3 o, vec3 d, float angle, float t, vec4 info, vec3 fin, out vec3 n, out vec3 base)`:
+ * ../shade-3d.ts surfaceAt (the normal n and linear base colour, out) and shadeHit.
+ */
 export function shadeGlsl(plan: TracePlan, v: SceneValues): GlslFunction {
   const { lighting: l, coloring } = plan.scene;
   const dir = v.vec('u_lightDirection', l.direction);
@@ -210,7 +212,7 @@ float imageDistance(vec3 p) {
   return glslFunction(
     'shadeHit',
     `
-vec3 shadeHit(vec3 o, vec3 d, float angle, float t, vec4 info, vec3 fin) {
+vec3 shadeHit(vec3 o, vec3 d, float angle, float t, vec4 info, vec3 fin, out vec3 n, out vec3 base) {
   vec3 p = o + d * t;
   float eps = hitTolerance(angle, t);
   vec3 g = vec3(1.0, -1.0, -1.0) * imageDistance(p + vec3(1.0, -1.0, -1.0) * eps)
@@ -218,9 +220,9 @@ vec3 shadeHit(vec3 o, vec3 d, float angle, float t, vec4 info, vec3 fin) {
     + vec3(-1.0, 1.0, -1.0) * imageDistance(p + vec3(-1.0, 1.0, -1.0) * eps)
     + vec3(1.0, 1.0, 1.0) * imageDistance(p + vec3(1.0, 1.0, 1.0) * eps);
   float glen = length(g);
-  vec3 n = glen > 0.0 ? g / glen : vec3(0.0);
+  n = glen > 0.0 ? g / glen : vec3(0.0);
   vec4 seed = seedData(info.z);
-  vec3 base = toLinear(baseColour(seed, info.y, p, fin));
+  base = toLinear(baseColour(seed, info.y, p, fin));
   vec3 l = normalize(${dir});
   vec4 terms = ${terms};
   vec2 extra = ${extra};
@@ -262,7 +264,3 @@ vec3 shadeHit(vec3 o, vec3 d, float angle, float t, vec4 info, vec3 fin) {
     [imageDistance, seedDataGlsl(plan.scene, v), baseColourGlsl(coloring, v), toLinearGlsl],
   );
 }
-
-/** The background in linear light. */
-export const backgroundGlsl = (scene: Scene3d, v: SceneValues): string =>
-  v.vec('u_background', toLinear(scene.background));

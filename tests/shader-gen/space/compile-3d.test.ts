@@ -22,7 +22,7 @@ import {
   validateShaders,
   webglIdentifierProblems,
 } from '../support/glslang.ts';
-import { exampleScenes3d, FIG11, LONE_SPHERE, MOBIUS_BOX, PLANES } from './scenes-3d.ts';
+import { exampleScenes3d, FIG11, LONE_SPHERE, MIRROR_FIG11, MOBIUS_BOX, PLANES } from './scenes-3d.ts';
 
 const PALETTE = { a: [0.5, 0.5, 0.5], b: [0.5, 0.5, 0.5], c: [1, 1, 1], d: [0, 0.33, 0.67] } as const;
 
@@ -58,6 +58,9 @@ const SCENES: Record<string, Scene3d> = {
   planes: PLANES,
   'no-seeds': { ...FIG11, seeds: [] },
   'no-elements': { ...LONE_SPHERE, elements: [] },
+  // docs/math-3d.md "Mirror material": the reflection loop, under the sky and the flat background.
+  mirror: MIRROR_FIG11,
+  'mirror-flat': { ...MIRROR_FIG11, environment: { mode: 'flat' } },
   ...Object.fromEntries(
     Object.entries(COLORINGS).map(([k, coloring]) => [`coloring-${k}`, { ...MOBIUS_BOX, coloring }]),
   ),
@@ -132,6 +135,26 @@ describe('compile3d', () => {
       'u_cameraTarget',
       'u_cameraFov',
     ]);
+  });
+
+  it('keeps the source when a reflectivity, the reflections or the sky colours change (uniforms)', () => {
+    const dragged: Scene3d = {
+      ...MIRROR_FIG11,
+      seeds: MIRROR_FIG11.seeds.map((s, k) => (k === 0 ? { ...s, reflectivity: 0.3 } : s)),
+      reflections: 4,
+      environment: { mode: 'sky', horizon: [1, 0, 0], ground: [0, 1, 0] },
+    };
+    const a = compile3d(MIRROR_FIG11);
+    const b = compile3d(dragged);
+    expect(b.source).toBe(a.source);
+    expect(b.uniforms).not.toEqual(a.uniforms);
+    expect(a.uniforms.map((u) => u.name)).toEqual(
+      expect.arrayContaining(['u_reflections', 'u_seedReflectivity0', 'u_horizon', 'u_ground']),
+    );
+    // A material or the kind of environment is structure: matte scenes carry no reflection loop.
+    const matte = { ...MIRROR_FIG11, seeds: MIRROR_FIG11.seeds.map(({ reflectivity: _, ...s }) => s) };
+    expect(compile3d(matte).source).not.toContain('seedReflectivity');
+    expect(compile3d(matte).source).not.toBe(a.source);
   });
 
   it('changes the source with the structure (another element kind)', () => {

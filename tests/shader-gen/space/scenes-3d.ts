@@ -126,6 +126,26 @@ export const PSEUDO_KLEINIAN = scene3d(
   { camera: { position: [1, -1, 0.9], target: [4, 2, -0.5], fovDeg: 60 }, maxIterations: 24 },
 );
 
+/**
+ * Fig. 11 with its seed a mirror (docs/math-3d.md "Mirror material") among four matte balls outside
+ * the inversion spheres, under the sky, two reflections.
+ */
+export const MIRROR_FIG11 = scene3d(
+  sixSpheres(),
+  [
+    { ...seedSphere([0, 0, 0], 0.7, [0.95, 0.95, 1]), reflectivity: 0.85 },
+    seedSphere([4.2, 0, 0.6], 0.6, [0.9, 0.3, 0.3], 'ball1'),
+    seedSphere([0, 4.2, -0.5], 0.6, [0.2, 0.7, 0.4], 'ball2'),
+    seedSphere([-4.2, 0, 0.4], 0.6, [0.3, 0.4, 0.9], 'ball3'),
+    seedSphere([0, -4.2, -0.3], 0.6, [0.9, 0.8, 0.2], 'ball4'),
+  ],
+  {
+    camera: { position: [3.1, -4.1, 1.2], target: [0, 0, 0], fovDeg: 50 },
+    environment: { mode: 'sky', horizon: [0.85, 0.9, 0.95], ground: [0.5, 0.45, 0.4] },
+    reflections: 2,
+  },
+);
+
 /** The scene3d of every 3D example. */
 export function exampleScenes3d(): Record<string, Scene3d> {
   const out: Record<string, Scene3d> = {};

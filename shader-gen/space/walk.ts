@@ -13,6 +13,7 @@
  * the end (with mirrored covers only for the covers below the running minimum). The walk also gives the seed-image
  * distance min over seeds of seedDistance(final)/factor, on which the tracer decides a hit.
  */
+import { budgetBound } from './budget-bound.ts';
 import { POLE_AT_INFINITY, type Pole3d, type Walk3dState } from './elements/element-3d-kind.ts';
 import { invertPoint, TINY_D2 } from './elements/invert.ts';
 import { ballDistance } from './elements/sphere-inversion.ts';
@@ -343,6 +344,8 @@ export function walk3d(
           poleDistance(st, pole),
         )
       : Number.POSITIVE_INFINITY;
+  // Out of budget: the drawn set is only what N steps reach, often far nearer than the orbit's bound.
+  if (!escaped && out.de < Number.POSITIVE_INFINITY) out.de = budgetBound(plan, x, y, z, seeds, out.de);
   out.depth = st.depth;
   out.seed = nearest.seed;
   out.x = st.x;

@@ -63,6 +63,12 @@ export interface CpuElement3d<E extends Element3d = Element3d> {
    * bound (docs/math-3d.md "§8 The tracer's distance bound"). Absent for the other kinds.
    */
   mirror?(e: E, x: number, y: number, z: number, out: Walk3dState): number;
+  /**
+   * A lower bound of the distance from (x, y, z) to the boundary of the element's region, on either
+   * side, for the bound of a walk that ran out of budget (docs/math-3d.md "The bound when the budget
+   * runs out"). Absent: that bound is not formed for scenes with the kind.
+   */
+  boundaryDistance?(e: E, x: number, y: number, z: number): number;
 }
 
 export interface GlslElement3d<E extends Element3d = Element3d> {

@@ -36,6 +36,7 @@ export const planeReflection: ElementRecord3d<PlaneReflection> = {
       return true;
     },
     regionDistance: (e, x, y, z) => Math.max(0, signed(e, x, y, z)),
+    boundaryDistance: (e, x, y, z) => Math.abs(signed(e, x, y, z)),
     mirror(e, x, y, z, out) {
       const sd = signed(e, x, y, z);
       const [nx, ny, nz] = e.plane.normal;

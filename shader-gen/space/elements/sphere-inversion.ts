@@ -33,6 +33,11 @@ export const sphereInversion: ElementRecord3d<SphereInversion> = {
       return true;
     },
     regionDistance: (e, x, y, z) => ballDistance(x, y, z, e.sphere.center, e.sphere.radius),
+    // ||x − c| − r|: the distance to the sphere, from inside or outside.
+    boundaryDistance: (e, x, y, z) => {
+      const [cx, cy, cz] = e.sphere.center;
+      return Math.abs(Math.sqrt(dist2(x, y, z, cx, cy, cz)) - e.sphere.radius);
+    },
     mirror(e, x, y, z, out) {
       const [cx, cy, cz] = e.sphere.center;
       const r2 = e.sphere.radius * e.sphere.radius;

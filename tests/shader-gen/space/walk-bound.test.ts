@@ -498,7 +498,8 @@ describe('the tracer bound (docs/math-3d.md §8)', () => {
       for (const rho of SHELLS.filter((r) => r < 1))
         for (const p of PROBES) {
           const s = sampleSpace(scene, add3(k.x, scale3(p, rho * de)));
-          expect(s.escaped && s.distance !== null && s.distance < 0).toBe(false);
+          // Drawn: the walk ends inside the tile within the budget, at its last step too.
+          expect(s.distance !== null && s.distance < 0).toBe(false);
         }
     });
     expect(tested).toBeGreaterThan(20);

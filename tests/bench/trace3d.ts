@@ -10,7 +10,7 @@
  */
 import { fileURLToPath } from 'node:url';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
-import { cameraUniforms, compile3d } from '../../shader-gen/space/compile-3d.ts';
+import { cameraUniforms, compile3d, type Variant3d } from '../../shader-gen/space/compile-3d.ts';
 import { GpuProbe } from '../parity/gpu-probe.ts';
 import { exampleScenes3d } from '../shader-gen/space/scenes-3d.ts';
 import { HAND_WRITTEN_3D } from './hand-written/trace3d.ts';
@@ -27,10 +27,23 @@ export function hitMissDiffer(a: Float32Array, b: Float32Array): number {
   return differ / (a.length / 4);
 }
 
-async function benchScene(gpu: GpuProbe, name: string, scene: Scene3d, hand: string, rounds: number) {
+/**
+ * One row: U, B and H interleaved for `rounds`, medians, ratios, how many pixels B and H differ on
+ * (`differ`), and one colour frame. `variant` is the generated program's probe output ('probe' for
+ * the tracer, 'volume-probe' for the volume renderer, volume3d.ts).
+ */
+export async function benchScene(
+  gpu: GpuProbe,
+  name: string,
+  scene: Scene3d,
+  hand: string,
+  rounds: number,
+  variant: Variant3d = 'probe',
+  differ: (a: Float32Array, b: Float32Array) => number = hitMissDiffer,
+) {
   const camera = cameraUniforms(scene.camera);
-  const u = compile3d(scene, { variant: 'probe' });
-  const b = compile3d(scene, { variant: 'probe', bake: true });
+  const u = compile3d(scene, { variant });
+  const b = compile3d(scene, { variant, bake: true });
   const programs = {
     uniform: { index: await gpu.program(u.vertexSource, u.source), uniforms: [...u.uniforms, ...camera] },
     baked: { index: await gpu.program(b.vertexSource, b.source), uniforms: [...b.uniforms, ...camera] },
@@ -38,7 +51,7 @@ async function benchScene(gpu: GpuProbe, name: string, scene: Scene3d, hand: str
   };
   const frame = (p: (typeof programs)['hand']) =>
     gpu.render(p.index, p.uniforms, { center: [0, 0], scale: 1 });
-  // One warm-up frame each (SwiftShader finishes its JIT on the first draw); B and H kept for hit/miss.
+  // One warm-up frame each (SwiftShader finishes its JIT on the first draw); B and H kept to compare.
   await frame(programs.uniform);
   const bakedImage = await frame(programs.baked);
   const handImage = await frame(programs.hand);
@@ -56,7 +69,7 @@ async function benchScene(gpu: GpuProbe, name: string, scene: Scene3d, hand: str
     ms(median(t.hand)),
     times(medianRatio(t.baked, t.hand)),
     times(medianRatio(t.uniform, t.hand)),
-    `${(100 * hitMissDiffer(bakedImage.data, handImage.data)).toFixed(2)} %`,
+    `${(100 * differ(bakedImage.data, handImage.data)).toFixed(2)} %`,
     ms(colourMs),
   ];
 }

@@ -270,17 +270,23 @@ function walkElements(plan: TracePlan, st: Walk3dState): boolean {
 const scratchPole: Pole3d = { x: 0, y: 0, z: 0 };
 const scratch: Walk3dState = { x: 0, y: 0, z: 0, s: 1, depth: 0, pole: null };
 
-/**
- * The depth alone of (x, y, z): the same IIS steps as walk3d (the same element order and budget),
- * without the pole, the seeds or the bound — what the volume renderer samples (volume-3d.ts).
- */
-export function walkDepth3d(plan: TracePlan, x: number, y: number, z: number): number {
+/** The shared walk state, set to the start of a walk from (x, y, z): scale 1, depth 0. */
+function startWalk(x: number, y: number, z: number): Walk3dState {
   const st = scratch;
   st.x = x;
   st.y = y;
   st.z = z;
   st.s = 1;
   st.depth = 0;
+  return st;
+}
+
+/**
+ * The depth alone of (x, y, z): the same IIS steps as walk3d (the same element order and budget),
+ * without the pole, the seeds or the bound — what the volume renderer samples (volume-3d.ts).
+ */
+export function walkDepth3d(plan: TracePlan, x: number, y: number, z: number): number {
+  const st = startWalk(x, y, z);
   st.pole = null;
   if (plan.inversionRows) walkInversions(plan.inversionRows, plan.scene.maxIterations, st);
   else walkElements(plan, st);
@@ -314,12 +320,7 @@ export function walk3d(
   out: Walk3dResult = walkResult(),
   hitBelow = Number.NEGATIVE_INFINITY,
 ): Walk3dResult {
-  const st = scratch;
-  st.x = x;
-  st.y = y;
-  st.z = z;
-  st.s = 1;
-  st.depth = 0;
+  const st = startWalk(x, y, z);
   const pole = bound ? scratchPole : null;
   if (pole) {
     pole.x = POLE_AT_INFINITY;

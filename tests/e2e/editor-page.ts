@@ -37,10 +37,28 @@ async function centre(locator: ReturnType<Page['locator']>) {
   return { x: b.x + b.width / 2, y: b.y + b.height / 2 };
 }
 
+/**
+ * The centre of `locator` once it stays put across two animation frames: a node just added may
+ * still be moving (the canvas pans to keep it in view), and a drop aimed at where a handle was
+ * lands beside it.
+ */
+async function restingCentre(page: Page, locator: ReturnType<Page['locator']>) {
+  const frames = () =>
+    page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  let last = await centre(locator);
+  for (let i = 0; i < 100; i++) {
+    await frames();
+    const now = await centre(locator);
+    if (now.x === last.x && now.y === last.y) return now;
+    last = now;
+  }
+  return last;
+}
+
 /** Drags a wire from an output handle to an input handle with real pointer moves. */
 export async function drag(page: Page, from: ReturnType<Page['locator']>, to: ReturnType<Page['locator']>) {
-  const a = await centre(from);
-  const b = await centre(to);
+  const a = await restingCentre(page, from);
+  const b = await restingCentre(page, to);
   await page.mouse.move(a.x, a.y);
   await page.mouse.down();
   await page.mouse.move((a.x + b.x) / 2, (a.y + b.y) / 2, { steps: 4 });

@@ -3,7 +3,8 @@
  * their bounding ball, CPU and GLSL twins. Sphere: |x − c| − r. Box (centre c, half-extents h): with
  * q = |x − c| − h per axis, |max(q, 0)| + min(max(q.x, q.y, q.z), 0) (exact, negative inside).
  * Sphairahedron tile: nodes/geometry/space/sphairahedron-tile.ts (docs/math-3d.md "The tile as a seed").
- * GLSL packing per seed: sphere and box 2 vec4, (c, r or 0), (h or 0, kind: 0 sphere / 1 box);
+ * GLSL packing per seed: sphere and box 2 vec4, (c, r or 0), (h or 0, kind: 0 sphere / 1 box — the
+ * GLSL function is chosen by kind when generated, so the flag is only the packing's);
  * tile 9 vec4 (packTile), read by `tileDistance`.
  */
 import type { Seed3d } from '../../nodes/core/scene-3d.ts';
@@ -96,8 +97,7 @@ float ${name}(vec3 p, vec4 a, vec4 k) {
   float ball = len - a.w;
   vec3 q = ball < 0.0 ? u : u * (a.w / max(len, 1e-30));
   float f = (${body.expr}) / k.w;
-  if (ball < 0.0) return isnan(f) ? 0.0 : max(f, ball);
-  return isnan(f) ? ball : max(ball, f - ball);
+  return ball < 0.0 ? (isnan(f) ? 0.0 : max(f, ball)) : (isnan(f) ? ball : max(ball, f - ball));
 }`,
     body.deps,
   );
@@ -105,22 +105,40 @@ float ${name}(vec3 p, vec4 a, vec4 k) {
 
 /**
  * The GLSL call giving seed `index`'s distance at `p` from its packed rows (the functions:
- * seedGlslFunctions): `seedDistance` for spheres and boxes, `tileDistance` for a tile, the
- * solid's own function for a formula seed.
+ * seedGlslFunctions): chosen by the seed's kind when the program is generated (the kind is part of
+ * the scene's structure, so a sphere never pays for the box's formula, and no function branches on
+ * a packed kind flag).
  */
 export const seedDistanceCall = (seed: Seed3d, index: number, rows: readonly string[]): string =>
-  `${seed.kind === 'tile' ? 'tileDistance' : seed.kind === 'formula' ? `seedSolid${index}` : 'seedDistance'}(p, ${rows.join(', ')})`;
+  seed.kind === 'sphere'
+    ? `sphereSeedDistance(p, ${rows[0]})`
+    : `${seed.kind === 'tile' ? 'tileDistance' : seed.kind === 'formula' ? `seedSolid${index}` : 'boxSeedDistance'}(p, ${rows.join(', ')})`;
 
-/** GLSL `seedDistance(p, a, b)` over the packing above (a box when b.w > 0.5). */
-export const seedDistanceGlsl = glslFunction(
-  'seedDistance',
+/*
+ * Why every seed function below has one exit and chooses with `?:` instead of `if … return`:
+ * SwiftShader (WebGL without a GPU) inlines these functions into every call site, and its compile
+ * time grew about fivefold with each further call of a function with an early return — the
+ * Fig. 37 scene (nine seeds) did not finish compiling in minutes, the same scene written with
+ * selects compiles in 0.1 s (docs/math-3d.md "Mirror material"; `npm run bench`, "First draw",
+ * times every example). The two sides of a select are cheap here.
+ */
+
+/** GLSL `sphereSeedDistance(p, a)`: |p − c| − r over the sphere's row (c, r). */
+export const sphereSeedGlsl = glslFunction(
+  'sphereSeedDistance',
   `
-float seedDistance(vec3 p, vec4 a, vec4 b) {
-  if (b.w > 0.5) {
-    vec3 q = abs(p - a.xyz) - b.xyz;
-    return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);
-  }
+float sphereSeedDistance(vec3 p, vec4 a) {
   return length(p - a.xyz) - a.w;
+}`,
+);
+
+/** GLSL `boxSeedDistance(p, a, b)`: the exact box distance over its rows (c, 0), (h, 1). */
+export const boxSeedGlsl = glslFunction(
+  'boxSeedDistance',
+  `
+float boxSeedDistance(vec3 p, vec4 a, vec4 b) {
+  vec3 q = abs(p - a.xyz) - b.xyz;
+  return length(max(q, 0.0)) + min(max(q.x, max(q.y, q.z)), 0.0);
 }`,
 );
 
@@ -135,14 +153,10 @@ export const tileDistanceGlsl = glslFunction(
   'tileDistance',
   `
 float tileDistance(vec3 p, vec4 inv, vec4 cut, ${[...planeRows, ...ballRows].join(', ')}) {
-  vec3 q = p;
-  float far = 1.0;
   float r2 = inv.w * inv.w;
-  if (inv.w > 0.0) {
-    vec3 v = p - inv.xyz;
-    far = max(dot(v, v), 1e-24);
-    q = inv.xyz + (r2 / far) * v;
-  }
+  vec3 v = p - inv.xyz;
+  float far = inv.w > 0.0 ? max(dot(v, v), 1e-24) : 1.0;
+  vec3 q = inv.w > 0.0 ? inv.xyz + (r2 / far) * v : p;
   float d = cut.x - q.z;
   float column = ${floatLiteral(1e30)};
 ${Array.from({ length: TILE_PLANES }, (_, k) => `  d = max(d, f${k}.w - dot(f${k}.xyz, q));`).join('\n')}
@@ -155,15 +169,15 @@ ${Array.from(
   }`,
 ).join('\n')}
   d = max(d, column);
-  if (inv.w <= 0.0) return d;
   float f = sqrt(far);
-  return f * d / (r2 / f + max(d, 0.0));
+  return inv.w > 0.0 ? f * d / (r2 / f + max(d, 0.0)) : d;
 }`,
 );
 
 /** The GLSL functions the seeds' distance calls need. */
 export const seedGlslFunctions = (seeds: readonly Seed3d[]): GlslFunction[] => [
-  seedDistanceGlsl,
+  ...(seeds.some((s) => s.kind === 'sphere') ? [sphereSeedGlsl] : []),
+  ...(seeds.some((s) => s.kind === 'box') ? [boxSeedGlsl] : []),
   ...(seeds.some((s) => s.kind === 'tile') ? [tileDistanceGlsl] : []),
   ...seeds.flatMap((s, k) => (s.kind === 'formula' ? [solidGlsl(s, k)] : [])),
 ];

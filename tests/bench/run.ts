@@ -17,6 +17,7 @@ const BENCHES = [
   './editor.ts',
   './animation.ts',
   './trace3d.ts',
+  './first-draw3d.ts',
   './volume3d.ts',
   './cpu3d.ts',
   './cpu-volume.ts',

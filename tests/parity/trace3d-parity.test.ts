@@ -97,14 +97,6 @@ const examples = exampleScenes3d();
 /** Examples the GPU cannot draw like the CPU yet (see where they are left out below). */
 const GPU_LACKS_BUDGET_BOUND = ['fig28b-tiling-step-2', 'fig28c-tiling-step-5', 'fig28d-tiling-step-20'];
 /**
- * Too slow for SwiftShader: Fig. 37's nine-seed scene (a mirror among eight bubbles far outside the
- * mirrors). Its first four seeds already took minutes for an 8 × 6 probe draw, while the first two
- * took 0.25 s and indras-bubbles' five 3.5 s; a 96 × 72 draw took 225 s, agreed on 90 % of pixels
- * and lost the context for the files after it. Not understood yet (docs/math-3d.md "Mirror material").
- */
-const SWIFTSHADER_TOO_SLOW = ['fig37-indras-bubbles-mirror'];
-
-/**
  * The examples with their own geometry: the first of those that differ only in colouring (the
  * Figs. 33–34 quasi-spheres are Fig. 26's), since hit, depth and seed do not depend on colour.
  */
@@ -132,7 +124,7 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
   // Not yet on the GPU: the infinite tiling after 2, 5, 20 inversions needs the bound of a walk that
   // ran out of budget (docs/math-3d.md "The bound when the budget runs out"), which only the CPU
   // walk has; the GPU's march runs out of steps near the terrain (65 %, 34 % agreement when tried; too few robust pixels at 20).
-  for (const name of [...GPU_LACKS_BUDGET_BOUND, ...SWIFTSHADER_TOO_SLOW]) delete scenes[name];
+  for (const name of GPU_LACKS_BUDGET_BOUND) delete scenes[name];
   // Nothing to trace: a limit set without seeds is dots painted over the picture on the CPU
   // (tests/shader-gen/space/limit-dfs-3d.test.ts, tests/cli/render-limit-set.test.ts).
   for (const [name, s] of Object.entries(scenes)) if (s.seeds.length === 0 && !s.volume) delete scenes[name];

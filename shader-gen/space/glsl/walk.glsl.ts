@@ -114,7 +114,7 @@ function endDistanceStatements(placed: PlacedWalk): string[] {
     ...new Set(placed.elements.flatMap(({ record }) => (record.glsl.mirror ? [record.kind] : []))),
   ];
   const lines = [
-    `  float de = max(0.0, ${seedsMin(placed)});`,
+    `  float de = max(0.0, sd);`,
     `  float second = ${GLSL_FAR};`,
     '  int nearest = -1;',
     '  int nearestKind = -1;',

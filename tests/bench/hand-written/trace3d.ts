@@ -19,6 +19,7 @@ const read = (file: string) => readFileSync(new URL(`./${file}`, import.meta.url
 export const HAND_WRITTEN_3D: readonly HandWrittenTracer[] = [
   { example: 'fig11-sphere-inversion-fractal', source: read('fig11-fast.frag') },
   { example: 'fig26-quasi-sphere', source: read('fig26-fast.frag') },
+  { example: 'fig37-indras-bubbles-mirror', source: read('fig37-fast.frag') },
 ];
 
 /**

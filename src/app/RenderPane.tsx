@@ -153,7 +153,6 @@ export function RenderPane({
       const width = el.clientWidth;
       const height = el.clientHeight;
       setSize({ width, height });
-      viewport.current?.setSize(width, height, window.devicePixelRatio || 1);
     });
     observer.observe(el);
     return () => observer.disconnect();
@@ -237,25 +236,6 @@ export function RenderPane({
     viewport.current?.setCamera(camera3d.camera);
   }, [camera3d.camera]);
 
-  // After the effects that hand the viewport its scene and view: the probe reads what is on screen.
-  const space = useMemo(
-    () => (scene3d ? { scene: scene3d, camera: camera3d.camera } : null),
-    [scene3d, camera3d.camera],
-  );
-  const inspected = usePixelInspect({
-    pane,
-    viewport,
-    evaluation,
-    view,
-    space,
-    width: size.width,
-    height: size.height,
-    mode: inspecting,
-    onModeOff: onInspectingOff,
-  });
-
-  // The hints tell an editor what to wire next: nothing for an audience (read-only), where a
-  // presentation's early steps have no mirrors yet by design.
   const spaceTarget = useMemo(() => spaceViewTarget(doc), [doc]);
   // The parameter-space view (docs/math-3d.md "The parameter-space view"): alone, or beside the
   // 3D picture when wide, else one of the two by the pane's switch (side by side by default).
@@ -271,6 +251,34 @@ export function RenderPane({
         : wide
           ? 'both'
           : '3d';
+  // Side by side, the 3D picture (canvas, overlays, handles, Explain pixel) is the pane's left half,
+  // so none of it lies under the parameter-space view on the right.
+  const half = shows === 'both';
+  const stageWidth = half ? Math.floor(size.width / 2) : size.width;
+  const stage = useMemo(() => ({ width: stageWidth, height: size.height }), [stageWidth, size.height]);
+  useEffect(() => {
+    if (stage.width > 0) viewport.current?.setSize(stage.width, stage.height, window.devicePixelRatio || 1);
+  }, [stage]);
+
+  // After the effects that hand the viewport its scene and view: the probe reads what is on screen.
+  const space = useMemo(
+    () => (scene3d ? { scene: scene3d, camera: camera3d.camera } : null),
+    [scene3d, camera3d.camera],
+  );
+  const inspected = usePixelInspect({
+    pane,
+    viewport,
+    evaluation,
+    view,
+    space,
+    width: stage.width,
+    height: stage.height,
+    mode: inspecting,
+    onModeOff: onInspectingOff,
+  });
+
+  // The hints tell an editor what to wire next: nothing for an audience (read-only), where a
+  // presentation's early steps have no mirrors yet by design.
   const hint = useMemo(
     () => (readOnly || spaceTarget ? null : renderHint(doc, evaluation, registry)),
     [readOnly, doc, evaluation, spaceTarget],
@@ -284,17 +292,27 @@ export function RenderPane({
       ref={pane}
       data-testid="render-pane"
     >
-      <canvas ref={canvas} className="kf-render__canvas" aria-label="Rendered picture" />
+      <canvas
+        ref={canvas}
+        className="kf-render__canvas"
+        aria-label="Rendered picture"
+        style={half ? { width: stage.width } : undefined}
+      />
       {size.width > 0 && scene3d && shows !== 'space' && (
-        <LimitSetOverlay3d scene={scene3d} camera={camera3d.camera} width={size.width} height={size.height} />
+        <LimitSetOverlay3d
+          scene={scene3d}
+          camera={camera3d.camera}
+          width={stage.width}
+          height={stage.height}
+        />
       )}
       {size.width > 0 && scene3d && shows !== 'space' && (
         <RenderOverlay3d
           evaluation={evaluation}
           scene={scene3d}
           camera={camera3d.camera}
-          width={size.width}
-          height={size.height}
+          width={stage.width}
+          height={stage.height}
           hoveredNodeIds={hoveredNodeIds}
           onHoverNode={onHoverNode}
           onPreview={(patches) => store.preview(patchChange(patches))}
@@ -333,7 +351,7 @@ export function RenderPane({
       {(bounds || is3d) && shows !== 'space' && (
         <button
           type="button"
-          className="kf-button kf-render__fit"
+          className={`kf-button kf-render__fit${half ? ' kf-render__fit--half' : ''}`}
           title={is3d ? "Back to the render node's camera (F)" : 'Show the whole picture (F)'}
           ref={paneButton}
           onClick={fit}

@@ -136,3 +136,51 @@ describe.each([
     await page.context().close();
   }, 300_000);
 });
+
+describe('sphairahedron parameter space, side by side on a wide screen (1920×1080)', () => {
+  it('shows the view beside the 3D picture by default, a click there moves the 3D graph’s parameter', async () => {
+    const page = await open(1920, 1080);
+    const pane = page.getByTestId('render-pane');
+    // At first the editor takes most of the width and the view takes turns with the 3D picture;
+    // widening the render pane with the divider's keys (as a keyboard user would) makes room.
+    const sideBySide = page.getByRole('button', { name: 'Side by side', exact: true });
+    expect(await sideBySide.count()).toBe(0);
+    await page.getByRole('separator', { name: 'Resize panes' }).focus();
+    for (let i = 0; i < 40 && ((await pane.boundingBox())?.width ?? 0) < 960; i++)
+      await page.keyboard.press('ArrowLeft');
+    const paneBox = (await pane.boundingBox())!;
+    expect(paneBox.width).toBeGreaterThanOrEqual(900);
+    // Wide enough: the switch offers "Side by side", and it is what the pane shows.
+    const both = sideBySide;
+    await expect.poll(() => both.getAttribute('aria-pressed')).toBe('true');
+    const view = page.getByTestId('space-view');
+    await view.and(page.locator('[data-done="yes"]')).waitFor({ timeout: 120_000 });
+    await expect.poll(() => status(page)).toContain('tunnels');
+    // The view takes the right half; the 3D picture's canvas and its handles stay on the left.
+    const viewBox = (await view.boundingBox())!;
+    expect(viewBox.x).toBeGreaterThanOrEqual(paneBox.x + paneBox.width * 0.45);
+    expect(viewBox.x + viewBox.width).toBeLessThanOrEqual(paneBox.x + paneBox.width + 1);
+    // The 3D picture is the left half: its canvas and overlay end where the view begins, so no part
+    // of the picture or its handles is hidden under the view.
+    const canvasBox = (await page.locator('canvas[aria-label="Rendered picture"]').boundingBox())!;
+    const overlayBox = (await page.getByRole('group', { name: /3D construction overlay/ }).boundingBox())!;
+    for (const box of [canvasBox, overlayBox]) {
+      expect(box.x).toBeLessThanOrEqual(paneBox.x + 1);
+      expect(box.x + box.width).toBeLessThanOrEqual(viewBox.x + 1);
+      expect(box.width).toBeGreaterThan(paneBox.width * 0.45);
+    }
+    const reset = (await page.getByRole('button', { name: 'Reset view' }).boundingBox())!;
+    expect(reset.x + reset.width).toBeLessThanOrEqual(viewBox.x);
+    await clickAt(page, 0.8, 0.3);
+    await expect.poll(() => status(page)).toContain('valid');
+    const [zb, zc] = await params(page);
+    expect(Math.abs(zb! - 0.8)).toBeLessThan(0.06);
+    expect(Math.abs(zc! - 0.3)).toBeLessThan(0.06);
+    // Both stay on screen: still side by side after the edit.
+    expect(await both.getAttribute('aria-pressed')).toBe('true');
+    const violations = readable(await audit(page));
+    expect(violations, violations).toBe('');
+    await pane.screenshot({ path: 'examples/screenshots/sphairahedron-space-side-by-side.png' });
+    await page.context().close();
+  }, 300_000);
+});

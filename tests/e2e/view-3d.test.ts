@@ -141,7 +141,7 @@ describe('3D view', () => {
     await expect.poll(() => page.evaluate(() => window.__kleinflow!.viewport!.stats.samples), SLOW).toBe(1);
     await page.getByRole('button', { name: 'Reset view' }).waitFor();
     expect(await page.getByRole('button', { name: 'Fit', exact: true }).count()).toBe(0);
-    expect(await page.getByRole('img', { name: /3D construction overlay/ }).count()).toBe(1);
+    expect(await page.getByRole('group', { name: /3D construction overlay/ }).count()).toBe(1);
     expect(await page.locator('[data-handle="seed/center"]').count()).toBe(1);
     initial = await renderPixels(page);
     expect(initial.sd).toBeGreaterThan(8); // a picture, not a flat background

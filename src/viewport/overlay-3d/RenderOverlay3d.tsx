@@ -173,11 +173,13 @@ export function RenderOverlay3d(props: RenderOverlay3dProps): JSX.Element {
       width={width}
       height={height}
       viewBox={`0 0 ${width} ${height}`}
-      role="img"
+      // A group when its handles take the focus (an img's children are hidden from screen readers,
+      // and a focusable handle inside an img is the nested control axe-core reports).
+      role={keyboard && handles.length > 0 ? 'group' : 'img'}
       aria-label={
         readOnly
           ? '3D construction overlay (read-only)'
-          : '3D construction overlay: drag the handles to move points and spheres'
+          : '3D construction overlay: drag the handles, or focus one and use the arrow keys (Page Up and Page Down along the line of sight), to move points and spheres'
       }
       style={{
         position: 'absolute',

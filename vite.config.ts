@@ -5,4 +5,6 @@ export default defineConfig({
   server: { host: '127.0.0.1', port: 5173 },
   preview: { host: '127.0.0.1' },
   build: { target: 'es2022', chunkSizeWarningLimit: 1500 },
+  // Module workers (the 3D limit-set search, src/viewport/overlay-3d/limit-set-worker.ts).
+  worker: { format: 'es' },
 });

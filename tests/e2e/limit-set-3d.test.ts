@@ -54,6 +54,8 @@ describe('the limit set of a quaternion Kleinian group in the 3D view', () => {
     await expect.poll(async () => (await dotPixels()).count, SLOW).toBeGreaterThan(200);
     const before = await dotPixels();
     expect(before.width).toBeGreaterThan(50);
+    // Searched in the worker, not on the main thread (which froze the editor for up to a second).
+    expect(await page.getByTestId('limit-set-overlay').getAttribute('data-search')).toBe('worker');
     await page.evaluate(() =>
       window.__kleinflow!.store.dispatchSilently({
         type: 'set-camera-3d',

@@ -46,37 +46,99 @@ export type CayleyGraph =
 const GRID = 64;
 
 /**
- * An interior point of the fundamental tile: over a 64 × 64 grid of the view, the point outside
- * every element's inside (and inside the clip disk) with the best clearance — its distance to the
- * nearest mirror, the clip circle and the view's edge — weighted by 1 − ρ, ρ its distance from
- * the view centre over the half diagonal, so that of two parts of the tile (the bounded hole in a
- * ring of disks and the outside) the one in the middle of the picture wins.
+ * An interior point of the fundamental tile, the same wherever the view is as long as that part of
+ * the tile is in it (so the Cayley graph's vertices stay on their tiles while the view pans):
+ * 1. over a 64 × 64 grid of the view, the points outside every element's inside (and inside the
+ *    clip disk), ranked by their clearance — the distance to the nearest mirror, the clip circle
+ *    and the view's edge — weighted by 1 − ρ, ρ the distance from the view centre over the half
+ *    diagonal, so that parts of the tile in the middle of the picture come first;
+ * 2. from the best few, a local search climbs the clearance without the view's terms (nearest
+ *    mirror and clip circle) to its maximum in that part: the centre of the largest disk that fits
+ *    in it, which does not depend on the view. The first climb, in rank order, that ends in the
+ *    view gives the point (else the first that ends anywhere near); a part with no maximum (the
+ *    unbounded outside of a ring of disks) lets the climb run away and is skipped. When every
+ *    climb runs away, the best grid point is kept (then the point follows the view).
  */
 export function autoBase(scene: Pick<Scene, 'elements' | 'clip' | 'view'>, aspect = 1): Vec2 | null {
   const { elements, kinds } = prepare(scene.elements);
   const { center, scale } = scene.view;
   const hw = (scale * aspect) / 2;
   const hh = scale / 2;
-  let best: Vec2 | null = null;
-  let bestScore = 0;
+  /** Distance to the nearest mirror and to the clip circle; ≤ 0 outside the fundamental tile. */
+  const clearance = (x: number, y: number): number => {
+    if (elements.some((e, k) => kinds[k].inside(e, x, y))) return 0;
+    let c = Number.POSITIVE_INFINITY;
+    if (scene.clip) c = scene.clip.r - Math.hypot(x - scene.clip.c[0], y - scene.clip.c[1]);
+    for (let k = 0; k < elements.length; k++) c = Math.min(c, kinds[k].boundaryDistance(elements[k], x, y));
+    return c;
+  };
+  const ranked: { at: Vec2; score: number }[] = [];
   for (let i = 0; i < GRID; i++) {
     for (let j = 0; j < GRID; j++) {
       const x = center[0] - hw + ((i + 0.5) / GRID) * 2 * hw;
       const y = center[1] - hh + ((j + 0.5) / GRID) * 2 * hh;
-      if (elements.some((e, k) => kinds[k].inside(e, x, y))) continue;
-      let score = Math.min(hw - Math.abs(x - center[0]), hh - Math.abs(y - center[1]));
-      if (scene.clip)
-        score = Math.min(score, scene.clip.r - Math.hypot(x - scene.clip.c[0], y - scene.clip.c[1]));
-      for (let k = 0; k < elements.length; k++)
-        score = Math.min(score, kinds[k].boundaryDistance(elements[k], x, y));
-      score *= 1 - Math.hypot(x - center[0], y - center[1]) / Math.hypot(hw, hh);
-      if (score > bestScore) {
-        bestScore = score;
-        best = [x, y];
-      }
+      const c = clearance(x, y);
+      if (c <= 0) continue;
+      const edge = Math.min(hw - Math.abs(x - center[0]), hh - Math.abs(y - center[1]));
+      const score = Math.min(c, edge) * (1 - Math.hypot(x - center[0], y - center[1]) / Math.hypot(hw, hh));
+      if (score > 0) ranked.push({ at: [x, y], score });
     }
   }
-  return best;
+  if (ranked.length === 0) return null;
+  ranked.sort((a, b) => b.score - a.score);
+  const cell = (2 * hh) / GRID;
+  const inView = (p: Vec2) => Math.abs(p[0] - center[0]) <= hw && Math.abs(p[1] - center[1]) <= hh;
+  /** A climb that leaves this box ran away: the part has no maximum near the view. */
+  const near = (p: Vec2) => Math.abs(p[0] - center[0]) <= 8 * hw && Math.abs(p[1] - center[1]) <= 8 * hh;
+  let fallback: Vec2 | null = null;
+  for (const { at } of ranked.slice(0, CLIMB_STARTS)) {
+    const top = climb(at, clearance, cell, near);
+    if (top && inView(top)) return top;
+    fallback ??= top;
+  }
+  return fallback ?? ranked[0]!.at;
+}
+
+/** Grid points from which autoBase climbs (the best ranked). */
+const CLIMB_STARTS = 12;
+/** The local search's window: (2·WINDOW + 1)² points h apart around the current point. */
+const WINDOW = 3;
+const CLIMB_ROUNDS = 300;
+
+/**
+ * Local search for the maximum of `f` from `start`: move to the best of the (2·WINDOW + 1)² points
+ * spaced h around the current one, halve h when the current one is best, until h < 10⁻¹⁰ of the
+ * first step. A window of points in many directions follows the ridges of a minimum of distances,
+ * where a compass search stalls. Null when the walk leaves `near` (no maximum there).
+ */
+function climb(
+  start: Vec2,
+  f: (x: number, y: number) => number,
+  step: number,
+  near: (p: Vec2) => boolean,
+): Vec2 | null {
+  let at: Vec2 = start;
+  let value = f(at[0], at[1]);
+  let h = step;
+  for (let round = 0; round < CLIMB_ROUNDS && h > step * 1e-10; round++) {
+    let best = at;
+    for (let i = -WINDOW; i <= WINDOW; i++) {
+      for (let j = -WINDOW; j <= WINDOW; j++) {
+        const p: Vec2 = [at[0] + i * h, at[1] + j * h];
+        const v = f(p[0], p[1]);
+        if (v > value) {
+          value = v;
+          best = p;
+        }
+      }
+    }
+    if (best === at) h /= 2;
+    else {
+      at = best;
+      if (!near(at)) return null;
+    }
+  }
+  return at;
 }
 
 const outside = (clip: Circle | null, p: Vec2) =>

@@ -5,8 +5,9 @@
  */
 import type { Scene } from '../../nodes/core/scene.ts';
 import type { Circle, Color, Vec2 } from '../../nodes/core/values.ts';
+import type { View } from '../../nodes/core/view.ts';
 import { circleThrough3, invertPoint } from '../../nodes/geometry/circle.ts';
-import { cayleyGraph } from './cayley.ts';
+import { autoBase, cayleyGraph } from './cayley.ts';
 import { limitSetDfs } from './limit-dfs.ts';
 
 export interface FigureStroke {
@@ -77,8 +78,18 @@ export function edgePath(p: Vec2, q: Vec2, clip: Circle | null): Vec2[] {
   return out;
 }
 
-/** The figures of the scene for an output of width × height pixels at the scene's view. */
-export function figureLayer(scene: Scene, width: number, height: number): FigureLayer {
+/**
+ * The figures of the scene for an output of width × height pixels at the scene's view. The Cayley
+ * graph's automatic base point is chosen in `baseView` (default: the scene's view): the live
+ * overlay passes the document's view while it draws at the view being panned, so the graph's
+ * vertices stay on their tiles during a pan instead of sliding with the view.
+ */
+export function figureLayer(
+  scene: Scene,
+  width: number,
+  height: number,
+  baseView: View = scene.view,
+): FigureLayer {
   const f = scene.figures;
   if (!f || (f.cayleyDepth <= 0 && !f.limitSetDfs) || width <= 0 || height <= 0) return EMPTY_LAYER;
   const pixelWorld = scene.view.scale / height;
@@ -99,7 +110,8 @@ export function figureLayer(scene: Scene, width: number, height: number): Figure
     }
   }
   if (f.cayleyDepth > 0) {
-    const g = cayleyGraph(scene, f.cayleyBase, { depth: f.cayleyDepth, pixelWorld }, width / height);
+    const base = f.cayleyBase ?? autoBase({ ...scene, view: baseView }, width / height);
+    const g = cayleyGraph(scene, base, { depth: f.cayleyDepth, pixelWorld }, width / height);
     if (!g.ok) notes.push(`Cayley graph: ${g.message}`);
     else {
       if (g.capped) notes.push(`Cayley graph: ${g.capped}`);

@@ -1,6 +1,7 @@
 /**
  * The render node's figures (Cayley graph, depth-first limit set: shader-gen/figures/layer.ts)
- * over the picture, in CSS pixels at the live view: the same layer the SVG and PNG exports draw.
+ * over the picture, in CSS pixels at the live view: the same layer the SVG and PNG exports draw
+ * (at the document's view, which the live view is stored into once it rests).
  * Not interactive (pointer events pass through to the handles and the pan/zoom).
  */
 import { type JSX, useMemo } from 'react';
@@ -12,7 +13,9 @@ import { type Screen, toCss } from './screen.ts';
 export function FigureOverlay(props: { scene: Scene; screen: Screen }): JSX.Element | null {
   const { scene, screen } = props;
   const layer = useMemo(
-    () => figureLayer({ ...scene, view: screen.view }, screen.width, screen.height),
+    // The base point of the Cayley graph from the document's view: it stays put while this view
+    // pans (the document's view follows once the pan rests, as the exports see it).
+    () => figureLayer({ ...scene, view: screen.view }, screen.width, screen.height, scene.view),
     [scene, screen],
   );
   if (layer.strokes.length + layer.dots.length + layer.notes.length === 0) return null;

@@ -3,7 +3,7 @@ import type { Scene } from '../../../nodes/core/scene.ts';
 import type { Vec2 } from '../../../nodes/core/values.ts';
 import { applyMap } from '../../../nodes/geometry/anti-mobius.ts';
 import { autoBase, cayleyGraph } from '../../../shader-gen/figures/cayley.ts';
-import { edgePath } from '../../../shader-gen/figures/layer.ts';
+import { edgePath, figureLayer } from '../../../shader-gen/figures/layer.ts';
 import { interpret } from '../../../shader-gen/interpret.ts';
 import { loadExample } from '../../support/examples.ts';
 
@@ -61,6 +61,20 @@ describe('Cayley graph', () => {
     if (!base) return;
     expect(interpret({ elements: scene.elements, maxIterations: 1 }, base).depth).toBe(0);
     expect(far(base, scene.view.center)).toBeLessThan(0.3);
+  });
+
+  it('keeps its vertices on their tiles while the view pans: the base point comes from the document’s view', () => {
+    const { scene } = loadExample('fig01-cayley-graph');
+    const panned = {
+      ...scene,
+      view: { ...scene.view, center: [scene.view.center[0] + 0.11, scene.view.center[1] - 0.07] as Vec2 },
+    };
+    const vertices = (layer: ReturnType<typeof figureLayer>) => layer.strokes.map((s) => s.points[0]);
+    const still = vertices(figureLayer(scene, 800, 600));
+    // Drawn at the panned view with the base chosen in the document's view: the same graph.
+    expect(vertices(figureLayer(panned, 800, 600, scene.view)).slice(0, 4)).toEqual(still.slice(0, 4));
+    // Chosen in the panned view itself, the base moves with it (what the overlay did before).
+    expect(vertices(figureLayer(panned, 800, 600)).slice(0, 4)).not.toEqual(still.slice(0, 4));
   });
 
   it('says which node it cannot take, and stops at the edge cap with a message', () => {

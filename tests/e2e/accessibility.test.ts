@@ -1,6 +1,7 @@
 /**
  * An automated WCAG 2.1 A/AA audit (axe-core) of what a class sees: the editor with an example,
- * the examples gallery, Help, the mesh export dialog, Present, and the phone layout (390×844). No serious or critical
+ * the examples gallery, Help, the mesh export dialog, Present, the 3D view with its handles (Fig. 37)
+ * and the Fig. 6 limit-set overlay, and the phone layout (390×844). No serious or critical
  * violation may remain. axe's own source is injected into the page, so it audits the real DOM
  * with the browser's computed styles (contrast needs those).
  */
@@ -11,7 +12,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
 import { audit, readable } from './axe-audit.ts';
 import { waitRendered } from './editor-page.ts';
-import { menu, openViaPicker } from './io-page.ts';
+import { menu, openExampleFile, openViaPicker } from './io-page.ts';
 
 const shots = join(repoRoot, 'test-artifacts');
 
@@ -85,6 +86,19 @@ describe('accessibility audit (axe-core, WCAG 2.1 A/AA)', () => {
     await page.getByTestId('present-mode').waitFor();
     await expectClean(page);
   }, 60_000);
+
+  it('the 3D view: its keyboard-movable handles (Fig. 37) and the limit-set overlay (Fig. 6)', async () => {
+    const p3 = await (await app.newContext({ width: 1280, height: 720 })).newPage();
+    p3.setDefaultTimeout(120_000);
+    await openExample(p3, app);
+    await openExampleFile(p3, 'fig37-indras-bubbles-mirror', '3d', 120_000);
+    await p3.locator('[data-handle]').first().waitFor();
+    await expectClean(p3);
+    await openExampleFile(p3, 'fig06-quaternion-kleinian-group', '3d', 120_000);
+    await p3.locator('[data-testid="limit-set-overlay"][data-search]').waitFor();
+    await expectClean(p3);
+    await p3.context().close();
+  }, 300_000);
 
   it('the phone layout (390×844): picture, graph and menu', async () => {
     const phone = await (await app.newContext({ width: 390, height: 844 })).newPage();

@@ -1,6 +1,7 @@
 #!/usr/bin/env node
-// `npm test`: everything CI runs. Makes sure the system tools the browser and GLSL suites need
-// are there (installing Debian's chromium and glslang-tools when we are root with apt), then runs
+// `npm test`: everything CI runs. Makes sure the system tools the browser, GLSL and slicer suites
+// need are there (installing Debian's chromium, glslang-tools and prusa-slicer — PrusaSlicer reads
+// the exported 3MF in tests/cli/mesh-prusa-slicer.test.ts — when we are root with apt), then runs
 // the linter, the type checker and every Vitest suite, and ends with one "N passed, N failed" line.
 import { spawnSync } from 'node:child_process';
 import { existsSync, mkdirSync, readFileSync } from 'node:fs';
@@ -13,6 +14,7 @@ function ensureSystemTools() {
   const missing = [];
   if (!existsSync(CHROMIUM)) missing.push('chromium');
   if (!has('glslangValidator')) missing.push('glslang-tools');
+  if (!has('prusa-slicer')) missing.push('prusa-slicer');
   if (missing.length === 0) return;
   const root = typeof process.getuid === 'function' && process.getuid() === 0;
   if (root && has('apt-get')) {
@@ -25,7 +27,7 @@ function ensureSystemTools() {
       return;
   }
   console.error(
-    `[kleinflow] the browser and GLSL tests need Debian's ${missing.join(' and ')}: run "sudo apt-get install -y ${missing.join(' ')}" and try again.`,
+    `[kleinflow] the browser, GLSL and slicer tests need Debian's ${missing.join(' and ')}: run "sudo apt-get install -y ${missing.join(' ')}" and try again.`,
   );
   process.exit(1);
 }

@@ -4,7 +4,8 @@
  * linear RGB as glTF requires — the sRGB colours are converted) and a plain white, rough material
  * that the vertex colours multiply. No NORMAL: viewers then shade the triangles flat, as the spec
  * says. Kleinflow's z is up, glTF's y: the node turns the mesh −90° about x, the vertices are the
- * mesh's own. The container is written by @gltf-transform/core (a maintained glTF library).
+ * mesh's own — in metres, glTF's unit: mesh-file.ts scales them to the print size first. The
+ * container is written by @gltf-transform/core (a maintained glTF library).
  */
 import { Document, WebIO } from '@gltf-transform/core';
 import type { Mesh } from '../../nodes/geometry/space/marching-tetrahedra.ts';

@@ -8,7 +8,8 @@
  *                        outside, as 3MF requires), and an <m:colorgroup> of the distinct colours
  *                        (#RRGGBB, sRGB as the extension says); each triangle names the colour of
  *                        each of its corners (pid, p1 p2 p3), which readers blend across it.
- * Units are millimetres (the 3MF default): one scene unit is 1 mm, as in the STL; scale in the slicer.
+ * Units are millimetres (the 3MF default): the vertices come scaled to the print size
+ * (print-size.ts, via mesh-file.ts), one scene unit = 1 mm without one, as in the STL.
  */
 import { strToU8, zipSync } from 'fflate';
 import type { Mesh } from '../../nodes/geometry/space/marching-tetrahedra.ts';

@@ -1,8 +1,10 @@
 /**
  * `kleinflow mesh` through the real binary: the Fig. 26 quasi-sphere as binary STL that parses
  * back into a closed, consistently oriented mesh, progress on stderr; the same triangles with the
- * render's colours as GLB (Khronos-validated) and 3MF; an unbounded graph without
- * --bounds, a 2D graph and bad options are refused in one line.
+ * render's colours as GLB (Khronos-validated) and 3MF; --print-size scales the closed mesh to a
+ * physical size (mm in STL, m in GLB) and the success line says it; an unbounded graph without
+ * --bounds, a 2D graph and bad options are refused in one line. (PrusaSlicer reading the 3MF:
+ * mesh-prusa-slicer.test.ts.)
  */
 import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -97,6 +99,56 @@ describe('kleinflow mesh', () => {
     expect(triangles.length).toBe(stlCount);
     expect(triangles.flatMap((t) => t.slice(4, 7).map(Number)).every((p) => p < colours.length)).toBe(true);
     expect(unmatchedEdges(triangles.flatMap((t) => t.slice(1, 4).map(Number)))).toBe(0);
+  });
+
+  it('scales to --print-size: a closed STL 60 mm along its longest side, the GLB 0.06 m, as the line says', async () => {
+    const out = join(dir, 'quasi-60.stl');
+    const r = runCli(['mesh', example3d('fig26-quasi-sphere'), '-o', out, '-r', '12', '--print-size', '60']);
+    expect(r.status).toBe(0);
+    expect(r.stdout).toMatch(/voxels\): [\d.]+ × 60\.0 × [\d.]+ mm\n$/);
+    const { triangles } = readStl(new Uint8Array(readFileSync(out)));
+    expect(edgeCounts(triangles).bad).toBe(0);
+    const points = triangles.flatMap((t) => t.vertices);
+    const side = (a: number) => Math.max(...points.map((v) => v[a]!)) - Math.min(...points.map((v) => v[a]!));
+    expect(Math.max(side(0), side(1), side(2))).toBeCloseTo(60, 3);
+
+    const glbOut = join(dir, 'quasi-60.glb');
+    const g = runCli([
+      'mesh',
+      example3d('fig26-quasi-sphere'),
+      '-o',
+      glbOut,
+      '-r',
+      '12',
+      '--print-size',
+      '60',
+    ]);
+    expect(g.stdout).toMatch(/60\.0 × [\d.]+ mm \(in metres in the GLB/);
+    const glb = new Uint8Array(readFileSync(glbOut));
+    expect((await validateBytes(glb)).issues.numErrors).toBe(0);
+    const position = (await new WebIO().readBinary(glb))
+      .getRoot()
+      .listMeshes()[0]!
+      .listPrimitives()[0]!
+      .getAttribute('POSITION')!;
+    const [lo, hi] = [position.getMin([]), position.getMax([])];
+    expect(Math.max(...hi.map((v, a) => v - lo[a]!))).toBeCloseTo(0.06, 6);
+  });
+
+  it('refuses a print size that is no length or out of range, before meshing', () => {
+    const out = join(dir, 'bad-size.stl');
+    for (const [size, message] of [
+      ['0', /--print-size must be between 1 and 10000 mm, got 0/],
+      ['20000', /--print-size must be between 1 and 10000 mm/],
+      ['sixty', /--print-size expects the longest side in millimetres, such as 60, got "sixty"/],
+      ['-60', /--print-size expects the longest side in millimetres/],
+    ] as const) {
+      const r = runCli(['mesh', example3d('fig26-quasi-sphere'), '-o', out, '--print-size', size]);
+      expect(r.status).toBe(2);
+      expect(r.stderr.split('\n')[0]).toMatch(message);
+      expect(r.stderr).not.toMatch(/meshing/);
+    }
+    expect(existsSync(out)).toBe(false);
   });
 
   it('refuses an --out whose extension names no mesh format, before meshing', () => {

@@ -1,7 +1,8 @@
 /**
  * Export → Mesh in real Chromium: the Fig. 26 quasi-sphere downloads as a binary STL whose
  * mesh is closed and consistently oriented, with the triangle count in the toast, and as a 3MF
- * with its colour group when that format is chosen; the infinite sphairahedron without a box says
+ * with its colour group when that format is chosen, scaled to the Print size typed after the Box
+ * (reached with Tab; a bad size is refused in the dialog) with its size in mm in the toast; the infinite sphairahedron without a box says
  * that one is needed, in the dialog, and downloads nothing.
  */
 import { readFileSync } from 'node:fs';
@@ -58,17 +59,30 @@ describe('Export → Mesh', () => {
     }
     const toast = await page.getByTestId('toast').textContent();
     expect(Number(/(\d+) triangles/.exec(toast ?? '')?.[1])).toBe(triangles.length);
+    // No print size: one unit is 1 mm, and the toast says how large that is.
+    expect(toast).toMatch(/triangles, [\d.]+ × [\d.]+ × [\d.]+ mm \(one unit = 1 mm: set Print size/);
   }, 240_000);
 
-  it('downloads a 3MF with the render’s colours when that format is chosen', async () => {
+  it('downloads a 3MF with the render’s colours at the Print size when that format is chosen', async () => {
     await openExample('fig26-quasi-sphere');
     await menu(page, 'Export', MESH_ITEM);
     const dialog = page.getByRole('dialog', { name: 'Export mesh' });
     await dialog.getByLabel('Format').selectOption('3mf');
     await dialog.getByLabel('Resolution').fill('12');
+    // The print size is the field after the Box, typed from the keyboard.
+    await dialog.getByLabel('Box').focus();
+    await page.keyboard.press('Tab');
+    await expect.poll(() => page.evaluate(() => document.activeElement?.id)).toBe('kf-mesh-print-size');
+    await page.keyboard.type('0');
+    await expect
+      .poll(() => dialog.getByRole('alert').textContent())
+      .toMatch(/Print size: must be between 1 and 10000 mm/);
+    expect(await dialog.getByRole('button', { name: /^Export 3MF/ }).isDisabled()).toBe(true);
+    await page.keyboard.press('Backspace');
+    await page.keyboard.type('60');
     const [download] = await Promise.all([
       page.waitForEvent('download', { timeout: 90_000 }),
-      dialog.getByRole('button', { name: /^Export 3MF 12/ }).click(),
+      dialog.getByRole('button', { name: /^Export 3MF 12³, 60 mm/ }).click(),
     ]);
     expect(download.suggestedFilename()).toMatch(/\.3mf$/);
     const files = unzipSync(new Uint8Array(readFileSync((await download.path())!)));
@@ -78,6 +92,14 @@ describe('Export → Mesh', () => {
     const toast = await page.getByTestId('toast').textContent();
     expect(toast).toMatch(/3MF mesh/);
     expect(Number(/(\d+) triangles/.exec(toast ?? '')?.[1])).toBe(triangles.length);
+    // Scaled so that the longest side is 60 mm, as the toast says.
+    const vertices = [...model.matchAll(/<vertex x="([^"]+)" y="([^"]+)" z="([^"]+)"\/>/g)];
+    const side = (a: number) => {
+      const v = vertices.map((m) => Number(m[a + 1]));
+      return Math.max(...v) - Math.min(...v);
+    };
+    expect(Math.max(side(0), side(1), side(2))).toBeCloseTo(60, 4);
+    expect(toast).toMatch(/triangles, [\d.]+ × 60\.0 × [\d.]+ mm\./);
   }, 240_000);
 
   it('asks for a box when plane mirrors repeat the solid without end, and downloads nothing', async () => {

@@ -1,6 +1,7 @@
 /**
  * The mesh export dialog (3D printing, paper §5.3.2 and Fig. 36): the format (STL, or 3MF / GLB with
- * the render's colours), voxel resolution and an optional box; a progress bar with Cancel while the
+ * the render's colours), voxel resolution, an optional box and an optional print size (the longest
+ * side in mm; empty: one scene unit = 1 mm, src/io/print-size.ts); a progress bar with Cancel while the
  * solid is sampled and meshed on the CPU. The mesh is closed and consistently oriented in every
  * format (docs/math-3d.md "Voxel mesh (paper §5.3.2)", "Coloured mesh (paper Fig. 36)").
  */
@@ -13,6 +14,7 @@ import {
   parseBounds,
 } from '../../../nodes/geometry/space/voxel-mesh.ts';
 import { MESH_FORMATS, type MeshFormat } from '../../io/mesh-file.ts';
+import { MAX_PRINT_SIZE_MM, MIN_PRINT_SIZE_MM, parsePrintSize } from '../../io/print-size.ts';
 import { useModalDialog } from '../use-modal-dialog.ts';
 import { ExportDialogShell, ExportRunFooter } from './ExportDialogShell.tsx';
 import { useExportRun } from './use-export-run.ts';
@@ -21,6 +23,8 @@ export interface MeshExportOptions {
   readonly format: MeshFormat;
   readonly resolution: number;
   readonly bounds?: Bounds3;
+  /** The longest side in millimetres; absent: one scene unit is 1 mm. */
+  readonly printSize?: number;
 }
 
 interface Props {
@@ -40,15 +44,30 @@ export function MeshExportDialog({ run, onClose }: Props) {
   const [format, setFormat] = useState<MeshFormat>('stl');
   const [resolution, setResolution] = useState(DEFAULT_MESH_RESOLUTION);
   const [boundsText, setBoundsText] = useState('');
+  const [printSizeText, setPrintSizeText] = useState('');
   const { progress, error, ...exportRun } = useExportRun(onClose);
   const busy = progress !== null;
   const bounds = boundsText.trim() === '' ? null : parseBounds(boundsText);
-  const boundsError = bounds && !bounds.ok ? `Bounds: ${bounds.error}` : null;
+  const printSize = printSizeText.trim() === '' ? null : parsePrintSize(printSizeText);
+  const inputError =
+    bounds && !bounds.ok
+      ? `Bounds: ${bounds.error}`
+      : printSize && !printSize.ok
+        ? `Print size: ${printSize.error}`
+        : null;
 
   const start = async () => {
-    if (bounds && !bounds.ok) return;
+    if ((bounds && !bounds.ok) || (printSize && !printSize.ok)) return;
     await exportRun.start((onProgress) =>
-      run({ format, resolution, ...(bounds?.ok ? { bounds: bounds.value } : {}) }, onProgress),
+      run(
+        {
+          format,
+          resolution,
+          ...(bounds?.ok ? { bounds: bounds.value } : {}),
+          ...(printSize?.ok ? { printSize: printSize.value } : {}),
+        },
+        onProgress,
+      ),
     );
   };
   const close = exportRun.close;
@@ -118,6 +137,24 @@ export function MeshExportDialog({ run, onClose }: Props) {
             x0, y0, z0, x1, y1, z1 — needed when plane mirrors repeat the solid without end
           </span>
         </span>
+        <label htmlFor="kf-mesh-print-size">Print size</label>
+        <span>
+          <input
+            id="kf-mesh-print-size"
+            type="text"
+            inputMode="decimal"
+            placeholder="1 unit = 1 mm"
+            value={printSizeText}
+            disabled={busy}
+            aria-describedby="kf-mesh-print-size-note"
+            onChange={(e) => setPrintSizeText(e.target.value)}
+          />
+          <span id="kf-mesh-print-size-note" className="kf-export__note">
+            {' '}
+            mm, the longest side ({MIN_PRINT_SIZE_MM}…{MAX_PRINT_SIZE_MM}); empty: one scene unit is 1 mm. GLB
+            stores the same size in metres.
+          </span>
+        </span>
       </div>
       <ExportRunFooter
         progress={progress}
@@ -128,9 +165,9 @@ export function MeshExportDialog({ run, onClose }: Props) {
               ? `Colouring the vertices… ${Math.round(progress * 100)}%`
               : `Meshing… ${Math.round(progress * 100)}%`
         }
-        error={boundsError ?? error}
-        startLabel={`Export ${format.toUpperCase()} ${resolution}³`}
-        startDisabled={boundsError !== null}
+        error={inputError ?? error}
+        startLabel={`Export ${format.toUpperCase()} ${resolution}³${printSize?.ok ? `, ${printSize.value} mm` : ''}`}
+        startDisabled={inputError !== null}
         onStart={() => void start()}
         onCancel={exportRun.cancel}
         onClose={close}

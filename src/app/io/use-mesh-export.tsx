@@ -3,7 +3,8 @@
  * use-document-io.tsx: it adds one menu item and one piece of UI there. The meshing runs on the
  * CPU in layers, letting the page repaint between them so progress shows and Cancel works; the
  * coloured formats (3MF, GLB) then take the render's colour at every vertex (docs/math-3d.md
- * "Coloured mesh (paper Fig. 36)").
+ * "Coloured mesh (paper Fig. 36)"); the file is scaled to the print size after that, and the toast
+ * says its size in millimetres (src/io/print-size.ts).
  */
 import { type ReactNode, useState } from 'react';
 import { meshScene3d } from '../../../nodes/geometry/space/voxel-mesh.ts';
@@ -11,6 +12,7 @@ import { evaluateGraph } from '../../../nodes/graph/evaluate.ts';
 import { registry } from '../../../nodes/types/index.ts';
 import { meshVertexColours } from '../../../shader-gen/space/mesh-colours.ts';
 import { MESH_FORMATS, meshFileBytes } from '../../io/mesh-file.ts';
+import { formatPrintSize, meshExtent, millimetresPerUnit } from '../../io/print-size.ts';
 import type { EditorStore } from '../../state/store.ts';
 import { download, fileStem } from '../files.ts';
 import type { MenuItem } from '../Menu.tsx';
@@ -31,7 +33,7 @@ export function useMeshExport({ store, say }: Options): { item: MenuItem; ui: Re
     onSelect: () => setOpen(true),
   };
   if (!open) return { item, ui: null };
-  const run = async ({ format, ...o }: MeshExportOptions, onProgress: (f: number) => boolean) => {
+  const run = async ({ format, printSize, ...o }: MeshExportOptions, onProgress: (f: number) => boolean) => {
     const doc = store.getState().doc;
     const scene3d = evaluateGraph(doc, registry).scene3d;
     if (!scene3d) throw new Error('this graph has no Render 3D node: mesh export meshes 3D graphs');
@@ -54,9 +56,16 @@ export function useMeshExport({ store, say }: Options): { item: MenuItem; ui: Re
       });
       if (!colours) return false;
     }
-    const bytes = await meshFileBytes(format, mesh, colours, `Kleinflow mesh of ${fileStem(doc)}`);
+    // Scaled only now: the colours are read at the scene's own coordinates.
+    const extent = meshExtent(mesh);
+    const mmPerUnit = millimetresPerUnit(extent, printSize);
+    const bytes = await meshFileBytes(format, mesh, colours, `Kleinflow mesh of ${fileStem(doc)}`, mmPerUnit);
     download(`${fileStem(doc)}.${info.extension}`, bytes, info.mime);
-    say('ok', `Exported a ${format.toUpperCase()} mesh: ${mesh.triangles.length / 3} triangles.`);
+    const hint = printSize === undefined ? ' (one unit = 1 mm: set Print size for a real print)' : '';
+    say(
+      'ok',
+      `Exported a ${format.toUpperCase()} mesh: ${mesh.triangles.length / 3} triangles, ${formatPrintSize(extent, mmPerUnit)}${hint}.`,
+    );
     return true;
   };
   return { item, ui: <MeshExportDialog run={run} onClose={() => setOpen(false)} /> };

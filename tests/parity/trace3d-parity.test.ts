@@ -61,11 +61,13 @@ const same = (a: Float32Array, b: Float32Array, i: number, anyDepth = false) =>
 
 /**
  * Scenes whose surface is a limit set (the sphairahedra, inside their parameter space or, with
- * bridges and tunnels, outside it; the pseudo-Kleinian's clusters, a third of its pixels): the depth of the hit tile changes from one quarter pixel to
+ * bridges and tunnels, outside it; the tiling after 20 inversions, already the terrain's fine
+ * grain; the pseudo-Kleinian's clusters, a third of its pixels): the depth of the hit tile changes from one quarter pixel to
  * the next almost everywhere, so no pixel would be robust in depth; they are compared on hit, seed
  * and t only.
  */
-const LIMIT_SET_SURFACES = /quasi-sphere|fractal-terrain|parameter-space|bridges|tunnels|pseudo-kleinian/;
+const LIMIT_SET_SURFACES =
+  /quasi-sphere|fractal-terrain|tiling-step-20|parameter-space|bridges|tunnels|pseudo-kleinian/;
 
 function compare(scene: Scene3d, gpuData: Float32Array, anyDepth = false) {
   const centre = probeScene3d(scene, W, H);
@@ -94,8 +96,6 @@ function compare(scene: Scene3d, gpuData: Float32Array, anyDepth = false) {
 }
 
 const examples = exampleScenes3d();
-/** Examples the GPU cannot draw like the CPU yet (see where they are left out below). */
-const GPU_LACKS_BUDGET_BOUND = ['fig28b-tiling-step-2', 'fig28c-tiling-step-5', 'fig28d-tiling-step-20'];
 /**
  * The examples with their own geometry: the first of those that differ only in colouring (the
  * Figs. 33–34 quasi-spheres are Fig. 26's), since hit, depth and seed do not depend on colour.
@@ -121,10 +121,6 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
     // mirrored covers of docs/math-3d.md §8) and the unbounded plane orbits (Figs. 17–18) included.
     ...distinctGeometry(examples),
   };
-  // Not yet on the GPU: the infinite tiling after 2, 5, 20 inversions needs the bound of a walk that
-  // ran out of budget (docs/math-3d.md "The bound when the budget runs out"), which only the CPU
-  // walk has; the GPU's march runs out of steps near the terrain (65 %, 34 % agreement when tried; too few robust pixels at 20).
-  for (const name of GPU_LACKS_BUDGET_BOUND) delete scenes[name];
   // Nothing to trace: a limit set without seeds is dots painted over the picture on the CPU
   // (tests/shader-gen/space/limit-dfs-3d.test.ts, tests/cli/render-limit-set.test.ts).
   for (const [name, s] of Object.entries(scenes)) if (s.seeds.length === 0 && !s.volume) delete scenes[name];

@@ -91,6 +91,12 @@ export interface GlslElement3d<E extends Element3d = Element3d> {
    * the image and far to |q − c|, and returns r² (0: an isometry).
    */
   readonly mirror?: GlslFunction;
+  /**
+   * The CPU `boundaryDistance`: `float <kind>BoundaryDistance(vec3 p, vec4 d0, …)`, for the bound
+   * of a walk that ran out of budget (../glsl/budget.glsl.ts). Absent: as on the CPU, that bound is
+   * not formed for scenes with the kind.
+   */
+  readonly boundaryDistance?: GlslFunction;
   /** Functions the step block calls. */
   readonly deps: readonly GlslFunction[];
 }

@@ -67,6 +67,13 @@ float planeReflectionRegionDistance(vec3 p, vec4 d0) {
   return max(0.0, dot(p, d0.xyz) + d0.w);
 }`,
     ),
+    boundaryDistance: glslFunction(
+      'planeReflectionBoundaryDistance',
+      `
+float planeReflectionBoundaryDistance(vec3 p, vec4 d0) {
+  return abs(dot(p, d0.xyz) + d0.w);
+}`,
+    ),
     mirror: glslFunction(
       'planeReflectionMirror',
       `

@@ -68,6 +68,13 @@ float sphereInversionRegionDistance(vec3 p, vec4 d0, vec4 d1) {
 }`,
       [ballDistanceGlsl],
     ),
+    boundaryDistance: glslFunction(
+      'sphereInversionBoundaryDistance',
+      `
+float sphereInversionBoundaryDistance(vec3 p, vec4 d0, vec4 d1) {
+  return abs(length(p - d0.xyz) - d0.w);
+}`,
+    ),
     mirror: glslFunction(
       'sphereInversionMirror',
       `

@@ -16,6 +16,7 @@ import { type TracePlan, UNBOUNDED_REACH } from '../plan.ts';
 import { seedSize } from '../seeds-3d.ts';
 import { AO_SAMPLES, AO_STEP, SHADOW_K, SHADOW_STEPS } from '../shade-3d.ts';
 import { HIT_PIXELS, NEAR } from '../trace-3d.ts';
+import { budgetBoundIn } from './budget.glsl.ts';
 
 /**
  * `bool <name>(vec3 o, vec3 d, out vec2 span)`: ../trace-3d.ts rayInterval over the ball `bounds`
@@ -57,6 +58,8 @@ float hitTolerance(float angle, float t) {
 }`,
   );
   const hasSeeds = plan.scene.seeds.length > 0;
+  // The bound of a walk out of budget, where the program has it (budget.glsl.ts budgetBoundIn).
+  const budget = budgetBoundIn(plan);
   return glslFunction(
     'traceRay',
     `
@@ -72,7 +75,7 @@ bool traceRay(vec3 o, vec3 d, float angle, float tStart, out float t, out vec4 i
   for (int i = 0; i < steps; ++i) {
     float de = walkRecord(o + d * t, info, fin);
     float eps = hitTolerance(angle, t);
-    if (info.x < eps) return true;
+    if (info.x < eps) return true;${budget ? '\n    de = budgetedDe(o + d * t, info, de);' : ''}
     t += max(deScale * de, eps);
     if (t > span.y) return false;
   }

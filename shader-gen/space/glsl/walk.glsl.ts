@@ -1,59 +1,19 @@
-/**
- * The GLSL walk, twin of ../walk.ts (docs/math-3d.md "§8 The tracer's distance bound"): the IIS
- * loop with one straight-line block per element (its kind's step, no runtime switch), moving the
- * pole of the composed map with the point, and the bound formed once at the end:
- * D / (s·(1 + D/|x_f − pole|)), D the covers (mirrored where they would lower it). Emitted twice:
- * `walkRecord` (with the pole; returns the safe DE) and `walkPlain` (the seed-image distance only,
- * for normals and occlusion). Both write info = (seed-image distance, depth, seed, factor) and the
- * final point. Element, content-ball and seed data live in `u_el` rows (or literals when baked),
- * copied once per pixel into globals (`emitSceneGlobals`).
- */
-import type { Scene3d } from '../../../nodes/core/scene-3d.ts';
 import { GLSL_FAR } from '../../glsl/iis.glsl.ts';
 import { floatLiteral } from '../../glsl/literal.ts';
 import type { GlslFunction } from '../../glsl/snippet.ts';
 import type { SourceBuilder } from '../../glsl/source.ts';
-import { ELEMENT_ARRAY, type SceneValues } from '../../glsl/values.ts';
-import { type ElementRecord3d, POLE_AT_INFINITY } from '../elements/element-3d-kind.ts';
+import { POLE_AT_INFINITY } from '../elements/element-3d-kind.ts';
 import { ballDistanceGlsl } from '../elements/sphere-inversion.ts';
-import type { TracePlan } from '../plan.ts';
-import { packSeed, seedDistanceCall, seedGlslFunctions } from '../seeds-3d.ts';
+import { seedDistanceCall, seedGlslFunctions } from '../seeds-3d.ts';
+import { budgetFunctions, emitBudgetWalk, hasBudgetBound } from './budget.glsl.ts';
+import { local, type PlacedWalk, walkLimit } from './placed-walk.ts';
 
-export interface PlacedWalk {
-  readonly plan: TracePlan;
-  readonly elements: readonly {
-    readonly record: ElementRecord3d;
-    readonly rows: readonly string[];
-    /** Content-ball row (c, r) and (reach, 0, 0, 0), for sphere inversions of all-inversion scenes. */
-    readonly hull: readonly [string, string] | null;
-  }[];
-  /** Each seed's rows (../seeds-3d.ts packSeed: two for a sphere or box, nine for a tile). */
-  readonly seeds: readonly (readonly string[])[];
-  readonly maxIter: string;
-}
-
-/** Places every element's, content ball's and seed's data (uniform rows or literals). */
-export function placeWalk(plan: TracePlan, v: SceneValues): PlacedWalk {
-  const scene: Scene3d = plan.scene;
-  const elements = scene.elements.map((e, i) => {
-    const record = plan.records[i]!;
-    const data = record.glsl.pack(e as never);
-    if (data.length !== 4 * record.glsl.vec4s)
-      throw new Error(`${record.kind} packed ${data.length} numbers`);
-    const rows = v.elementRows(data);
-    const h = plan.hulls[i];
-    const hull = h
-      ? (v.elementRows([...h.center, h.radius, plan.reach[i]!, 0, 0, 0]) as [string, string])
-      : null;
-    return { record, rows, hull };
-  });
-  const seeds = scene.seeds.map((s) => v.elementRows(packSeed(s)));
-  return { plan, elements, seeds, maxIter: v.int('u_maxIterations', scene.maxIterations) };
-}
+export { type PlacedWalk, placeWalk } from './placed-walk.ts';
 
 /** The functions the walk calls. */
 export function walkFunctions(placed: PlacedWalk): GlslFunction[] {
   return [
+    ...budgetFunctions(placed),
     ...seedGlslFunctions(placed.plan.scene.seeds),
     ballDistanceGlsl,
     ...placed.elements.flatMap(({ record }) => [
@@ -64,13 +24,6 @@ export function walkFunctions(placed: PlacedWalk): GlslFunction[] {
     ]),
   ];
 }
-
-const UNIFORM_ROW = new RegExp(`^${ELEMENT_ARRAY}\\[(\\d+)\\]$`);
-/** The local holding a row: `el<N>` for `u_el[N]`, the literal itself when baked. */
-const local = (expr: string): string => {
-  const m = UNIFORM_ROW.exec(expr);
-  return m ? `el${m[1]}` : expr;
-};
 
 /** Seed k's distance at p. */
 const seedCall = (placed: PlacedWalk, k: number): string =>
@@ -187,7 +140,9 @@ export function emitSceneGlobals(out: SourceBuilder, placed: PlacedWalk): boolea
  * pole, and the function returns the safe bound.
  */
 export function emitWalk(out: SourceBuilder, placed: PlacedWalk, record: boolean): void {
-  const limit = /^\d+$/.test(placed.maxIter) ? placed.maxIter : 'maxIter';
+  const limit = walkLimit(placed);
+  // The bound of a walk out of budget (budget.glsl.ts), called by traceRay after a few steps.
+  if (record && hasBudgetBound(placed)) emitBudgetWalk(out, placed);
   out.push(
     `float walk${record ? 'Record' : 'Plain'}(vec3 start, out vec4 info, out vec3 fin) {`,
     '  vec3 p = start;',

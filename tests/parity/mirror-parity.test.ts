@@ -7,11 +7,9 @@
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
-import { cameraUniforms, compile3d } from '../../shader-gen/space/compile-3d.ts';
-import { prepareTrace3d } from '../../shader-gen/space/plan.ts';
 import { environmentOf, radiance } from '../../shader-gen/space/reflect-3d.ts';
-import { tracePixel } from '../../shader-gen/space/render-3d.ts';
 import { exampleScenes3d, MIRROR_FIG11 } from '../shader-gen/space/scenes-3d.ts';
+import { colourDiffs3d } from './colour-3d.ts';
 import { GpuProbe } from './gpu-probe.ts';
 
 const W = 24;
@@ -48,28 +46,12 @@ describe.skipIf(OPT_IN)('mirror material: GPU = CPU (SwiftShader)', () => {
   };
   for (const [name, scene] of Object.entries(scenes)) {
     it(`${name}: the colour agrees pixel by pixel`, async () => {
-      const c = compile3d(scene);
-      const index = await gpu.program(c.vertexSource, c.source);
-      const image = await gpu.render(index, [...c.uniforms, ...cameraUniforms(scene.camera)], {
-        center: [0, 0],
-        scale: 1,
-      });
-      const plan = prepareTrace3d(scene);
       const env = environmentOf(scene);
-      const diffs: number[] = [];
       let mirrored = 0;
-      for (let py = 0; py < H; py++) {
-        for (let px = 0; px < W; px++) {
-          const r = tracePixel(plan, W, H, px + 0.5, py + 0.5);
-          const cpu = radiance(plan, env, r.o, r.d, r.angle, r.hit);
-          if (r.hit.hit && scene.seeds[r.hit.seed]!.reflectivity) mirrored++;
-          const o = 4 * (py * W + px);
-          diffs.push(Math.max(...[0, 1, 2].map((k) => Math.abs(cpu[k]! - image.data[o + k]!))));
-        }
-      }
-      diffs.sort((a, b) => a - b);
-      const median = diffs[Math.floor(diffs.length / 2)]!;
-      const p95 = diffs[Math.floor(diffs.length * 0.95)]!;
+      const { median, p95 } = await colourDiffs3d(gpu, scene, 1, (plan, r) => {
+        if (r.hit.hit && scene.seeds[r.hit.seed]!.reflectivity) mirrored++;
+        return radiance(plan, env, r.o, r.d, r.angle, r.hit);
+      });
       rows[name] = { 'mirror pixels': mirrored, median: median.toFixed(5), p95: p95.toFixed(5) };
       expect(mirrored).toBeGreaterThan(0.03 * W * H);
       expect(median).toBeLessThan(0.002);

@@ -16,6 +16,7 @@ import { HAND_WRITTEN_VOLUME } from '../bench/hand-written/trace3d.ts';
 import { opacityDiffer } from '../bench/volume3d.ts';
 import { exampleScenes3d } from '../shader-gen/space/scenes-3d.ts';
 import { NESTED, ONE_MIRROR } from '../shader-gen/space/volume-scenes.ts';
+import { render3d } from './colour-3d.ts';
 import { GpuProbe } from './gpu-probe.ts';
 
 const W = 64;
@@ -41,14 +42,7 @@ afterAll(async () => {
   await gpu?.close();
 });
 
-async function gpuImage(scene: Scene3d, variant: 'color' | 'volume-probe') {
-  const program = compile3d(scene, { variant });
-  const index = await gpu.program(program.vertexSource, program.source);
-  return gpu.render(index, [...program.uniforms, ...cameraUniforms(scene.camera)], {
-    center: [0, 0],
-    scale: 1,
-  });
-}
+const gpuImage = (scene: Scene3d, variant: 'color' | 'volume-probe') => render3d(gpu, scene, { variant });
 
 describe('volume renderer: GPU = CPU (SwiftShader)', () => {
   const scenes: Record<string, Scene3d> = { 'one mirror': ONE_MIRROR, nested: NESTED };

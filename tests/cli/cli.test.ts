@@ -1,49 +1,24 @@
-import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
-import { parseDocumentText } from '../../nodes/graph/load.ts';
-import { registry } from '../../nodes/types/index.ts';
+import { describe, expect, it } from 'vitest';
 import { interpret } from '../../shader-gen/interpret.ts';
 import { decodePng, encodePng, readPngText } from '../../src/io/png.ts';
-import { ROOT, runCli } from './run-cli.ts';
+import { cliTempDir, evaluateFile, graphText, ROOT, runCli, runCliOk, writeIn } from './run-cli.ts';
 
 const EXAMPLE = join(ROOT, 'examples/hyperbolic-237.kleinflow.json');
-let dir = '';
-const file = (name: string, content: string) => {
-  const p = join(dir, name);
-  writeFileSync(p, content);
-  return p;
-};
-const graph = (nodes: unknown[], edges: unknown[] = []) =>
-  JSON.stringify({
-    format: 'kleinflow',
-    version: 1,
-    meta: {},
-    nodes,
-    edges,
-    view: { center: [0, 0], scale: 4 },
-  });
+const dir = cliTempDir('kleinflow-cli-');
+const file = (name: string, content: string) => writeIn(dir, name, content);
+const graph = graphText;
 /** No line of a stack trace ("    at fn (file:line)") and no raw Error dump. */
 const expectNoTrace = (text: string) => {
   expect(text).not.toMatch(/^\s+at .+/m);
   expect(text).not.toMatch(/Error:.*\n.*node:internal/);
 };
 
-beforeAll(() => {
-  dir = mkdtempSync(join(tmpdir(), 'kleinflow-cli-'));
-});
-afterAll(() => {
-  rmSync(dir, { recursive: true, force: true });
-});
-
 describe('kleinflow render', () => {
   it('writes a PNG of the requested size with the graph embedded', () => {
     const out = join(dir, 'out.png');
-    const r = runCli(['render', EXAMPLE, '-o', out, '--size', '48x32', '--samples', '2']);
-    expect(r.stderr).toBe('');
-    expect(r.status).toBe(0);
+    const r = runCliOk(['render', EXAMPLE, '-o', out, '--size', '48x32', '--samples', '2']);
     expect(r.stdout).toContain('48×32');
     const bytes = new Uint8Array(readFileSync(out));
     const png = decodePng(bytes);
@@ -120,14 +95,10 @@ describe('kleinflow sample', () => {
       [3, 3],
     ];
     const ptsFile = file('pts.json', JSON.stringify(pts));
-    const r = runCli(['sample', EXAMPLE, '--points', ptsFile]);
-    expect(r.stderr).toBe('');
-    expect(r.status).toBe(0);
+    const r = runCliOk(['sample', EXAMPLE, '--points', ptsFile]);
     const out = JSON.parse(r.stdout) as { points: Record<string, unknown>[] };
     expect(Object.keys(out)).toEqual(['points']);
-    const loaded = parseDocumentText(readFileSync(EXAMPLE, 'utf8'), registry);
-    if (!loaded.ok) throw new Error('example does not load');
-    const { scene } = evaluateGraph(loaded.doc, registry);
+    const { scene } = evaluateFile(EXAMPLE);
     expect(out.points).toHaveLength(pts.length);
     out.points.forEach((p, i) => {
       expect(Object.keys(p)).toEqual(['depth', 'x', 'y', 'escaped']);
@@ -156,12 +127,14 @@ describe('kleinflow sample', () => {
       [0.1, 0.2],
       [0.2, 0.04],
     ];
-    const r = runCli(['sample', EXAMPLE, '--points', file('trace-pts.json', JSON.stringify(pts)), '--trace']);
-    expect(r.stderr).toBe('');
-    expect(r.status).toBe(0);
-    const loaded = parseDocumentText(readFileSync(EXAMPLE, 'utf8'), registry);
-    if (!loaded.ok) throw new Error('example does not load');
-    const { scene } = evaluateGraph(loaded.doc, registry);
+    const r = runCliOk([
+      'sample',
+      EXAMPLE,
+      '--points',
+      file('trace-pts.json', JSON.stringify(pts)),
+      '--trace',
+    ]);
+    const { scene } = evaluateFile(EXAMPLE);
     const out = JSON.parse(r.stdout) as {
       points: {
         depth: number;

@@ -26,6 +26,15 @@ appSessionForSuite((s) => ({ page } = s), {
     const gallery = page.getByRole('dialog', { name: 'Examples' });
     await gallery.locator('.kf-gallery__card').filter({ hasText: TITLE }).first().click();
     await gallery.waitFor({ state: 'detached' });
+    await page.waitForFunction((t) => window.__kleinflow!.store.getState().doc.meta.title === t, TITLE);
+    // One sample a pixel (not history): the test reads μ and the view, never the picture, and
+    // SwiftShader re-accumulating 8 samples after every click and pan step blocks the page.
+    await page.evaluate(() =>
+      window.__kleinflow!.store.dispatchSilently({
+        type: 'set-params',
+        patches: [{ nodeId: 'out', params: { samples: 1 } }],
+      }),
+    );
   },
 });
 

@@ -5,29 +5,16 @@
  * reflect-3d.ts radiance) — mirrors reflecting once under the flat background, and the Fig. 37
  * example (three bounces under the sky) (small images: SwiftShader runs the bounce loop per pixel). Background pixels are compared too: they are the environment.
  */
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
 import { environmentOf, radiance } from '../../shader-gen/space/reflect-3d.ts';
 import { exampleScenes3d, MIRROR_FIG11 } from '../shader-gen/space/scenes-3d.ts';
 import { colourDiffs3d } from './colour-3d.ts';
-import { GpuProbe } from './gpu-probe.ts';
+import type { GpuProbe } from './gpu-probe.ts';
+import { probeForSuite } from './probe-suite.ts';
 
 const W = 24;
 const H = 18;
-
-let gpu: GpuProbe;
-const rows: Record<string, Record<string, string | number>> = {};
-
-beforeAll(async () => {
-  if (!OPT_IN) gpu = await GpuProbe.open(W, H);
-});
-
-afterAll(async () => {
-  if (OPT_IN) return;
-  console.log(`\nMirror material: GPU vs CPU colour (${W}×${H}, SwiftShader):`);
-  console.table(rows);
-  await gpu?.close();
-});
 
 /**
  * Opt-in (KLEINFLOW_MIRROR_PARITY=1): on the shared 2-core test machine SwiftShader did not finish
@@ -38,6 +25,17 @@ afterAll(async () => {
  * "Mirror material".
  */
 const OPT_IN = process.env.KLEINFLOW_MIRROR_PARITY !== '1';
+
+let gpu: GpuProbe;
+const rows = probeForSuite(
+  W,
+  H,
+  'Mirror material: GPU vs CPU colour',
+  (g) => {
+    gpu = g;
+  },
+  { skip: OPT_IN },
+);
 
 describe.skipIf(OPT_IN)('mirror material: GPU = CPU (SwiftShader)', () => {
   const scenes: Record<string, Scene3d> = {

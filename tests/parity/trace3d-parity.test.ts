@@ -9,7 +9,7 @@
  * draw the same picture as the generated one, and the colour variant shades like the CPU in every
  * colouring (the orbit colouring examples, and the measures of Fig. 34).
  */
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
 import { PALETTES } from '../../nodes/types/colour.ts';
 import { cameraUniforms, compile3d } from '../../shader-gen/space/compile-3d.ts';
@@ -25,7 +25,8 @@ import {
   PSEUDO_KLEINIAN,
 } from '../shader-gen/space/scenes-3d.ts';
 import { colourDiffs3d, render3d } from './colour-3d.ts';
-import { GpuProbe } from './gpu-probe.ts';
+import type { GpuProbe } from './gpu-probe.ts';
+import { probeForSuite } from './probe-suite.ts';
 
 const W = 96;
 const H = 72;
@@ -34,16 +35,8 @@ const MIN_AGREEMENT = 0.995;
 const T_TOLERANCE = 0.02;
 
 let gpu: GpuProbe;
-const rows: Record<string, Record<string, string | number>> = {};
-
-beforeAll(async () => {
-  gpu = await GpuProbe.open(W, H);
-});
-
-afterAll(async () => {
-  console.log(`\n3D GPU vs CPU parity (${W}×${H}, SwiftShader):`);
-  console.table(rows);
-  await gpu?.close();
+const rows = probeForSuite(W, H, '3D GPU vs CPU parity', (g) => {
+  gpu = g;
 });
 
 const gpuProbe = (scene: Scene3d, bake = false) => render3d(gpu, scene, { variant: 'probe', bake });

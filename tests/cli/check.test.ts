@@ -2,22 +2,15 @@
  * `kleinflow check` also compiles the scene's shader, so the problems only the GPU program has
  * (KF404 uniform budget, KF405 values beyond float32 range) are listed like every other one.
  */
-import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { LIMITS } from '../../nodes/core/scene.ts';
 import { groupNodes } from '../../nodes/graph/grouping.ts';
 import { doc, edge, node } from '../nodes/support/doc.ts';
-import { runCli } from './run-cli.ts';
+import { cliTempDir, graphText, runCli, writeIn } from './run-cli.ts';
 
-let dir = '';
-beforeAll(() => {
-  dir = mkdtempSync(join(tmpdir(), 'kleinflow-check-'));
-});
-afterAll(() => {
-  rmSync(dir, { recursive: true, force: true });
-});
+const dir = cliTempDir('kleinflow-check-');
 
 type Node = { id: string; type: string; position: [number, number]; params: Record<string, unknown> };
 /** A graph file: inversions in the given circles, all wired into one render node. */
@@ -34,19 +27,7 @@ function inversions(name: string, circles: { c: [number, number]; r: number }[],
     from: { node: `inv${i}`, port: 'element' },
     to: { node: 'out', port: 'elements' },
   }));
-  const path = join(dir, name);
-  writeFileSync(
-    path,
-    JSON.stringify({
-      format: 'kleinflow',
-      version: 1,
-      meta: {},
-      nodes,
-      edges,
-      view: { center: [0, 0], scale: 4 },
-    }),
-  );
-  return path;
+  return writeIn(dir, name, graphText(nodes, edges));
 }
 
 describe('kleinflow check: shader diagnostics', () => {

@@ -1,49 +1,25 @@
-import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
-import { parseDocumentText } from '../../nodes/graph/load.ts';
-import { registry } from '../../nodes/types/index.ts';
+import { describe, expect, it } from 'vitest';
 import { interpret } from '../../shader-gen/interpret.ts';
 import { decodePng, encodePng, readPngText } from '../../src/io/png.ts';
-import { ROOT, runCli } from './run-cli.ts';
+import { cliTempDir, evaluateFile, graphText, ROOT, runCli, runCliOk, writeIn } from './run-cli.ts';
+import { runMain } from './run-main.ts';
 
 const EXAMPLE = join(ROOT, 'examples/hyperbolic-237.kleinflow.json');
-let dir = '';
-const file = (name: string, content: string) => {
-  const p = join(dir, name);
-  writeFileSync(p, content);
-  return p;
-};
-const graph = (nodes: unknown[], edges: unknown[] = []) =>
-  JSON.stringify({
-    format: 'kleinflow',
-    version: 1,
-    meta: {},
-    nodes,
-    edges,
-    view: { center: [0, 0], scale: 4 },
-  });
+const dir = cliTempDir('kleinflow-cli-');
+const file = (name: string, content: string) => writeIn(dir, name, content);
+const graph = graphText;
 /** No line of a stack trace ("    at fn (file:line)") and no raw Error dump. */
 const expectNoTrace = (text: string) => {
   expect(text).not.toMatch(/^\s+at .+/m);
   expect(text).not.toMatch(/Error:.*\n.*node:internal/);
 };
 
-beforeAll(() => {
-  dir = mkdtempSync(join(tmpdir(), 'kleinflow-cli-'));
-});
-afterAll(() => {
-  rmSync(dir, { recursive: true, force: true });
-});
-
 describe('kleinflow render', () => {
   it('writes a PNG of the requested size with the graph embedded', () => {
     const out = join(dir, 'out.png');
-    const r = runCli(['render', EXAMPLE, '-o', out, '--size', '48x32', '--samples', '2']);
-    expect(r.stderr).toBe('');
-    expect(r.status).toBe(0);
+    const r = runCliOk(['render', EXAMPLE, '-o', out, '--size', '48x32', '--samples', '2']);
     expect(r.stdout).toContain('48×32');
     const bytes = new Uint8Array(readFileSync(out));
     const png = decodePng(bytes);
@@ -72,15 +48,15 @@ describe('kleinflow render', () => {
     [['render', EXAMPLE, '-o', 'x.png', '--samples', '2.5'], /--samples expects a whole number/],
     [['render', EXAMPLE, '-o', 'x.png', '--frobnicate'], /unknown option --frobnicate/],
     [['render', EXAMPLE, '-o'], /option -o needs a value/],
-  ])('usage error %j exits 2 with the usage text', (args, message) => {
-    const r = runCli(args);
+  ])('usage error %j exits 2 with the usage text', async (args, message) => {
+    const r = await runMain(args);
     expect(r.status).toBe(2);
     expect(r.stderr).toMatch(message);
     expect(r.stderr).toContain('Usage: kleinflow render');
     expectNoTrace(r.stderr);
   });
 
-  it('refuses a graph with errors and writes nothing', () => {
+  it('refuses a graph with errors and writes nothing', async () => {
     const bad = file(
       'cycle.json',
       graph(
@@ -95,7 +71,7 @@ describe('kleinflow render', () => {
       ),
     );
     const out = join(dir, 'never.png');
-    const r = runCli(['render', bad, '-o', out]);
+    const r = await runMain(['render', bad, '-o', out]);
     expect(r.status).toBe(1);
     expect(r.stderr).toMatch(/error KF208 nodes\[0\] \(node "a"\): cycle through nodes/);
     expect(r.stderr).toMatch(/has 2 errors; nothing was produced/);
@@ -120,14 +96,10 @@ describe('kleinflow sample', () => {
       [3, 3],
     ];
     const ptsFile = file('pts.json', JSON.stringify(pts));
-    const r = runCli(['sample', EXAMPLE, '--points', ptsFile]);
-    expect(r.stderr).toBe('');
-    expect(r.status).toBe(0);
+    const r = runCliOk(['sample', EXAMPLE, '--points', ptsFile]);
     const out = JSON.parse(r.stdout) as { points: Record<string, unknown>[] };
     expect(Object.keys(out)).toEqual(['points']);
-    const loaded = parseDocumentText(readFileSync(EXAMPLE, 'utf8'), registry);
-    if (!loaded.ok) throw new Error('example does not load');
-    const { scene } = evaluateGraph(loaded.doc, registry);
+    const { scene } = evaluateFile(EXAMPLE);
     expect(out.points).toHaveLength(pts.length);
     out.points.forEach((p, i) => {
       expect(Object.keys(p)).toEqual(['depth', 'x', 'y', 'escaped']);
@@ -142,8 +114,8 @@ describe('kleinflow sample', () => {
     ['not an array', '{"x":1}', /expected an array of \[x, y\] points, got an object/],
     ['a bad entry', '[[0,0],[1,"a"]]', /bad-points\.json"\[1\]: expected \[x, y\] with two finite numbers/],
     ['a triple', '[[0,0,0]]', /"\[0\]: expected \[x, y\]/],
-  ])('rejects a points file that is %s with one clear line', (_what, content, message) => {
-    const r = runCli(['sample', EXAMPLE, '--points', file('bad-points.json', content)]);
+  ])('rejects a points file that is %s with one clear line', async (_what, content, message) => {
+    const r = await runMain(['sample', EXAMPLE, '--points', file('bad-points.json', content)]);
     expect(r.status).toBe(1);
     expect(r.stdout).toBe('');
     expect(r.stderr.trim().split('\n')).toHaveLength(1);
@@ -156,12 +128,14 @@ describe('kleinflow sample', () => {
       [0.1, 0.2],
       [0.2, 0.04],
     ];
-    const r = runCli(['sample', EXAMPLE, '--points', file('trace-pts.json', JSON.stringify(pts)), '--trace']);
-    expect(r.stderr).toBe('');
-    expect(r.status).toBe(0);
-    const loaded = parseDocumentText(readFileSync(EXAMPLE, 'utf8'), registry);
-    if (!loaded.ok) throw new Error('example does not load');
-    const { scene } = evaluateGraph(loaded.doc, registry);
+    const r = runCliOk([
+      'sample',
+      EXAMPLE,
+      '--points',
+      file('trace-pts.json', JSON.stringify(pts)),
+      '--trace',
+    ]);
+    const { scene } = evaluateFile(EXAMPLE);
     const out = JSON.parse(r.stdout) as {
       points: {
         depth: number;
@@ -195,22 +169,22 @@ describe('kleinflow sample', () => {
     expect(plain.stdout).not.toContain('steps');
   });
 
-  it('needs --points', () => {
-    const r = runCli(['sample', EXAMPLE]);
+  it('needs --points', async () => {
+    const r = await runMain(['sample', EXAMPLE]);
     expect(r.status).toBe(2);
     expect(r.stderr).toMatch(/missing --points/);
   });
 });
 
 describe('kleinflow check', () => {
-  it('exits 0 and prints nothing on stdout for a clean example', () => {
-    const r = runCli(['check', EXAMPLE]);
+  it('exits 0 and prints nothing on stdout for a clean example', async () => {
+    const r = await runMain(['check', EXAMPLE]);
     expect(r.status).toBe(0);
     expect(r.stdout).toBe('');
     expect(r.stderr).toMatch(/: ok/);
   });
 
-  it('lists every problem with its path and node id, and exits 1', () => {
+  it('lists every problem with its path and node id, and exits 1', async () => {
     const bad = file(
       'broken.json',
       graph(
@@ -222,7 +196,7 @@ describe('kleinflow check', () => {
         [{ id: 'e1', from: { node: 'k', port: 'elements' }, to: { node: 'gone', port: 'elements' } }],
       ),
     );
-    const r = runCli(['check', bad]);
+    const r = await runMain(['check', bad]);
     expect(r.status).toBe(1);
     const lines = r.stdout.trim().split('\n');
     expect(lines).toContain(
@@ -237,12 +211,12 @@ describe('kleinflow check', () => {
     expect(r.stderr).toMatch(/broken\.json: 3 errors/);
   });
 
-  it('allows warnings (exit 0)', () => {
+  it('allows warnings (exit 0)', async () => {
     const warn = file(
       'warn.json',
       graph([{ id: 'p', type: 'point', position: [0, 0], params: { colour: 1 } }]),
     );
-    const r = runCli(['check', warn]);
+    const r = await runMain(['check', warn]);
     expect(r.status).toBe(0);
     expect(r.stdout).toMatch(
       /^warning KF301 nodes\[0\]\.params\.colour \(node "p"\): .*has no parameter "colour"/m,
@@ -259,8 +233,8 @@ describe('kleinflow check', () => {
       /^error KF102 nodes\[0\]\.position/,
     ],
     ['from the future', JSON.stringify({ format: 'kleinflow', version: 99 }), /^error KF\d+ .*version/],
-  ])('reports a file that is %s and exits 1', (_what, content, message) => {
-    const r = runCli(['check', file('doc.json', content)]);
+  ])('reports a file that is %s and exits 1', async (_what, content, message) => {
+    const r = await runMain(['check', file('doc.json', content)]);
     expect(r.status).toBe(1);
     expect(r.stdout).toMatch(message);
     expectNoTrace(r.stdout + r.stderr);
@@ -279,17 +253,17 @@ describe('kleinflow check', () => {
       },
       /is a PNG without an embedded Kleinflow graph/,
     ],
-  ])('reports %s in one line and exits 1', (_what, path, message) => {
-    const r = runCli(['check', path()]);
+  ])('reports %s in one line and exits 1', async (_what, path, message) => {
+    const r = await runMain(['check', path()]);
     expect(r.status).toBe(1);
     expect(r.stdout + r.stderr).toMatch(message);
     expectNoTrace(r.stdout + r.stderr);
   });
 
-  it('checks several files, prefixing each line with its file, and fails if any fails', () => {
+  it('checks several files, prefixing each line with its file, and fails if any fails', async () => {
     mkdirSync(join(dir, 'many'), { recursive: true });
     const bad = file('many/bad.json', graph([{ id: 'x', type: 'foo', position: [0, 0], params: {} }]));
-    const r = runCli(['check', EXAMPLE, bad]);
+    const r = await runMain(['check', EXAMPLE, bad]);
     expect(r.status).toBe(1);
     expect(r.stdout).toContain(`${bad}: error KF203 nodes[0].type (node "x")`);
   });
@@ -303,15 +277,15 @@ describe('kleinflow usage', () => {
       expect(r.stdout).toMatch(new RegExp(`^  ${name} `, 'm'));
   });
 
-  it.each([['--help'], ['-h']])('%s prints the usage', (flag) => {
-    const r = runCli([flag]);
+  it.each([['--help'], ['-h']])('%s prints the usage', async (flag) => {
+    const r = await runMain([flag]);
     expect(r.status).toBe(0);
     expect(r.stdout).toContain('Usage: kleinflow COMMAND');
   });
 
-  it('COMMAND --help and help COMMAND print that command’s usage', () => {
-    expect(runCli(['sample', '--help']).stdout).toContain('Usage: kleinflow sample');
-    expect(runCli(['help', 'check']).stdout).toContain('Usage: kleinflow check');
+  it('COMMAND --help and help COMMAND print that command’s usage', async () => {
+    expect((await runMain(['sample', '--help'])).stdout).toContain('Usage: kleinflow sample');
+    expect((await runMain(['help', 'check'])).stdout).toContain('Usage: kleinflow check');
   });
 
   it('an unknown command or no command is a usage error (exit 2)', () => {

@@ -4,37 +4,29 @@
  * arriving (so memory cannot grow with the number of points).
  */
 import { spawn } from 'node:child_process';
-import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { afterAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { pngChunk, pngWith, textData } from '../src/io/support/png-chunks.ts';
-import { ROOT, runCli } from './run-cli.ts';
+import { BIN, cliTempDir, graphText, ROOT, runCli, writeIn } from './run-cli.ts';
 
-const BIN = fileURLToPath(new URL('../../src/cli/kleinflow.mjs', import.meta.url));
-const dir = mkdtempSync(join(tmpdir(), 'kleinflow-limits-'));
-afterAll(() => rmSync(dir, { recursive: true, force: true }));
+const dir = cliTempDir('kleinflow-limits-');
 
 /** One inversion in the unit circle: the cheapest graph that samples (the test is about I/O). */
-const GRAPH = join(dir, 'one-mirror.json');
-writeFileSync(
-  GRAPH,
-  JSON.stringify({
-    format: 'kleinflow',
-    version: 1,
-    meta: {},
-    nodes: [
+const GRAPH = writeIn(
+  dir,
+  'one-mirror.json',
+  graphText(
+    [
       { id: 'c', type: 'circle', position: [0, 0], params: { center: [0, 0], radius: 1 } },
       { id: 'i', type: 'inversion', position: [0, 0], params: {} },
       { id: 'out', type: 'render', position: [0, 0], params: {} },
     ],
-    edges: [
+    [
       { id: 'e1', from: { node: 'c', port: 'circle' }, to: { node: 'i', port: 'circle' } },
       { id: 'e2', from: { node: 'i', port: 'element' }, to: { node: 'out', port: 'elements' } },
     ],
-    view: { center: [0, 0], scale: 4 },
-  }),
+  ),
 );
 
 describe('endless and oversized input', () => {

@@ -6,26 +6,18 @@
  * --bounds, a 2D graph and bad options are refused in one line. (PrusaSlicer reading the 3MF:
  * mesh-prusa-slicer.test.ts.)
  */
-import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { existsSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { WebIO } from '@gltf-transform/core';
 import { unzipSync } from 'fflate';
 import { validateBytes } from 'gltf-validator';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { readStl } from '../../src/io/stl.ts';
 import { unmatchedEdges } from '../shader-gen/space/coloured-mesh.ts';
-import { ROOT, runCli } from './run-cli.ts';
+import { cliTempDir, ROOT, runCli } from './run-cli.ts';
 
 const example3d = (name: string) => join(ROOT, `examples/3d/${name}.kleinflow.json`);
-let dir = '';
-
-beforeAll(() => {
-  dir = mkdtempSync(join(tmpdir(), 'kleinflow-mesh-'));
-});
-afterAll(() => {
-  rmSync(dir, { recursive: true, force: true });
-});
+const dir = cliTempDir('kleinflow-mesh-');
 
 /** Vertices are float32 in the file: edges are matched by their coordinates. */
 function edgeCounts(triangles: ReturnType<typeof readStl>['triangles']) {

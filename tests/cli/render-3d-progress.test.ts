@@ -6,18 +6,14 @@
  * the render there).
  */
 import { spawn } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { fileURLToPath } from 'node:url';
-import { afterAll, describe, expect, it } from 'vitest';
-import { ROOT, runCli } from './run-cli.ts';
+import { describe, expect, it } from 'vitest';
+import { BIN, cliTempDir, ROOT, runCli } from './run-cli.ts';
 
-const BIN = fileURLToPath(new URL('../../src/cli/kleinflow.mjs', import.meta.url));
 const FIG26 = join(ROOT, 'examples/3d/fig26-quasi-sphere.kleinflow.json');
 const SMALL = ['--size', '20x16', '--samples', '1'];
-const dir = mkdtempSync(join(tmpdir(), 'kleinflow-render3d-threads-'));
-afterAll(() => rmSync(dir, { recursive: true, force: true }));
+const dir = cliTempDir('kleinflow-render3d-threads-');
 
 /** The first line the command writes on stderr; the command is then killed. */
 function firstStderrLine(args: readonly string[]): Promise<string> {

@@ -4,41 +4,24 @@
  * the GLSL is the baked sphere-tracing shader (valid GLSL ES), `--shadertoy` its mainImage; a 3D
  * graph with --time is refused in one line.
  */
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
-import { parseDocumentText } from '../../nodes/graph/load.ts';
-import { registry } from '../../nodes/types/index.ts';
+import { describe, expect, it } from 'vitest';
 import { compile3d } from '../../shader-gen/space/compile-3d.ts';
 import { renderScene3d } from '../../shader-gen/space/render-3d.ts';
 import { decodePng, readPngText } from '../../src/io/png.ts';
 import { shadertoyWrapper, validateShaders } from '../shader-gen/support/glslang.ts';
-import { ROOT, runCli } from './run-cli.ts';
+import { cliTempDir, evaluateFile, ROOT, runCli, runCliOk } from './run-cli.ts';
 
 const INDRA = join(ROOT, 'examples/3d/indras-bubbles.kleinflow.json');
 
-let dir = '';
-beforeAll(() => {
-  dir = mkdtempSync(join(tmpdir(), 'kleinflow-render3d-'));
-});
-afterAll(() => {
-  rmSync(dir, { recursive: true, force: true });
-});
-
-const sceneOf = (path: string) => {
-  const loaded = parseDocumentText(readFileSync(path, 'utf8'), registry);
-  if (!loaded.ok) throw new Error('example does not load');
-  return evaluateGraph(loaded.doc, registry).scene3d!;
-};
+const dir = cliTempDir('kleinflow-render3d-');
+const sceneOf = (path: string) => evaluateFile(path).scene3d!;
 
 describe('kleinflow render / glsl on a 3D graph', () => {
   it('renders the sphere-traced picture with the graph embedded', () => {
     const out = join(dir, 'indra.png');
-    const run = runCli(['render', INDRA, '-o', out, '--size', '48x36', '--samples', '1']);
-    expect(run.stderr).toBe('');
-    expect(run.status).toBe(0);
+    const run = runCliOk(['render', INDRA, '-o', out, '--size', '48x36', '--samples', '1']);
     expect(run.stdout).toMatch(/^wrote .*indra\.png \(48×36, 1 samples\/px/);
     const bytes = readFileSync(out);
     const png = decodePng(bytes);

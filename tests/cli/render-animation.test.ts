@@ -1,32 +1,22 @@
 /** `kleinflow render --time / --frames`: the real executable on the animated example. */
-import { mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { countGifFrames } from '../../src/io/gif.ts';
 import { decodePng } from '../../src/io/png.ts';
-import { ROOT, runCli } from './run-cli.ts';
+import { cliTempDir, ROOT, runCli, runCliOk } from './run-cli.ts';
 
 const ANIMATED = join(ROOT, 'examples/animated-breathing-loxodromic.kleinflow.json');
 const SMALL = ['--size', '24x16', '--samples', '1'];
-let dir = '';
+const dir = cliTempDir('kleinflow-anim-');
 const bytes = (path: string) => new Uint8Array(readFileSync(path));
 const pixels = (path: string) => decodePng(bytes(path)).data;
-
-beforeAll(() => {
-  dir = mkdtempSync(join(tmpdir(), 'kleinflow-anim-'));
-});
-afterAll(() => {
-  rmSync(dir, { recursive: true, force: true });
-});
 
 describe('kleinflow render --time', () => {
   it('renders the frame at time T; one loop (10 s) later it is the same picture', () => {
     const at = (t: string) => {
       const out = join(dir, `t${t}.png`);
-      const r = runCli(['render', ANIMATED, '--time', t, '-o', out, ...SMALL]);
-      expect(r.stderr).toBe('');
-      expect(r.status).toBe(0);
+      runCliOk(['render', ANIMATED, '--time', t, '-o', out, ...SMALL]);
       return pixels(out);
     };
     const first = at('0');
@@ -44,9 +34,18 @@ describe('kleinflow render --time', () => {
 describe('kleinflow render --frames', () => {
   it('writes a numbered PNG sequence, the same bytes run after run, splittable by --frame-range', () => {
     const run = (out: string, extra: string[] = []) => {
-      const r = runCli(['render', ANIMATED, '--frames', '4', '--fps', '2', '--out', out, ...SMALL, ...extra]);
-      expect(r.stderr).toBe('');
-      expect(r.status).toBe(0);
+      const r = runCliOk([
+        'render',
+        ANIMATED,
+        '--frames',
+        '4',
+        '--fps',
+        '2',
+        '--out',
+        out,
+        ...SMALL,
+        ...extra,
+      ]);
       return r;
     };
     const a = join(dir, 'seq-a');
@@ -74,9 +73,7 @@ describe('kleinflow render --frames', () => {
 
   it('writes a looping GIF with one image per frame; "loop" is one exact loop', () => {
     const gif = join(dir, 'loop.gif');
-    const r = runCli(['render', ANIMATED, '--frames', 'loop', '--fps', '1', '--out', gif, ...SMALL]);
-    expect(r.stderr).toBe('');
-    expect(r.status).toBe(0);
+    runCliOk(['render', ANIMATED, '--frames', 'loop', '--fps', '1', '--out', gif, ...SMALL]);
     expect(countGifFrames(bytes(gif))).toBe(10); // the example loops every 10 s
     const again = join(dir, 'again.gif');
     runCli(['render', ANIMATED, '--frames', 'loop', '--fps', '1', '--out', again, ...SMALL]);

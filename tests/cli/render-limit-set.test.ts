@@ -3,38 +3,24 @@
  * is the traced picture with the limit-set dots painted over it by shader-gen/space/limit-dots-3d.ts
  * (pixel for pixel), and the dots are there.
  */
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
-import { parseDocumentText } from '../../nodes/graph/load.ts';
-import { registry } from '../../nodes/types/index.ts';
+import { describe, expect, it } from 'vitest';
 import { paintSceneLimitSets3d } from '../../shader-gen/space/limit-dots-3d.ts';
 import { renderScene3d } from '../../shader-gen/space/render-3d.ts';
 import { decodePng } from '../../src/io/png.ts';
-import { ROOT, runCli } from './run-cli.ts';
+import { cliTempDir, evaluateFile, ROOT, runCliOk } from './run-cli.ts';
 
 const FIG6 = join(ROOT, 'examples/3d/fig06-quaternion-kleinian-group.kleinflow.json');
 
-let dir = '';
-beforeAll(() => {
-  dir = mkdtempSync(join(tmpdir(), 'kleinflow-fig6-'));
-});
-afterAll(() => {
-  rmSync(dir, { recursive: true, force: true });
-});
+const dir = cliTempDir('kleinflow-fig6-');
 
 describe('kleinflow render on a quaternion Kleinian group', () => {
   it('paints the limit set over the traced picture', () => {
     const out = join(dir, 'fig6.png');
-    const run = runCli(['render', FIG6, '-o', out, '--size', '96x80', '--samples', '1']);
-    expect(run.stderr).toBe('');
-    expect(run.status).toBe(0);
+    runCliOk(['render', FIG6, '-o', out, '--size', '96x80', '--samples', '1']);
     const png = decodePng(readFileSync(out));
-    const loaded = parseDocumentText(readFileSync(FIG6, 'utf8'), registry);
-    if (!loaded.ok) throw new Error('example does not load');
-    const scene = evaluateGraph(loaded.doc, registry).scene3d!;
+    const scene = evaluateFile(FIG6).scene3d!;
     const expected = renderScene3d(scene, 96, 80, { samples: 1 });
     const background = Buffer.from(expected.data);
     paintSceneLimitSets3d(scene, expected);

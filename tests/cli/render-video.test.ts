@@ -3,28 +3,23 @@
  * mediabunny reads back with the codec, size, frame count and duration asked for, and whose
  * decoded frame shows the CPU's picture of that time (loosely: the codecs are lossy).
  */
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { registerMediabunnyServer } from '@mediabunny/server';
 import { ALL_FORMATS, BufferSource, Input, VideoSampleSink } from 'mediabunny';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { beforeAll, describe, expect, it } from 'vitest';
 import { registry } from '../../nodes/types/index.ts';
 import { renderFrameAt } from '../../src/cli/frame-render.ts';
 import { openDocumentText } from '../../src/io/document-io.ts';
-import { ROOT, runCli } from './run-cli.ts';
+import { cliTempDir, ROOT, runCli } from './run-cli.ts';
 
 const ART = join(ROOT, 'examples/fig43-tessellation-artwork.kleinflow.json');
 /** One frame a second of the 12 s loop, one sample, one worker thread: seconds, not minutes. */
 const QUICK = ['--fps', '1', '--samples', '1', '--threads', '1'];
-let dir = '';
+const dir = cliTempDir('kleinflow-video-');
 
 beforeAll(() => {
-  dir = mkdtempSync(join(tmpdir(), 'kleinflow-video-'));
   registerMediabunnyServer({ hardwareContext: null }); // decoders for reading the files back
-});
-afterAll(() => {
-  rmSync(dir, { recursive: true, force: true });
 });
 
 /** The file's video track: codec, size, packet count, duration and the RGBA frame shown at `time`. */

@@ -1,36 +1,15 @@
-/**
- * `kleinflow sample` on a 3D graph, through the real executable: [x, y, z] points in, per point
- * depth, final x, y, z, escaped and the signed distance to the seeds' orbit out; a point of the
- * wrong dimension is refused in one line.
- */
-import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { iis3d } from '../../nodes/geometry/space/iis-3d.ts';
 import { invertInSphere } from '../../nodes/geometry/space/sphere.ts';
-import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
-import { parseDocumentText } from '../../nodes/graph/load.ts';
-import { registry } from '../../nodes/types/index.ts';
-import { ROOT, runCli } from './run-cli.ts';
+import { cliTempDir, evaluateFile, ROOT, runCli, writeIn } from './run-cli.ts';
 
 const FIG11 = join(ROOT, 'examples/3d/fig11-sphere-inversion-fractal.kleinflow.json');
 const CUBE = join(ROOT, 'examples/3d/fig24-orbit-of-a-cube.kleinflow.json');
 const PLANE = join(ROOT, 'examples/hyperbolic-237.kleinflow.json');
 
-let dir = '';
-const file = (name: string, content: string) => {
-  const p = join(dir, name);
-  writeFileSync(p, content);
-  return p;
-};
-beforeAll(() => {
-  dir = mkdtempSync(join(tmpdir(), 'kleinflow-sample3d-'));
-});
-afterAll(() => {
-  rmSync(dir, { recursive: true, force: true });
-});
-
+const dir = cliTempDir('kleinflow-sample3d-');
+const file = (name: string, content: string) => writeIn(dir, name, content);
 type Row = { depth: number; x: number; y: number; z: number; escaped: boolean; distance: number | null };
 const sample = (graph: string, points: unknown) => {
   const r = runCli(['sample', graph, '--points', file('pts.json', JSON.stringify(points))]);
@@ -48,9 +27,7 @@ describe('kleinflow sample, 3D graph', () => {
     const r = sample(FIG11, pts);
     expect(r.stderr).toBe('');
     expect(r.status).toBe(0);
-    const loaded = parseDocumentText(readFileSync(FIG11, 'utf8'), registry);
-    if (!loaded.ok) throw new Error('example does not load');
-    const scene = evaluateGraph(loaded.doc, registry).scene3d!;
+    const scene = evaluateFile(FIG11).scene3d!;
     r.rows.forEach((row, i) => {
       expect(Object.keys(row)).toEqual(['depth', 'x', 'y', 'z', 'escaped', 'distance']);
       const want = iis3d(scene.elements, pts[i]!, scene.maxIterations);

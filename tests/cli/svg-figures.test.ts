@@ -1,27 +1,16 @@
-import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { decodePng } from '../../src/io/png.ts';
 import { parseXml } from '../support/xml.ts';
-import { ROOT, runCli } from './run-cli.ts';
+import { cliTempDir, example, runCli, runCliOk } from './run-cli.ts';
 
-const example = (name: string) => join(ROOT, `examples/${name}.kleinflow.json`);
-let dir = '';
-
-beforeAll(() => {
-  dir = mkdtempSync(join(tmpdir(), 'kleinflow-figures-'));
-});
-afterAll(() => {
-  rmSync(dir, { recursive: true, force: true });
-});
+const dir = cliTempDir('kleinflow-figures-');
 
 describe('kleinflow figures (Cayley graph, depth-first limit set)', () => {
   it('svg writes the depth-first limit set over the tiling and counts it', () => {
     const out = join(dir, 'dfs.svg');
-    const r = runCli(['svg', example('fig05-limit-set-depth-first'), '--out', out, '--size', '300x300']);
-    expect(r.stderr).toBe('');
-    expect(r.status).toBe(0);
+    const r = runCliOk(['svg', example('fig05-limit-set-depth-first'), '--out', out, '--size', '300x300']);
     const said = /, (\d+) figure strokes and points/.exec(r.stdout);
     expect(said).not.toBeNull();
     const figures = parseXml(readFileSync(out, 'utf8')).querySelector('g.figures');

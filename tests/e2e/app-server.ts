@@ -100,6 +100,10 @@ export interface SessionOptions {
   readonly query?: string;
   readonly problems?: string[];
   readonly consoleErrors?: boolean;
+  /** Run on the new context before the page opens, e.g. to add an init script. */
+  readonly prepareContext?: (context: BrowserContext) => Promise<unknown>;
+  /** Run on the new page before it goes to the app, e.g. to listen to it. */
+  readonly watchPage?: (page: Page) => unknown;
 }
 
 /**
@@ -110,7 +114,9 @@ export interface SessionOptions {
 export async function openAppSession(options: SessionOptions = {}): Promise<AppSession> {
   const app = await serveApp();
   const context = await app.newContext(options.viewport);
+  await options.prepareContext?.(context);
   const page = await context.newPage();
+  options.watchPage?.(page);
   const { problems } = options;
   if (problems) {
     if (options.consoleErrors)

@@ -23,6 +23,8 @@ export interface SuiteSessionOptions extends SessionOptions {
   readonly open?: () => Promise<AppSession>;
   /** What the page must have done before the first test, e.g. waitRendered. */
   readonly ready?: (page: Page) => Promise<unknown>;
+  /** How long opening and `ready` may take (default SETUP_TIMEOUT_MS). */
+  readonly setupTimeout?: number;
 }
 
 /**
@@ -47,20 +49,21 @@ function forTheSuite<T>(
   open: () => Promise<T>,
   appOf: (opened: T) => ServedApp,
   use: (opened: T) => unknown,
+  timeout = SETUP_TIMEOUT_MS,
 ) {
   let app: ServedApp | undefined;
   beforeAll(async () => {
     const opened = await open();
     app = appOf(opened);
     await use(opened);
-  }, SETUP_TIMEOUT_MS);
+  }, timeout);
   afterAll(async () => {
     await app?.close();
   });
 }
 
-/** One served app for the suite (each test opens its own contexts on it). */
-export function servedAppForSuite(use: (app: ServedApp) => void, options: ServeOptions = {}): void {
+/** One served app for the suite (each test opens its own contexts on it); `use` may be async. */
+export function servedAppForSuite(use: (app: ServedApp) => unknown, options: ServeOptions = {}): void {
   forTheSuite(
     () => serveApp(options),
     (app) => app,
@@ -80,5 +83,6 @@ export function appSessionForSuite(
       use(session);
       await options.ready?.(session.page);
     },
+    options.setupTimeout,
   );
 }

@@ -5,11 +5,12 @@
 import { existsSync, mkdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import type { BrowserContext, Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { EXAMPLES_3D_DIR, EXAMPLES_THUMB_DIR, exampleNames, examplePath } from '../../src/cli/examples.ts';
-import { openAppSession, repoRoot, type ServedApp } from './app-server.ts';
+import { repoRoot, type ServedApp } from './app-server.ts';
+import { appSessionForSuite } from './app-suite.ts';
 import {
   addNode,
   connect,
@@ -41,13 +42,7 @@ const thumbCount =
   exampleTitles.length +
   examples3d.filter((name) => existsSync(join(EXAMPLES_THUMB_DIR, `${name}.png`))).length;
 
-beforeAll(async () => {
-  ({ app, context, page } = await openAppSession({ problems, consoleErrors: true }));
-}, 180_000);
-
-afterAll(async () => {
-  await app?.close();
-});
+appSessionForSuite((s) => ({ app, context, page } = s), { problems, consoleErrors: true });
 
 describe('editor', () => {
   it('opens on the default example and draws a picture', async () => {

@@ -6,12 +6,13 @@
  */
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import type { BrowserContext, Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import type { Page } from 'playwright-core';
+import { describe, expect, it } from 'vitest';
 import type { ViewportStats } from '../../src/viewport/viewport-types.ts';
 import { compareImages } from '../src/viewport/fixtures.ts';
 import { sceneOf } from '../support/examples.ts';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { repoRoot } from './app-server.ts';
+import { appSessionForSuite } from './app-suite.ts';
 import { nodeEl } from './editor-page.ts';
 
 const EXAMPLE = 'four-disks-in-a-square';
@@ -21,42 +22,33 @@ const doc = JSON.parse(docText);
 const BROKEN_SOURCE = 1;
 const brokenNode = sceneOf(doc).elements[BROKEN_SOURCE - 1].nodeId;
 
-let app: ServedApp;
-let context: BrowserContext;
 let page: Page;
 const problems: string[] = [];
 
-beforeAll(async () => {
-  app = await serveApp();
-  // A smaller window than the editor suite's: SwiftShader draws the render pane on the CPU.
-  context = await app.newContext({ width: 1280, height: 720 });
-  await context.addInitScript((text) => {
-    // Open the example the way a returning user does: from the autosave.
-    localStorage.setItem('kleinflow.autosave', text);
-    // A driver that refuses shaders: with __kfInjectInto = N, every shader whose text has the
-    // block `#line 1 N` gets an undeclared identifier there (the compiler reports it as N:line).
-    const w = window as unknown as { __kfInjectInto: number | null };
-    w.__kfInjectInto = null;
-    const original = WebGL2RenderingContext.prototype.shaderSource;
-    WebGL2RenderingContext.prototype.shaderSource = function (shader, source) {
-      const marker = `#line 1 ${w.__kfInjectInto}\n`;
-      const patched =
-        w.__kfInjectInto !== null && source.includes(marker)
-          ? source.replace(marker, `${marker}kf_injected_error = 1.0;\n`)
-          : source;
-      original.call(this, shader, patched);
-    };
-  }, docText);
-  page = await context.newPage();
-  page.on('console', (m) => {
-    if (m.type() === 'error') problems.push(`console: ${m.text()}`);
-  });
-  page.on('pageerror', (e) => problems.push(`pageerror: ${e.message}`));
-  await page.goto(`${app.url}?test`);
-}, 180_000);
-
-afterAll(async () => {
-  await app?.close();
+// A smaller window than the editor suite's: SwiftShader draws the render pane on the CPU.
+appSessionForSuite((s) => ({ page } = s), {
+  viewport: { width: 1280, height: 720 },
+  query: '?test',
+  problems,
+  consoleErrors: true,
+  prepareContext: (context) =>
+    context.addInitScript((text) => {
+      // Open the example the way a returning user does: from the autosave.
+      localStorage.setItem('kleinflow.autosave', text);
+      // A driver that refuses shaders: with __kfInjectInto = N, every shader whose text has the
+      // block `#line 1 N` gets an undeclared identifier there (the compiler reports it as N:line).
+      const w = window as unknown as { __kfInjectInto: number | null };
+      w.__kfInjectInto = null;
+      const original = WebGL2RenderingContext.prototype.shaderSource;
+      WebGL2RenderingContext.prototype.shaderSource = function (shader, source) {
+        const marker = `#line 1 ${w.__kfInjectInto}\n`;
+        const patched =
+          w.__kfInjectInto !== null && source.includes(marker)
+            ? source.replace(marker, `${marker}kf_injected_error = 1.0;\n`)
+            : source;
+        original.call(this, shader, patched);
+      };
+    }, docText),
 });
 
 const stats = () => page.evaluate(() => window.__kleinflow!.viewport!.stats) as Promise<ViewportStats>;

@@ -6,11 +6,10 @@
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
-import { decodePng } from '../../src/io/png.ts';
 import { parseXml } from '../support/xml.ts';
 import { appSessionForSuite } from './app-suite.ts';
 import { waitRendered } from './editor-page.ts';
-import { menu, openExampleFile } from './io-page.ts';
+import { exportPng, menu, openExampleFile } from './io-page.ts';
 
 let page: Page;
 appSessionForSuite((s) => ({ page } = s), { ready: waitRendered });
@@ -48,14 +47,7 @@ describe('figures over the render', () => {
   it('paints the Cayley graph into the exported PNG (the generator colours are there)', async () => {
     await openExample('fig01-cayley-graph');
     await waitRendered(page);
-    await menu(page, 'Export', 'PNG image');
-    const dialog = page.getByRole('dialog', { name: 'Export PNG' });
-    await dialog.getByLabel('Samples').fill('1');
-    const [download] = await Promise.all([
-      page.waitForEvent('download', { timeout: 120_000 }),
-      dialog.getByRole('button', { name: /^Export \d+/ }).click(),
-    ]);
-    const image = decodePng(new Uint8Array(readFileSync((await download.path()) as string)));
+    const image = await exportPng(page, { samples: 1 });
     // Pixels of the first generator's colour (#f24336, sRGB 0.95, 0.26, 0.21): only its edges have it.
     let red = 0;
     for (let i = 0; i < image.data.length; i += 4) {

@@ -5,12 +5,11 @@
  */
 import { readFileSync } from 'node:fs';
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { examplePath } from '../../src/cli/examples.ts';
-import { type ServedApp, serveApp } from './app-server.ts';
+import { appSessionForSuite } from './app-suite.ts';
 import { waitRendered } from './editor-page.ts';
 
-let app: ServedApp;
 let page: Page;
 
 /** The document's view, read through the test hooks (`?test`). */
@@ -33,15 +32,12 @@ async function openExample(title: string) {
   await expect.poll(() => page.getByLabel('Document title').inputValue()).toBe(title);
 }
 
-beforeAll(async () => {
-  app = await serveApp();
-  // A render pane much taller than wide (25 % of 1200 px): a square-framed example would be cropped.
-  page = await (await app.newContext({ width: 1200, height: 900 })).newPage();
-  await page.goto(`${app.url}?test`);
-  await page.getByRole('button', { name: 'Help' }).waitFor();
-}, 180_000);
-
-afterAll(() => app?.close());
+// A render pane much taller than wide (25 % of 1200 px): a square-framed example would be cropped.
+appSessionForSuite((s) => ({ page } = s), {
+  viewport: { width: 1200, height: 900 },
+  query: '?test',
+  ready: (p) => p.getByRole('button', { name: 'Help' }).waitFor(),
+});
 
 describe('framing', () => {
   it('opens an example in a tall pane zoomed out so its width fits, and undo restores the previous view', async () => {

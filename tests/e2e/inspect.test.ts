@@ -6,11 +6,10 @@
  * click on a construction handle inspects instead of dragging it. Saves the README screenshot.
  */
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { type ServedApp, serveApp } from './app-server.ts';
+import { describe, expect, it } from 'vitest';
+import { appSessionForSuite } from './app-suite.ts';
 import { waitRendered } from './editor-page.ts';
 
-let app: ServedApp;
 let page: Page;
 
 const SCREENSHOT = 'examples/screenshots/inspect.png';
@@ -37,23 +36,21 @@ async function clickPicture(fx: number, fy: number, modifiers: ('Alt' | 'Shift')
 const panel = () => page.getByRole('region', { name: 'Explain this pixel' });
 const inspectButton = () => page.getByRole('button', { name: 'Inspect', exact: true });
 
-beforeAll(async () => {
-  app = await serveApp();
-  const context = await app.newContext({ width: 1600, height: 900 });
+appSessionForSuite((s) => ({ page } = s), {
+  viewport: { width: 1600, height: 900 },
+  query: '?test',
   // A wide render pane for the screenshot (the suite's default gives the graph 75 %).
-  await context.addInitScript(() => localStorage.setItem('kleinflow.split', '0.3'));
-  page = await context.newPage();
-  await page.goto(`${app.url}?test`);
-  await page.getByRole('button', { name: 'Help' }).waitFor();
-  await openExample('(2,3,7) hyperbolic tessellation');
-  // Zoomed out a little: the docked panel leaves the disk's middle, where the orbit ends, in view.
-  const b = (await page.getByTestId('render-pane').boundingBox())!;
-  await page.mouse.move(b.x + b.width * 0.22, b.y + b.height / 2);
-  await page.mouse.wheel(0, 240);
-  await waitRendered(page);
-}, 180_000);
-
-afterAll(() => app?.close());
+  prepareContext: (context) => context.addInitScript(() => localStorage.setItem('kleinflow.split', '0.3')),
+  ready: async () => {
+    await page.getByRole('button', { name: 'Help' }).waitFor();
+    await openExample('(2,3,7) hyperbolic tessellation');
+    // Zoomed out a little: the docked panel leaves the disk's middle, where the orbit ends, in view.
+    const b = (await page.getByTestId('render-pane').boundingBox())!;
+    await page.mouse.move(b.x + b.width * 0.22, b.y + b.height / 2);
+    await page.mouse.wheel(0, 240);
+    await waitRendered(page);
+  },
+});
 
 describe('Explain this pixel', () => {
   it('inspects a pixel of (2,3,7): the word is as long as the depth, and the GPU agrees', async () => {

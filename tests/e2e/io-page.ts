@@ -3,6 +3,7 @@ import { readFileSync } from 'node:fs';
 import { basename, join } from 'node:path';
 import type { Page } from 'playwright-core';
 import { expect } from 'vitest';
+import { decodePng } from '../../src/io/png.ts';
 import { repoRoot } from './app-server.ts';
 
 /** Clicks Save and returns the downloaded file's name and text. */
@@ -77,6 +78,26 @@ export async function pasteText(page: Page, text: string) {
 export async function menu(page: Page, label: string, item: string) {
   await page.getByRole('button', { name: new RegExp(`^${label}`) }).click();
   await page.getByRole('menuitem', { name: new RegExp(item) }).click();
+}
+
+/**
+ * Export → PNG image with `samples` per pixel (and the size, where given): the downloaded picture,
+ * decoded. Waits up to two minutes for the download (SwiftShader renders it).
+ */
+export async function exportPng(
+  page: Page,
+  options: { readonly samples: number; readonly width?: number; readonly height?: number },
+): Promise<ReturnType<typeof decodePng>> {
+  await menu(page, 'Export', 'PNG image');
+  const dialog = page.getByRole('dialog', { name: 'Export PNG' });
+  if (options.width !== undefined) await dialog.getByLabel('Width in pixels').fill(String(options.width));
+  if (options.height !== undefined) await dialog.getByLabel('Height in pixels').fill(String(options.height));
+  await dialog.getByLabel('Samples').fill(String(options.samples));
+  const [download] = await Promise.all([
+    page.waitForEvent('download', { timeout: 120_000 }),
+    dialog.getByRole('button', { name: /^Export \d+/ }).click(),
+  ]);
+  return decodePng(new Uint8Array(readFileSync((await download.path())!)));
 }
 
 /**

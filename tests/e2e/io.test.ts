@@ -8,7 +8,7 @@ import { existsSync, mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { deflateSync, strToU8 } from 'fflate';
 import type { BrowserContext, Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { beforeAll, describe, expect, it } from 'vitest';
 import { LIMITS } from '../../nodes/core/scene.ts';
 import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
@@ -18,7 +18,8 @@ import { encodeBase64Url } from '../../src/io/base64url.ts';
 import { decodePng, encodePng } from '../../src/io/png.ts';
 import { extractGraph } from '../../src/io/png-graph.ts';
 import { AUTOSAVE_KEY } from '../../src/state/autosave.ts';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { repoRoot, type ServedApp } from './app-server.ts';
+import { appSessionForSuite } from './app-suite.ts';
 import { waitRendered } from './editor-page.ts';
 import {
   boxDownscale,
@@ -51,18 +52,10 @@ function watch(p: Page): Page {
 const example = (id: string) => readFileSync(join(repoRoot, 'examples', `${id}.kleinflow.json`), 'utf8');
 const report = (p: Page) => p.getByTestId('open-report');
 
-beforeAll(async () => {
+beforeAll(() => {
   mkdirSync(shots, { recursive: true });
-  app = await serveApp();
-  context = await app.newContext();
-  page = watch(await context.newPage());
-  await page.goto(app.url);
-  await waitRendered(page);
-}, 180_000);
-
-afterAll(async () => {
-  await app?.close();
 });
+appSessionForSuite((s) => ({ app, context, page } = s), { watchPage: watch, ready: waitRendered });
 
 describe('save and open', () => {
   it('Save downloads <title>.kleinflow.json and opening it is lossless and one undo step', async () => {

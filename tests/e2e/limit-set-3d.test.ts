@@ -1,24 +1,12 @@
-/**
- * Fig. 6 in real Chromium: the quaternion Kleinian group example draws its limit set as shaded dots
- * on the 3D view's overlay canvas (the painter of `kleinflow render`, shader-gen/space/
- * limit-dots-3d.ts), an orbit of the camera redraws them from the new point of view, and
- * Export → PNG carries them.
- */
-import { readFileSync } from 'node:fs';
-import { join } from 'node:path';
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { decodePng } from '../../src/io/png.ts';
-import { repoRoot, type ServedApp } from './app-server.ts';
-import { menu, openViaPicker } from './io-page.ts';
-import { openSmall3dPane } from './view-3d-page.ts';
+import { describe, expect, it } from 'vitest';
+import { appSessionForSuite } from './app-suite.ts';
+import { exportPng } from './io-page.ts';
+import { open3dExample, openSmall3dPane } from './view-3d-page.ts';
 
 const ID = 'fig06-quaternion-kleinian-group';
-const file = readFileSync(join(repoRoot, 'examples', '3d', `${ID}.kleinflow.json`));
-const TITLE = JSON.parse(file.toString('utf8')).meta.title as string;
 const SLOW = { timeout: 90_000 };
 
-let app: ServedApp;
 let page: Page;
 
 /** The overlay canvas's opaque pixels, and a digest of where they are. */
@@ -35,18 +23,10 @@ const dotPixels = () =>
     return { count, where, width: c.width };
   });
 
-beforeAll(async () => {
-  ({ app, page } = await openSmall3dPane());
-  await openViaPicker(page, `${ID}.kleinflow.json`, file);
-  await page.waitForFunction(
-    (title) => window.__kleinflow!.store.getState().doc.meta.title === title,
-    TITLE,
-    SLOW,
-  );
-}, 240_000);
-
-afterAll(async () => {
-  await app?.close();
+appSessionForSuite((s) => ({ page } = s), {
+  open: openSmall3dPane,
+  ready: (p) => open3dExample(p, ID),
+  setupTimeout: 240_000,
 });
 
 describe('the limit set of a quaternion Kleinian group in the 3D view', () => {
@@ -67,14 +47,7 @@ describe('the limit set of a quaternion Kleinian group in the 3D view', () => {
   });
 
   it('paints the dots into the exported PNG (the background alone is dark)', async () => {
-    await menu(page, 'Export', 'PNG image');
-    const dialog = page.getByRole('dialog', { name: 'Export PNG' });
-    await dialog.getByLabel('Samples').fill('1');
-    const [download] = await Promise.all([
-      page.waitForEvent('download', { timeout: 120_000 }),
-      dialog.getByRole('button', { name: /^Export \d+/ }).click(),
-    ]);
-    const image = decodePng(new Uint8Array(readFileSync((await download.path()) as string)));
+    const image = await exportPng(page, { samples: 1 });
     let lit = 0;
     for (let i = 0; i < image.data.length; i += 4)
       if (Math.max(image.data[i]!, image.data[i + 1]!, image.data[i + 2]!) > 100) lit++;

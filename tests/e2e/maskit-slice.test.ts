@@ -4,12 +4,11 @@
  * empty space still pans and leaves μ alone. The page runs with `?test` (window.__kleinflow).
  */
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { type ServedApp, serveApp } from './app-server.ts';
+import { describe, expect, it } from 'vitest';
+import { appSessionForSuite } from './app-suite.ts';
 import { nodeEl } from './editor-page.ts';
 
 const TITLE = 'The Maskit slice — a map of parameters';
-let app: ServedApp;
 let page: Page;
 
 /** The slice node's μ and the document's view, through the test hooks. */
@@ -20,17 +19,24 @@ const state = () =>
     return { mu: [...(slice.params.mu as number[])], center: [...doc.view.center], scale: doc.view.scale };
   });
 
-beforeAll(async () => {
-  app = await serveApp();
-  page = await (await app.newContext()).newPage();
-  await page.goto(`${app.url}?test`);
-  await page.getByRole('button', { name: 'Examples' }).click();
-  const gallery = page.getByRole('dialog', { name: 'Examples' });
-  await gallery.locator('.kf-gallery__card').filter({ hasText: TITLE }).first().click();
-  await gallery.waitFor({ state: 'detached' });
-}, 180_000);
-
-afterAll(() => app?.close());
+appSessionForSuite((s) => ({ page } = s), {
+  query: '?test',
+  ready: async () => {
+    await page.getByRole('button', { name: 'Examples' }).click();
+    const gallery = page.getByRole('dialog', { name: 'Examples' });
+    await gallery.locator('.kf-gallery__card').filter({ hasText: TITLE }).first().click();
+    await gallery.waitFor({ state: 'detached' });
+    await page.waitForFunction((t) => window.__kleinflow!.store.getState().doc.meta.title === t, TITLE);
+    // One sample a pixel (not history): the test reads μ and the view, never the picture, and
+    // SwiftShader re-accumulating 8 samples after every click and pan step blocks the page.
+    await page.evaluate(() =>
+      window.__kleinflow!.store.dispatchSilently({
+        type: 'set-params',
+        patches: [{ nodeId: 'out', params: { samples: 1 } }],
+      }),
+    );
+  },
+});
 
 describe('Maskit slice', () => {
   it('a click in the pane places μ (one undo step); a drag on empty space pans instead', async () => {

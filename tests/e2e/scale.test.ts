@@ -6,8 +6,9 @@
  */
 import { join } from 'node:path';
 import type { BrowserContext, Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { repoRoot, type ServedApp, serveApp } from './app-server.ts';
+import { describe, expect, it } from 'vitest';
+import { repoRoot, type ServedApp } from './app-server.ts';
+import { servedAppForSuite } from './app-suite.ts';
 import { draggableNode, dragNode, editorScaleGraph, openLarge } from './scale-page.ts';
 
 const NODES = 500;
@@ -18,13 +19,9 @@ let context: BrowserContext;
 let page: Page;
 const problems: string[] = [];
 
-beforeAll(async () => {
-  app = await serveApp();
+servedAppForSuite(async (served) => {
+  app = served;
   context = await app.newContext({ width: 1280, height: 720 });
-}, 180_000);
-
-afterAll(async () => {
-  await app?.close();
 });
 
 describe('editor at scale', () => {

@@ -3,29 +3,41 @@
  * blocking the page, so they open the editor with a small render pane; and they look for pane
  * points away from the drawn handles (where a drag orbits the camera rather than grabbing).
  */
-import type { BrowserContext, Page } from 'playwright-core';
-import { type ServedApp, serveApp } from './app-server.ts';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import type { Page } from 'playwright-core';
+import { type AppSession, openAppSession, repoRoot } from './app-server.ts';
 import { waitRendered } from './editor-page.ts';
+import { openViaPicker } from './io-page.ts';
 
-export interface Small3dSession {
-  readonly app: ServedApp;
-  readonly context: BrowserContext;
-  readonly page: Page;
-}
+export type Small3dSession = AppSession;
 
 /**
  * The editor at 760 × 420 with the render pane 20 % of the width (about 150 × 350 px), opened and
  * its start-up picture rendered.
  */
 export async function openSmall3dPane(): Promise<Small3dSession> {
-  const app = await serveApp();
-  const context = await app.newContext({ width: 760, height: 420 });
-  await context.addInitScript(() => localStorage.setItem('kleinflow.split', '0.8'));
-  const page = await context.newPage();
-  page.setDefaultTimeout(90_000);
-  await page.goto(`${app.url}?test`);
-  await waitRendered(page);
-  return { app, context, page };
+  const session = await openAppSession({
+    viewport: { width: 760, height: 420 },
+    query: '?test',
+    prepareContext: (context) => context.addInitScript(() => localStorage.setItem('kleinflow.split', '0.8')),
+    watchPage: (page) => page.setDefaultTimeout(90_000),
+  });
+  await waitRendered(session.page);
+  return session;
+}
+
+/**
+ * Opens examples/3d/`id`.kleinflow.json through the picker and waits (up to 90 s: the 3D pane
+ * blocks the page while SwiftShader traces) until the store holds the example's title.
+ */
+export async function open3dExample(page: Page, id: string): Promise<void> {
+  const file = readFileSync(join(repoRoot, 'examples', '3d', `${id}.kleinflow.json`));
+  const title = JSON.parse(file.toString('utf8')).meta.title as string;
+  await openViaPicker(page, `${id}.kleinflow.json`, file);
+  await page.waitForFunction((t) => window.__kleinflow!.store.getState().doc.meta.title === t, title, {
+    timeout: 90_000,
+  });
 }
 
 /** The page-coordinate centre of every drawn handle knob. */

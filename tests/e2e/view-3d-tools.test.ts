@@ -7,59 +7,48 @@
  * view-3d.test.ts (SwiftShader sphere-traces slowly).
  */
 import { readFileSync } from 'node:fs';
-import { join } from 'node:path';
 import type { Page } from 'playwright-core';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { explainPixel3d } from '../../shader-gen/space/explain-3d.ts';
 import { standaloneShader } from '../../shader-gen/standalone.ts';
 import { shadertoyWrapper, validateShaders } from '../shader-gen/support/glslang.ts';
-import { repoRoot, type ServedApp } from './app-server.ts';
+import { appSessionForSuite } from './app-suite.ts';
 import { waitRendered } from './editor-page.ts';
-import { openViaPicker } from './io-page.ts';
-import { freePanePoint, handleCentres, openSmall3dPane } from './view-3d-page.ts';
+import { freePanePoint, handleCentres, open3dExample, openSmall3dPane } from './view-3d-page.ts';
 
 const ID = 'fig11-sphere-inversion-fractal';
-const file = readFileSync(join(repoRoot, 'examples', '3d', `${ID}.kleinflow.json`));
-const TITLE = JSON.parse(file.toString('utf8')).meta.title as string;
 const SLOW = { timeout: 90_000 };
 
-let app: ServedApp;
 let page: Page;
 
 const doc = () => page.evaluate(() => window.__kleinflow!.store.getState().doc) as Promise<GraphDoc>;
 
-beforeAll(async () => {
-  ({ app, page } = await openSmall3dPane());
-  await openViaPicker(page, `${ID}.kleinflow.json`, file);
-  await page.waitForFunction(
-    (title) => window.__kleinflow!.store.getState().doc.meta.title === title,
-    TITLE,
-    SLOW,
-  );
-  // Cheap values for SwiftShader (never a recompile); a camera of the view's own, as after an orbit.
-  await page.evaluate(() => {
-    const store = window.__kleinflow!.store;
-    store.dispatchSilently({
-      type: 'set-params',
-      patches: [
-        {
-          nodeId: 'render',
-          params: { samples: 1, occlusion: 0, shadow: 0, maxIterations: 10, marchSteps: 48 },
-        },
-      ],
+appSessionForSuite((s) => ({ page } = s), {
+  open: openSmall3dPane,
+  setupTimeout: 240_000,
+  ready: async (p) => {
+    await open3dExample(p, ID);
+    // Cheap values for SwiftShader (never a recompile); a camera of the view's own, as after an orbit.
+    await p.evaluate(() => {
+      const store = window.__kleinflow!.store;
+      store.dispatchSilently({
+        type: 'set-params',
+        patches: [
+          {
+            nodeId: 'render',
+            params: { samples: 1, occlusion: 0, shadow: 0, maxIterations: 10, marchSteps: 48 },
+          },
+        ],
+      });
+      store.dispatchSilently({
+        type: 'set-camera-3d',
+        camera: { position: [5.25, -4.5, 3.75], target: [0, 0, 0.5], fovDeg: 41 },
+      });
     });
-    store.dispatchSilently({
-      type: 'set-camera-3d',
-      camera: { position: [5.25, -4.5, 3.75], target: [0, 0, 0.5], fovDeg: 41 },
-    });
-  });
-}, 240_000);
-
-afterAll(async () => {
-  await app?.close();
+  },
 });
 
 /** Opens the Export menu and returns its item named `name`. */

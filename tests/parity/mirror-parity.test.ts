@@ -3,39 +3,25 @@
  * through SwiftShader), in the style of the shading row of trace3d-parity.test.ts: the colour
  * program's linear RGB per pixel centre against the CPU reference (render-3d.ts tracePixel, then
  * reflect-3d.ts radiance) — mirrors reflecting once under the flat background, and the Fig. 37
- * example (three bounces under the sky) (small images: SwiftShader runs the
- * bounce loop per pixel). Background pixels are compared too: they are the environment.
+ * example (three bounces under the sky). Background pixels are compared too: they are the
+ * environment; and the mirror pixels apart, since in Fig. 37 they are a few per cent of the image
+ * and the sky around them would carry the percentiles of the whole image alone.
  */
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
-import { cameraUniforms, compile3d } from '../../shader-gen/space/compile-3d.ts';
-import { prepareTrace3d } from '../../shader-gen/space/plan.ts';
 import { environmentOf, radiance } from '../../shader-gen/space/reflect-3d.ts';
-import { tracePixel } from '../../shader-gen/space/render-3d.ts';
 import { exampleScenes3d, MIRROR_FIG11 } from '../shader-gen/space/scenes-3d.ts';
-import { GpuProbe } from './gpu-probe.ts';
+import { colourDiffs3d, type TracedPixel } from './colour-3d.ts';
+import type { GpuProbe } from './gpu-probe.ts';
+import { probeForSuite } from './probe-suite.ts';
 
 const W = 64;
 const H = 48;
 
 let gpu: GpuProbe;
-const rows: Record<string, Record<string, string | number>> = {};
-
-beforeAll(async () => {
-  gpu = await GpuProbe.open(W, H);
+const rows = probeForSuite(W, H, 'Mirror material: GPU vs CPU colour', (g) => {
+  gpu = g;
 });
-
-afterAll(async () => {
-  console.log(`\nMirror material: GPU vs CPU colour (${W}×${H}, SwiftShader):`);
-  console.table(rows);
-  await gpu?.close();
-});
-
-/** Median and 95th percentile of absolute differences. */
-function percentiles(values: number[]): { median: number; p95: number } {
-  const sorted = [...values].sort((a, b) => a - b);
-  return { median: sorted[Math.floor(sorted.length / 2)]!, p95: sorted[Math.floor(sorted.length * 0.95)]! };
-}
 
 describe('mirror material: GPU = CPU (SwiftShader)', () => {
   const scenes: Record<string, Scene3d> = {
@@ -44,39 +30,23 @@ describe('mirror material: GPU = CPU (SwiftShader)', () => {
   };
   for (const [name, scene] of Object.entries(scenes)) {
     it(`${name}: the colour agrees pixel by pixel`, async () => {
-      const c = compile3d(scene);
-      const index = await gpu.program(c.vertexSource, c.source);
-      const image = await gpu.render(index, [...c.uniforms, ...cameraUniforms(scene.camera)], {
-        center: [0, 0],
-        scale: 1,
-      });
-      const plan = prepareTrace3d(scene);
       const env = environmentOf(scene);
-      const diffs: number[] = [];
-      // The mirror pixels apart too: in Fig. 37 they are a few per cent of the image, and the sky
-      // around them would carry the percentiles of the whole image alone.
-      const mirrorDiffs: number[] = [];
-      for (let py = 0; py < H; py++) {
-        for (let px = 0; px < W; px++) {
-          const r = tracePixel(plan, W, H, px + 0.5, py + 0.5);
-          const cpu = radiance(plan, env, r.o, r.d, r.angle, r.hit);
-          const o = 4 * (py * W + px);
-          const diff = Math.max(...[0, 1, 2].map((k) => Math.abs(cpu[k]! - image.data[o + k]!)));
-          diffs.push(diff);
-          if (r.hit.hit && scene.seeds[r.hit.seed]!.reflectivity) mirrorDiffs.push(diff);
-        }
-      }
-      const all = percentiles(diffs);
-      const mirror = percentiles(mirrorDiffs);
+      const mirror = (r: TracedPixel) => r.hit.hit && Boolean(scene.seeds[r.hit.seed]!.reflectivity);
+      const all = await colourDiffs3d(gpu, scene, 1, (plan, r) =>
+        radiance(plan, env, r.o, r.d, r.angle, r.hit),
+      );
+      const mirrors = await colourDiffs3d(gpu, scene, 1, (plan, r) =>
+        mirror(r) ? radiance(plan, env, r.o, r.d, r.angle, r.hit) : null,
+      );
       rows[name] = {
-        'mirror pixels': mirrorDiffs.length,
+        'mirror pixels': mirrors.pixels,
         median: all.median.toFixed(5),
         p95: all.p95.toFixed(5),
-        'mirror median': mirror.median.toFixed(5),
-        'mirror p95': mirror.p95.toFixed(5),
+        'mirror median': mirrors.median.toFixed(5),
+        'mirror p95': mirrors.p95.toFixed(5),
       };
-      expect(mirrorDiffs.length).toBeGreaterThan(0.03 * W * H);
-      for (const p of [all, mirror]) {
+      expect(mirrors.pixels).toBeGreaterThan(0.03 * W * H);
+      for (const p of [all, mirrors]) {
         expect(p.median).toBeLessThan(0.002);
         expect(p.p95).toBeLessThan(0.03);
       }

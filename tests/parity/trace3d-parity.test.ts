@@ -9,12 +9,11 @@
  * draw the same picture as the generated one, and the colour variant shades like the CPU in every
  * colouring (the orbit colouring examples, and the measures of Fig. 34).
  */
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
 import { PALETTES } from '../../nodes/types/colour.ts';
 import { cameraUniforms, compile3d } from '../../shader-gen/space/compile-3d.ts';
-import { prepareTrace3d } from '../../shader-gen/space/plan.ts';
-import { probeScene3d, tracePixel } from '../../shader-gen/space/render-3d.ts';
+import { probeScene3d } from '../../shader-gen/space/render-3d.ts';
 import { shadeHit } from '../../shader-gen/space/shade-3d.ts';
 import { HAND_WRITTEN_3D } from '../bench/hand-written/trace3d.ts';
 import { hitMissDiffer } from '../bench/trace3d.ts';
@@ -25,7 +24,9 @@ import {
   PLANES,
   PSEUDO_KLEINIAN,
 } from '../shader-gen/space/scenes-3d.ts';
-import { GpuProbe } from './gpu-probe.ts';
+import { colourDiffs3d, render3d } from './colour-3d.ts';
+import type { GpuProbe } from './gpu-probe.ts';
+import { probeForSuite } from './probe-suite.ts';
 
 const W = 96;
 const H = 72;
@@ -34,26 +35,11 @@ const MIN_AGREEMENT = 0.995;
 const T_TOLERANCE = 0.02;
 
 let gpu: GpuProbe;
-const rows: Record<string, Record<string, string | number>> = {};
-
-beforeAll(async () => {
-  gpu = await GpuProbe.open(W, H);
+const rows = probeForSuite(W, H, '3D GPU vs CPU parity', (g) => {
+  gpu = g;
 });
 
-afterAll(async () => {
-  console.log(`\n3D GPU vs CPU parity (${W}×${H}, SwiftShader):`);
-  console.table(rows);
-  await gpu?.close();
-});
-
-async function gpuProbe(scene: Scene3d, bake = false) {
-  const program = compile3d(scene, { variant: 'probe', bake });
-  const index = await gpu.program(program.vertexSource, program.source);
-  return gpu.render(index, [...program.uniforms, ...cameraUniforms(scene.camera)], {
-    center: [0, 0],
-    scale: 1,
-  });
-}
+const gpuProbe = (scene: Scene3d, bake = false) => render3d(gpu, scene, { variant: 'probe', bake });
 
 /** (hit, seed) equal, and the depth unless `anyDepth`. */
 const same = (a: Float32Array, b: Float32Array, i: number, anyDepth = false) =>
@@ -182,30 +168,13 @@ describe('3D sphere tracer: GPU = CPU (SwiftShader)', () => {
     );
     const results: { name: string; pixels: number; median: number; p95: number; byPoint: boolean }[] = [];
     for (const [name, scene] of Object.entries(scenes)) {
-      const c = compile3d(scene);
-      const index = await gpu.program(c.vertexSource, c.source);
-      const image = await gpu.render(index, [...c.uniforms, ...cameraUniforms(scene.camera)], {
-        center: [0, 0],
-        scale: 1,
-      });
-      const plan = prepareTrace3d(scene);
-      const diffs: number[] = [];
-      for (let py = 0; py < H; py += 2) {
-        for (let px = 0; px < W; px += 2) {
-          const r = tracePixel(plan, W, H, px + 0.5, py + 0.5);
-          const o = 4 * (py * W + px);
-          if (!r.hit.hit || image.data[o + 3] !== 1) continue;
-          const cpu = shadeHit(plan, r.o, r.d, r.angle, r.hit);
-          diffs.push(Math.max(...[0, 1, 2].map((k) => Math.abs(cpu[k]! - image.data[o + k]!))));
-        }
-      }
-      diffs.sort((a, b) => a - b);
-      const median = diffs[Math.floor(diffs.length / 2)]!;
-      const p95 = diffs[Math.floor(diffs.length * 0.95)]!;
-      rows[`${name} colour`] = { pixels: diffs.length, median: median.toFixed(5), p95: p95.toFixed(5) };
+      const { pixels, median, p95 } = await colourDiffs3d(gpu, scene, 2, (plan, r, gpuAlpha) =>
+        r.hit.hit && gpuAlpha === 1 ? shadeHit(plan, r.o, r.d, r.angle, r.hit) : null,
+      );
+      rows[`${name} colour`] = { pixels, median: median.toFixed(5), p95: p95.toFixed(5) };
       results.push({
         name,
-        pixels: diffs.length,
+        pixels,
         median,
         p95,
         byPoint: scene.coloring.mode === 'final-point',

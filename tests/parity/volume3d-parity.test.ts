@@ -6,7 +6,7 @@
  * volume-3d.ts; the hand-written bench renderer draws the same picture; new values re-render
  * without a new program.
  */
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
 import { rayDirection } from '../../shader-gen/space/camera-3d.ts';
 import { cameraUniforms, compile3d } from '../../shader-gen/space/compile-3d.ts';
@@ -16,7 +16,9 @@ import { HAND_WRITTEN_VOLUME } from '../bench/hand-written/trace3d.ts';
 import { opacityDiffer } from '../bench/volume3d.ts';
 import { exampleScenes3d } from '../shader-gen/space/scenes-3d.ts';
 import { NESTED, ONE_MIRROR } from '../shader-gen/space/volume-scenes.ts';
-import { GpuProbe } from './gpu-probe.ts';
+import { render3d } from './colour-3d.ts';
+import type { GpuProbe } from './gpu-probe.ts';
+import { probeForSuite } from './probe-suite.ts';
 
 const W = 64;
 const H = 48;
@@ -29,26 +31,11 @@ const OPACITY_TOLERANCE = 0.02;
 const MIN_AGREEMENT = 0.99;
 
 let gpu: GpuProbe;
-const rows: Record<string, Record<string, string | number>> = {};
-
-beforeAll(async () => {
-  gpu = await GpuProbe.open(W, H);
+const rows = probeForSuite(W, H, 'Volume GPU vs CPU parity', (g) => {
+  gpu = g;
 });
 
-afterAll(async () => {
-  console.log(`\nVolume GPU vs CPU parity (${W}×${H}, SwiftShader):`);
-  console.table(rows);
-  await gpu?.close();
-});
-
-async function gpuImage(scene: Scene3d, variant: 'color' | 'volume-probe') {
-  const program = compile3d(scene, { variant });
-  const index = await gpu.program(program.vertexSource, program.source);
-  return gpu.render(index, [...program.uniforms, ...cameraUniforms(scene.camera)], {
-    center: [0, 0],
-    scale: 1,
-  });
-}
+const gpuImage = (scene: Scene3d, variant: 'color' | 'volume-probe') => render3d(gpu, scene, { variant });
 
 describe('volume renderer: GPU = CPU (SwiftShader)', () => {
   const scenes: Record<string, Scene3d> = { 'one mirror': ONE_MIRROR, nested: NESTED };

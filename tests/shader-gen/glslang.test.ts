@@ -10,6 +10,7 @@ import { type CompileOptions, compile, shadertoySource } from '../../shader-gen/
 import { HAND_WRITTEN, withDefines } from '../bench/hand-written/index.ts';
 import { exampleNames, loadExample } from '../support/examples.ts';
 import {
+  itPassesGlslang,
   type ShaderToCheck,
   shadertoyWrapper,
   validateShaders,
@@ -64,7 +65,6 @@ describe('generated GLSL passes glslangValidator and WebGL identifier rules', ()
     ]),
     { name: 'vertex', source: compile(HAND_MADE_SCENES.empty).vertexSource, stage: 'vert' },
   ];
-  const results = validateShaders(shaders);
 
   it('covers every example, every hand-made scene and every variant', () => {
     expect(examples.length).toBeGreaterThan(0);
@@ -75,12 +75,7 @@ describe('generated GLSL passes glslangValidator and WebGL identifier rules', ()
     );
   });
 
-  for (const shader of shaders) {
-    it(`${shader.name} compiles`, () => {
-      expect(results.get(shader.name)).toEqual([]);
-      expect(webglIdentifierProblems(shader.source)).toEqual([]);
-    });
-  }
+  itPassesGlslang(shaders, (name) => `${name} compiles`);
 });
 
 describe('the validator and the identifier check do catch problems', () => {

@@ -13,15 +13,10 @@ import {
   cameraUniforms,
   compile3d,
   FRAME_UNIFORMS_3D,
-  shadertoySource3d,
 } from '../../../shader-gen/space/compile-3d.ts';
 import { HAND_WRITTEN_3D } from '../../bench/hand-written/trace3d.ts';
-import {
-  type ShaderToCheck,
-  shadertoyWrapper,
-  validateShaders,
-  webglIdentifierProblems,
-} from '../support/glslang.ts';
+import { itPassesGlslang } from '../support/glslang.ts';
+import { shaders3d } from './glslang-3d.ts';
 import { exampleScenes3d, FIG11, LONE_SPHERE, MIRROR_FIG11, MOBIUS_BOX, PLANES } from './scenes-3d.ts';
 
 const PALETTE = { a: [0.5, 0.5, 0.5], b: [0.5, 0.5, 0.5], c: [1, 1, 1], d: [0, 0.33, 0.67] } as const;
@@ -74,24 +69,7 @@ const VARIANTS: Record<string, Compile3dOptions> = {
 };
 
 describe('compile3d', () => {
-  const shaders: ShaderToCheck[] = Object.entries(SCENES).flatMap(([name, scene]) => [
-    ...Object.entries(VARIANTS).map(([variant, options]) => ({
-      name: `${name}.${variant}`,
-      source: compile3d(scene, options).source,
-      stage: 'frag' as const,
-    })),
-    { name: `${name}.shadertoy`, source: shadertoyWrapper(shadertoySource3d(scene)), stage: 'frag' as const },
-  ]);
-  for (const { example, source } of HAND_WRITTEN_3D)
-    shaders.push({ name: `hand-written-${example}`, source, stage: 'frag' });
-  const results = validateShaders(shaders);
-
-  for (const shader of shaders) {
-    it(`${shader.name} passes glslangValidator`, () => {
-      expect(results.get(shader.name)).toEqual([]);
-      expect(webglIdentifierProblems(shader.source)).toEqual([]);
-    });
-  }
+  itPassesGlslang(shaders3d(SCENES, VARIANTS, HAND_WRITTEN_3D));
 
   it('covers every 3D example', () => {
     expect(Object.keys(exampleScenes3d()).length).toBeGreaterThanOrEqual(8);

@@ -8,14 +8,10 @@
 import { describe, expect, it } from 'vitest';
 import type { Scene3d } from '../../../nodes/core/scene-3d.ts';
 import { PALETTES } from '../../../nodes/types/colour.ts';
-import { compile3d, shadertoySource3d } from '../../../shader-gen/space/compile-3d.ts';
+import { compile3d } from '../../../shader-gen/space/compile-3d.ts';
 import { HAND_WRITTEN_VOLUME } from '../../bench/hand-written/trace3d.ts';
-import {
-  type ShaderToCheck,
-  shadertoyWrapper,
-  validateShaders,
-  webglIdentifierProblems,
-} from '../support/glslang.ts';
+import { itPassesGlslang } from '../support/glslang.ts';
+import { shaders3d } from './glslang-3d.ts';
 import { FIG11, PLANES } from './scenes-3d.ts';
 import { NESTED, NO_MIRRORS, ONE_MIRROR, VOLUME } from './volume-scenes.ts';
 
@@ -27,26 +23,15 @@ const SCENES: Record<string, Scene3d> = {
   planes: { ...PLANES, volume: VOLUME },
 };
 
+/** Every variant, uniform and baked (`name.variant` and `name.variant.baked`). */
+const VARIANTS = Object.fromEntries(
+  (['color', 'probe', 'volume-probe'] as const).flatMap((variant) =>
+    [false, true].map((bake) => [`${variant}${bake ? '.baked' : ''}`, { variant, bake }]),
+  ),
+);
+
 describe('compile3d, volume mode', () => {
-  const shaders: ShaderToCheck[] = Object.entries(SCENES).flatMap(([name, scene]) => [
-    ...(['color', 'probe', 'volume-probe'] as const).flatMap((variant) =>
-      [false, true].map((bake) => ({
-        name: `${name}.${variant}${bake ? '.baked' : ''}`,
-        source: compile3d(scene, { variant, bake }).source,
-        stage: 'frag' as const,
-      })),
-    ),
-    { name: `${name}.shadertoy`, source: shadertoyWrapper(shadertoySource3d(scene)), stage: 'frag' as const },
-  ]);
-  for (const { example, source } of HAND_WRITTEN_VOLUME)
-    shaders.push({ name: `hand-written-${example}`, source, stage: 'frag' });
-  const results = validateShaders(shaders);
-  for (const shader of shaders) {
-    it(`${shader.name} passes glslangValidator`, () => {
-      expect(results.get(shader.name)).toEqual([]);
-      expect(webglIdentifierProblems(shader.source)).toEqual([]);
-    });
-  }
+  itPassesGlslang(shaders3d(SCENES, VARIANTS, HAND_WRITTEN_VOLUME));
 
   it('keeps the source when dragged values change (uniforms), and uploads the new values', () => {
     const dragged: Scene3d = {

@@ -6,6 +6,7 @@ import { spawnSync } from 'node:child_process';
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { expect, it } from 'vitest';
 
 export interface ShaderToCheck {
   /** A unique, file-name-safe name. */
@@ -83,4 +84,21 @@ export function webglIdentifierProblems(source: string): string[] {
       problems.add(id);
   }
   return [...problems];
+}
+
+/**
+ * One test per shader, named by `title`: glslangValidator accepts it (one batch call for all) and
+ * it breaks no WebGL identifier rule. Call inside a describe block.
+ */
+export function itPassesGlslang(
+  shaders: readonly ShaderToCheck[],
+  title: (name: string) => string = (name) => `${name} passes glslangValidator`,
+): void {
+  const results = validateShaders(shaders);
+  for (const shader of shaders) {
+    it(title(shader.name), () => {
+      expect(results.get(shader.name)).toEqual([]);
+      expect(webglIdentifierProblems(shader.source)).toEqual([]);
+    });
+  }
 }

@@ -19,7 +19,7 @@ import { explainVolumePixel3d } from '../../shader-gen/space/explain-volume-3d.t
 import { standaloneShader } from '../../shader-gen/standalone.ts';
 import { shadertoyWrapper, validateShaders } from '../shader-gen/support/glslang.ts';
 import { repoRoot, type ServedApp } from './app-server.ts';
-import { waitRendered } from './editor-page.ts';
+import { nodeEl, waitRendered } from './editor-page.ts';
 import { openViaPicker } from './io-page.ts';
 import { freePanePoint, handleCentres, openSmall3dPane } from './view-3d-page.ts';
 
@@ -261,6 +261,11 @@ describe('Explain this pixel in 3D', () => {
     const current = await doc();
     const scene = evaluateGraph(current, registry).scene3d!;
     expect(scene.volume?.steps).toBe(24);
+    // The node shows the volume's settings, not the sphere tracer's (which would change nothing).
+    const renderNode = nodeEl(page, 'render');
+    await renderNode.getByRole('combobox', { name: 'volume palette' }).waitFor();
+    expect(await renderNode.getByRole('combobox', { name: 'colouring' }).count()).toBe(0);
+    expect(await renderNode.getByRole('textbox', { name: 'reflections' }).count()).toBe(0);
     const view = { ...scene, camera: current.camera3d ?? scene.camera };
     const b = (await page.getByTestId('render-pane').boundingBox())!;
     const handles = await handleCentres(page);

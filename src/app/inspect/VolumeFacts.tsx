@@ -25,9 +25,9 @@ export function VolumeFacts({ inspection }: { inspection: InspectionVolume }) {
         <dd data-testid="inspect-opacity">
           {fmt(100 * t.opacity, 3)} % (optical depth {fmt(t.opticalDepth, 3)})
         </dd>
-        <dt>Deepest</dt>
+        <dt>Nesting depth</dt>
         <dd>
-          <strong data-testid="inspect-depth">{t.deepest}</strong> nesting depth
+          <strong data-testid="inspect-depth">{t.deepest}</strong> at the deepest
         </dd>
         <dt>Colour</dt>
         <dd>
@@ -58,7 +58,7 @@ export function VolumeFacts({ inspection }: { inspection: InspectionVolume }) {
                   />
                   depth {r.depth}
                   {r.atLimit && ' (the whole budget: near the limit set)'}
-                </span>
+                </span>{' '}
                 <span className="kf-inspect__to">
                   × {r.samples} sample{r.samples === 1 ? '' : 's'}
                   {r.color ? '' : ', empty'}

@@ -34,8 +34,7 @@ export interface InspectionVolume {
 
 const GPU_VOLUME: GpuCheck = {
   kind: 'unavailable',
-  reason:
-    'the volume is explained by the CPU volume renderer (the picture’s tested twin); the GPU’s samples are not read back',
+  reason: 'the CPU volume renderer, the picture’s tested twin, explains the pixel',
 };
 
 const percent = (x: number) => `${+(100 * x).toFixed(x > 0.99 && x < 1 ? 1 : 0)} %`;

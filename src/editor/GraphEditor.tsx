@@ -34,6 +34,7 @@ import { useKeepInView } from './keep-in-view.ts';
 import { NodeView } from './NodeView.tsx';
 import { gridPosition } from './new-node.ts';
 import { Palette } from './Palette.tsx';
+import { renderNodeSuggestion } from './render-node-suggestion.ts';
 import { type FrameNode, FrameView, isFrameId } from './tools/FrameView.tsx';
 import { GroupBreadcrumb, type GroupScope, useGroupScope } from './tools/GroupScope.tsx';
 import { insertMyGroup, readMyGroups, type SavedGroup } from './tools/my-groups.ts';
@@ -387,6 +388,8 @@ function GraphCanvas({
           {inspectorOpen && (
             <InspectorDock
               node={inspected}
+              suggested={renderNodeSuggestion(doc, evaluation)}
+              onInspect={(id) => store.setSelection([id])}
               fill={inspectorTab}
               connected={inspectedData?.connected ?? new Set()}
               evaluation={inspected && evaluation.nodes.get(inspected.id)}

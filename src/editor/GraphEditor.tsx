@@ -323,6 +323,9 @@ function GraphCanvas({
           <div
             className="kf-graph"
             ref={wrapper}
+            // The phone's Inspector tab covers the canvas: what it hides takes no focus, so Tab goes
+            // straight into the inspector instead of through every hidden port and field.
+            inert={inspectorTab}
             onPointerMove={(e) => {
               pointer.current = { x: e.clientX, y: e.clientY };
             }}

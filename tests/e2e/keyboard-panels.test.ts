@@ -3,16 +3,19 @@
  * the arrow keys (↓ on its button opens it at the first item, ↑ ↓ Home End move, Esc hands the
  * focus back to the button); the Inspector opened by Enter takes the keyboard at once (it comes
  * after the whole graph in the tab order), and while no node is selected it offers the render node,
- * whose settings then have the focus.
+ * whose settings then have the focus; on a phone the Inspector tab's first Tab is that offer, not a
+ * port of the graph hidden under it.
  */
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import type { GraphDoc } from '../../nodes/graph/document.ts';
+import type { ServedApp } from './app-server.ts';
 import { appSessionForSuite } from './app-suite.ts';
 
 let page: Page;
+let app: ServedApp;
 const problems: string[] = [];
-appSessionForSuite((s) => ({ page } = s), {
+appSessionForSuite((s) => ({ page, app } = s), {
   query: '?test',
   viewport: { width: 1280, height: 720 },
   problems,
@@ -71,5 +74,26 @@ describe('keyboard paths to the settings', () => {
     await page.keyboard.press('Tab');
     expect(await inspector.evaluate((el) => el.contains(document.activeElement))).toBe(true);
     expect(problems).toEqual([]);
+  });
+
+  it('on a phone the Inspector tab takes Tab to its own controls, not to the graph hidden under it', async () => {
+    const context = await app.newContext({ width: 390, height: 844 });
+    try {
+      const phone = await context.newPage();
+      await phone.goto(`${app.url}?test`);
+      await phone.waitForFunction(() => window.__kleinflow?.store);
+      await phone.evaluate(() => window.__kleinflow!.store.setSelection([]));
+      await phone.getByRole('tab', { name: 'Inspector' }).focus();
+      await phone.keyboard.press('Enter');
+      const inspector = phone.getByRole('complementary', { name: 'Inspector' });
+      const offer = inspector.getByRole('button', { name: /^Inspect / });
+      await offer.waitFor();
+      await phone.keyboard.press('Tab');
+      expect(await offer.evaluate((b) => b === document.activeElement)).toBe(true);
+      await phone.keyboard.press('Enter');
+      await inspector.getByRole('heading', { name: 'Render' }).waitFor();
+    } finally {
+      await context.close();
+    }
   });
 });

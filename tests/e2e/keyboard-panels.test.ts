@@ -4,7 +4,8 @@
  * focus back to the button); the Inspector opened by Enter takes the keyboard at once (it comes
  * after the whole graph in the tab order), and while no node is selected it offers the render node,
  * whose settings then have the focus; on a phone the Inspector tab's first Tab is that offer, not a
- * port of the graph hidden under it.
+ * port of the graph hidden under it; an example picked in the gallery gives the focus back to the
+ * Examples button (the keyboard does not start again at the top of the page).
  */
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
@@ -95,5 +96,21 @@ describe('keyboard paths to the settings', () => {
     } finally {
       await context.close();
     }
+  });
+
+  it('gives the focus back to Examples once an example is picked from the gallery', async () => {
+    const examples = page.getByRole('button', { name: 'Examples', exact: true });
+    await examples.focus();
+    await page.keyboard.press('Enter');
+    const search = page.getByRole('searchbox', { name: 'Search examples' });
+    await expect.poll(() => search.evaluate((el) => el === document.activeElement)).toBe(true);
+    await page.keyboard.type('*442');
+    await page.keyboard.press('Tab');
+    await page.keyboard.press('Enter');
+    await page.getByRole('dialog', { name: 'Examples' }).waitFor({ state: 'detached' });
+    await expect
+      .poll(() => page.evaluate(() => window.__kleinflow!.store.getState().doc.meta.title ?? ''))
+      .toMatch(/\*442/);
+    expect(await examples.evaluate((b) => b === document.activeElement)).toBe(true);
   });
 });

@@ -54,9 +54,13 @@ export function useModalDialog(onClose: () => void): ModalDialog {
       if (d.open) d.close();
       // A dialog unmounted by its own choice (an example picked in the gallery) is already out of
       // the page, so the browser's close gives no focus back: the keyboard would start again at
-      // the top of the page. Back to the control that opened it, unless something took the focus.
-      const lost = document.activeElement === null || document.activeElement === document.body;
-      if (lost && opener?.isConnected) opener.focus();
+      // the top of the page. Back to the control that opened it, unless something took the focus —
+      // after the key event that closed it (Enter in the search box): given during its keydown, the
+      // focus would take that key's click and open the dialog again.
+      setTimeout(() => {
+        const lost = document.activeElement === null || document.activeElement === document.body;
+        if (lost && opener?.isConnected) opener.focus();
+      }, 0);
     };
   }, []);
   const handleClose = useCallback(() => {

@@ -111,6 +111,15 @@ describe('keyboard paths to the settings', () => {
     await expect
       .poll(() => page.evaluate(() => window.__kleinflow!.store.getState().doc.meta.title ?? ''))
       .toMatch(/\*442/);
-    expect(await examples.evaluate((b) => b === document.activeElement)).toBe(true);
+    await expect.poll(() => examples.evaluate((b) => b === document.activeElement)).toBe(true);
+    // Enter in the search box opens the first match: the focus comes back without that Enter
+    // clicking Examples and opening the gallery again.
+    await page.keyboard.press('Enter');
+    await search.waitFor();
+    await page.keyboard.type('*333');
+    await page.keyboard.press('Enter');
+    await page.getByRole('dialog', { name: 'Examples' }).waitFor({ state: 'detached' });
+    await expect.poll(() => examples.evaluate((b) => b === document.activeElement)).toBe(true);
+    expect(await page.getByRole('dialog', { name: 'Examples' }).count()).toBe(0);
   });
 });

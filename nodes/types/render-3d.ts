@@ -39,6 +39,17 @@ const [lx, ly, lz] = DEFAULT_LIGHTING_3D.direction;
 const setting = (label: string, value: number, doc: string, more?: true) =>
   ({ type: 'number', label, default: value, doc, ...(more ? { more } : {}) }) as const;
 
+/**
+ * Fields that mean something only to the sphere tracer (colouring, lighting, marching, mirrors and
+ * their environment): hidden while `render` is volume, whose picture they do not touch (the volume
+ * has its own palette and lies over the flat background; docs/math-3d.md §11). Fields that depend on
+ * the colouring or the environment are hidden with them (field-visibility.ts follows the chain).
+ */
+const WHEN_SURFACE = { param: 'render', is: ['surface'] } as const;
+/** A sphere-tracer setting under "More". */
+const surfaceSetting = (label: string, value: number, doc: string) =>
+  ({ ...setting(label, value, doc, true), when: WHEN_SURFACE }) as const;
+
 /** The palette colours of the "custom" palette (the palette itself shows only in PALETTED modes). */
 const colour = (hex: string, label: string) =>
   ({ type: 'color', label, default: hex, when: { param: 'palette', is: ['custom'] } }) as const;
@@ -133,14 +144,13 @@ export const render3dNode = defineNode({
       LIMITS.defaultMaxIterations3d,
       'IIS steps per distance estimate',
     ),
-    marchSteps: setting('march steps', LIMITS.defaultMarchSteps, 'sphere-tracing steps per ray', true),
-    deScale: setting(
+    marchSteps: surfaceSetting('march steps', LIMITS.defaultMarchSteps, 'sphere-tracing steps per ray'),
+    deScale: surfaceSetting(
       'DE scale',
       1,
       'each march step goes this fraction (≤ 1) of the distance estimate',
-      true,
     ),
-    reflections: REFLECTIONS_INPUT,
+    reflections: { ...REFLECTIONS_INPUT, when: WHEN_SURFACE },
     samples: setting('samples / pixel', 4, 'anti-aliasing samples when the view is still', true),
     step: {
       type: 'number',
@@ -174,20 +184,27 @@ export const render3dNode = defineNode({
     b: colour(toHex(DEFAULT_COLORING.b), 'b (swing)'),
     c: colour(toHex(DEFAULT_COLORING.c), 'c (frequency)'),
     d: colour(toHex(DEFAULT_COLORING.d), 'd (phase)'),
-    light: { ...point3Input('light direction', lx, ly, lz, 'direction towards the light'), more: true },
-    ambient: setting('ambient', DEFAULT_LIGHTING_3D.ambient, '0…1', true),
-    diffuse: setting('diffuse', DEFAULT_LIGHTING_3D.diffuse, '0…1', true),
-    specular: setting('specular', DEFAULT_LIGHTING_3D.specular, '0…1', true),
-    shininess: setting('shininess', DEFAULT_LIGHTING_3D.shininess, 'highlight exponent, 1…512', true),
-    occlusion: setting('occlusion', DEFAULT_LIGHTING_3D.occlusion, 'ambient-occlusion strength, 0…1', true),
-    shadow: setting('shadow', DEFAULT_LIGHTING_3D.shadow, 'soft-shadow strength, 0…1', true),
+    light: {
+      ...point3Input('light direction', lx, ly, lz, 'direction towards the light'),
+      more: true,
+      when: WHEN_SURFACE,
+    },
+    ambient: surfaceSetting('ambient', DEFAULT_LIGHTING_3D.ambient, '0…1'),
+    diffuse: surfaceSetting('diffuse', DEFAULT_LIGHTING_3D.diffuse, '0…1'),
+    specular: surfaceSetting('specular', DEFAULT_LIGHTING_3D.specular, '0…1'),
+    shininess: surfaceSetting('shininess', DEFAULT_LIGHTING_3D.shininess, 'highlight exponent, 1…512'),
+    occlusion: surfaceSetting('occlusion', DEFAULT_LIGHTING_3D.occlusion, 'ambient-occlusion strength, 0…1'),
+    shadow: surfaceSetting('shadow', DEFAULT_LIGHTING_3D.shadow, 'soft-shadow strength, 0…1'),
     ...VOLUME_INPUTS,
   },
   outputs: {},
   params: {
+    // `render` first: it shows or hides the colouring and environment switches, so it stays put.
+    render: VOLUME_PARAMS.render,
     coloring: {
       kind: 'enum',
       default: 'depth-wheel',
+      when: WHEN_SURFACE,
       options: ['depth-wheel', 'cosine', 'surface', 'final-point', 'distance', 'argument', 'formula'],
       label: 'colouring',
       doc: 'depth-wheel: the seed colour turned by the depth; cosine: a palette by depth; surface: by the hit point; final-point: by where the IIS ends; distance / argument: a palette by the hit point’s distance from the origin / angle about the z axis; formula: a palette by your formula of the hit point and depth',
@@ -211,7 +228,8 @@ export const render3dNode = defineNode({
     },
     background: { kind: 'color', default: '#101018', label: 'background' },
     ...ENVIRONMENT_PARAMS,
-    ...VOLUME_PARAMS,
+    environment: { ...ENVIRONMENT_PARAMS.environment, when: WHEN_SURFACE },
+    volumePalette: VOLUME_PARAMS.volumePalette,
   },
   evaluate: ({ inputs: i, params, nodeId }) => {
     const diagnostics: Diagnostic[] = [];

@@ -72,7 +72,20 @@ export interface VolumeRay {
 
 const EMPTY: VolumeRay = { rgb: [0, 0, 0], transmittance: 1, opticalDepth: 0, samples: 0 };
 
-/** Integrates the ray o + t·d (d unit) through the nesting depth with sample offset `jitter`. */
+/**
+ * Watches one ray's integration (Explain this pixel, shader-gen/space/explain-volume-3d.ts): `span`
+ * once, with the ray's interval in the bounds and Δt (not called when the ray misses them), then
+ * `sample` for every sample taken — its t, its depth k, and the transmittance T after it.
+ */
+export interface VolumeObserver {
+  span(t0: number, t1: number, dt: number): void;
+  sample(t: number, depth: number, transmittance: number): void;
+}
+
+/**
+ * Integrates the ray o + t·d (d unit) through the nesting depth with sample offset `jitter`; the
+ * observer, when given, sees each sample (the render passes none).
+ */
 export function volumeRay(
   plan: TracePlan,
   vb: VolumeBounds | null,
@@ -80,11 +93,13 @@ export function volumeRay(
   o: Vec3,
   d: Vec3,
   jitter: number,
+  observer?: VolumeObserver,
 ): VolumeRay {
   const span = vb ? rayInterval(vb, o, d) : null;
   if (!span) return EMPTY;
   const n = v.steps;
   const dt = (span[1] - span[0]) / n;
+  observer?.span(span[0], span[1], dt);
   const rgb: Rgb = [0, 0, 0];
   let T = 1;
   let tau = 0;
@@ -94,7 +109,10 @@ export function volumeRay(
   for (let i = 0; i < n; i++) {
     const t = span[0] + (i + jitter) * dt;
     const depth = walkDepth3d(plan, o[0] + d[0] * t, o[1] + d[1] * t, o[2] + d[2] * t);
-    if (depth < v.depthFrom) continue;
+    if (depth < v.depthFrom) {
+      observer?.sample(t, depth, T);
+      continue;
+    }
     const sigma = extinction(v, depth) * dt;
     tau += sigma;
     const alpha = 1 - Math.exp(-sigma);
@@ -104,6 +122,7 @@ export function volumeRay(
     }
     for (let k = 0; k < 3; k++) rgb[k]! += T * alpha * c[k]!;
     T *= 1 - alpha;
+    observer?.sample(t, depth, T);
     if (T < EXIT_TRANSMITTANCE) return { rgb, transmittance: T, opticalDepth: tau, samples: i + 1 };
   }
   return { rgb, transmittance: T, opticalDepth: tau, samples: n };

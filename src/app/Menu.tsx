@@ -1,8 +1,10 @@
 /**
  * A small drop-down menu button (examples, export, and the phone's ☰ menu of every command):
- * keyboard reachable, closes on outside click or Esc. Items may come in titled groups.
+ * keyboard reachable, closes on outside click or Esc. Items may come in titled groups. The arrow
+ * keys move through the items as in any menu (↓ on the button opens it at the first item; Home,
+ * End), Tab still goes through them in order, and Esc from an item gives the focus back to the button.
  */
-import { Fragment, type ReactNode, useEffect, useRef, useState } from 'react';
+import { Fragment, type KeyboardEvent, type ReactNode, useEffect, useRef, useState } from 'react';
 
 export interface MenuItem {
   readonly label: string;
@@ -31,10 +33,23 @@ interface Props {
 export function Menu({ label, items = [], groups, title, ariaLabel, alignEnd = false }: Props) {
   const [open, setOpen] = useState(false);
   const root = useRef<HTMLDivElement>(null);
+  const toggle = useRef<HTMLButtonElement>(null);
+  /** ↓ on the closed button: the first item takes the focus once the list is there. */
+  const focusFirst = useRef(false);
+  useEffect(() => {
+    if (!open || !focusFirst.current) return;
+    focusFirst.current = false;
+    menuItems(root.current)[0]?.focus();
+  }, [open]);
   useEffect(() => {
     if (!open) return;
     const close = (e: PointerEvent) => root.current?.contains(e.target as Node) || setOpen(false);
-    const esc = (e: KeyboardEvent) => e.key === 'Escape' && setOpen(false);
+    const esc = (e: globalThis.KeyboardEvent) => {
+      if (e.key !== 'Escape') return;
+      // The focused item goes with the list: the keyboard stays on the menu's button.
+      if (root.current?.contains(document.activeElement)) toggle.current?.focus();
+      setOpen(false);
+    };
     window.addEventListener('pointerdown', close);
     window.addEventListener('keydown', esc);
     return () => {
@@ -58,9 +73,32 @@ export function Menu({ label, items = [], groups, title, ariaLabel, alignEnd = f
       {item.hint && <span className="kf-menu__hint">{item.hint}</span>}
     </button>
   );
+  /** ↑ ↓ Home End move among the enabled items (from the button too); ↓ on a closed menu opens it. */
+  const onKeyDown = (e: KeyboardEvent) => {
+    if (!['ArrowDown', 'ArrowUp', 'Home', 'End'].includes(e.key)) return;
+    e.preventDefault();
+    if (!open) {
+      if (e.key !== 'ArrowDown' || e.target !== toggle.current) return;
+      focusFirst.current = true;
+      setOpen(true);
+      return;
+    }
+    const items = menuItems(root.current);
+    const at = items.indexOf(document.activeElement as HTMLButtonElement);
+    const last = items.length - 1;
+    const next = {
+      ArrowDown: at < 0 || at === last ? 0 : at + 1,
+      ArrowUp: at <= 0 ? last : at - 1,
+      Home: 0,
+      End: last,
+    }[e.key];
+    if (next !== undefined) items[next]?.focus();
+  };
   return (
-    <div className="kf-menu" ref={root}>
+    // biome-ignore lint/a11y/noStaticElementInteractions: the arrow keys of the button and its items (both interactive) bubble here
+    <div className="kf-menu" ref={root} onKeyDown={onKeyDown}>
       <button
+        ref={toggle}
         type="button"
         className="kf-button"
         aria-haspopup="menu"
@@ -87,3 +125,7 @@ export function Menu({ label, items = [], groups, title, ariaLabel, alignEnd = f
     </div>
   );
 }
+
+/** The menu's enabled items, in order. */
+const menuItems = (root: HTMLElement | null): HTMLButtonElement[] =>
+  root ? [...root.querySelectorAll<HTMLButtonElement>('[role="menuitem"]:not(:disabled)')] : [];

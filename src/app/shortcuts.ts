@@ -43,6 +43,14 @@ export const SHORTCUTS: readonly { group: string; items: readonly Shortcut[] }[]
         action: 'Move the point (Shift: 5× as far; each press is one undo step)',
       },
       {
+        keys: ['↓ on a menu button', '↑ ↓ Home End in a menu'],
+        action: 'Open the menu at its first item; move through its items (Esc: back to the button)',
+      },
+      {
+        keys: ['Enter on Inspector'],
+        action: 'Open the inspector and go into it; with no node selected it offers the render node',
+      },
+      {
         keys: ['Page Up / Page Down on a 3D handle'],
         action:
           'Move it away from / nearer to the camera by a tenth of its distance (arrows move it across the screen)',

@@ -24,6 +24,8 @@ export function useModalDialog(onClose: () => void): ModalDialog {
   latest.current = onClose;
   useEffect(() => {
     const d = ref.current!;
+    // What had the focus before: it gets it back when the dialog goes (see the cleanup).
+    const opener = document.activeElement instanceof HTMLElement ? document.activeElement : null;
     if (!d.open) d.showModal();
     // showModal makes the page behind inert, but Tab can still leave the dialog for the browser's
     // own UI and come back to <body>: keep the keyboard cycling through the dialog's controls.
@@ -50,6 +52,15 @@ export function useModalDialog(onClose: () => void): ModalDialog {
       d.removeEventListener('keydown', trap);
       document.removeEventListener('keydown', trap);
       if (d.open) d.close();
+      // A dialog unmounted by its own choice (an example picked in the gallery) is already out of
+      // the page, so the browser's close gives no focus back: the keyboard would start again at
+      // the top of the page. Back to the control that opened it, unless something took the focus —
+      // after the key event that closed it (Enter in the search box): given during its keydown, the
+      // focus would take that key's click and open the dialog again.
+      setTimeout(() => {
+        const lost = document.activeElement === null || document.activeElement === document.body;
+        if (lost && opener?.isConnected) opener.focus();
+      }, 0);
     };
   }, []);
   const handleClose = useCallback(() => {

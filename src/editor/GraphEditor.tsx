@@ -34,6 +34,7 @@ import { useKeepInView } from './keep-in-view.ts';
 import { NodeView } from './NodeView.tsx';
 import { gridPosition } from './new-node.ts';
 import { Palette } from './Palette.tsx';
+import { renderNodeSuggestion } from './render-node-suggestion.ts';
 import { type FrameNode, FrameView, isFrameId } from './tools/FrameView.tsx';
 import { GroupBreadcrumb, type GroupScope, useGroupScope } from './tools/GroupScope.tsx';
 import { insertMyGroup, readMyGroups, type SavedGroup } from './tools/my-groups.ts';
@@ -322,6 +323,9 @@ function GraphCanvas({
           <div
             className="kf-graph"
             ref={wrapper}
+            // The phone's Inspector tab covers the canvas: what it hides takes no focus, so Tab goes
+            // straight into the inspector instead of through every hidden port and field.
+            inert={inspectorTab}
             onPointerMove={(e) => {
               pointer.current = { x: e.clientX, y: e.clientY };
             }}
@@ -387,6 +391,8 @@ function GraphCanvas({
           {inspectorOpen && (
             <InspectorDock
               node={inspected}
+              suggested={renderNodeSuggestion(doc, evaluation)}
+              onInspect={(id) => store.setSelection([id])}
               fill={inspectorTab}
               connected={inspectedData?.connected ?? new Set()}
               evaluation={inspected && evaluation.nodes.get(inspected.id)}

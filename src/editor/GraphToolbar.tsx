@@ -66,7 +66,13 @@ export function GraphToolbar({ nodes, inspectorOpen, inspectorButton, toggleInsp
         className={`kf-button kf-graph-tools__inspector${inspectorOpen ? ' kf-button--active' : ''}`}
         aria-pressed={inspectorOpen}
         title="Show the inspector for the selected node (I)"
-        onClick={toggleInspector}
+        onClick={(e) => {
+          toggleInspector();
+          // Opened by Enter or Space (a click with no pointer, detail 0): the panel comes after the
+          // whole graph in the tab order, so the keyboard is taken to it rather than into the graph.
+          if (!inspectorOpen && e.detail === 0)
+            requestAnimationFrame(() => document.querySelector<HTMLElement>('.kf-inspector')?.focus());
+        }}
       >
         Inspector
       </button>

@@ -42,7 +42,8 @@ export function Inspector({ node, connected, evaluation, diagnostics, onLabel, o
   const params = def ? Object.entries(def.params).filter(([name]) => shown(name)) : [];
 
   return (
-    <aside className="kf-inspector" aria-label="Inspector">
+    // tabIndex −1: the panel itself takes the focus when it opens from the keyboard (InspectorDock).
+    <aside className="kf-inspector" aria-label="Inspector" tabIndex={-1}>
       <header className="kf-inspector__header">
         <span className="kf-dot" style={{ background: def?.color ?? '#e5484d' }} />
         <h2>{def?.label ?? node.type}</h2>

@@ -1,13 +1,16 @@
 /**
  * The inspector docked beside the graph canvas (never over it, so it cannot cover the node it
  * inspects): a resize handle on its left edge (drag, or ←/→ when focused; the width is
- * remembered), and Esc inside it closes it. Shows the selected node, or a hint when none is.
+ * remembered), and Esc inside it closes it. Shows the selected node, or a hint when none is —
+ * with a button that opens the render node (render-node-suggestion.ts), the keyboard then in it.
  */
+import { useEffect, useRef } from 'react';
 import type { Diagnostic } from '../../nodes/core/diagnostics.ts';
 import type { GraphNode } from '../../nodes/graph/document.ts';
 import type { NodeEvaluation } from '../../nodes/graph/evaluate.ts';
 import { Inspector } from './Inspector.tsx';
 import { clampPanelWidth, PANEL_WIDTH, usePanelWidth } from './panel-width.ts';
+import type { NodeSuggestion } from './render-node-suggestion.ts';
 import { isTyping } from './typing.ts';
 
 interface Props {
@@ -21,16 +24,28 @@ interface Props {
   onMute(muted: boolean): void;
   /** Closes the panel; `fromKeyboard` when by Esc (then focus should go somewhere sensible). */
   onClose(fromKeyboard?: boolean): void;
+  /** The node the empty panel offers to inspect (the render node), and how it selects it. */
+  readonly suggested?: NodeSuggestion;
+  onInspect?(nodeId: string): void;
 }
 
 /** The width of the area the dock shares with the canvas (its parent), 0 before layout. */
 const areaWidth = (el: Element | null) => el?.parentElement?.clientWidth ?? 0;
 
-export function InspectorDock({ node, fill = false, onClose, ...inspector }: Props) {
+export function InspectorDock({ node, fill = false, onClose, suggested, onInspect, ...inspector }: Props) {
   const [width, setWidth] = usePanelWidth('kleinflow.inspector.width');
+  // The suggestion's button goes away as its node opens: the keyboard follows into the panel.
+  const dock = useRef<HTMLDivElement>(null);
+  const focusOpened = useRef(false);
+  useEffect(() => {
+    if (!node || !focusOpened.current) return;
+    focusOpened.current = false;
+    dock.current?.querySelector<HTMLElement>('.kf-inspector')?.focus();
+  }, [node]);
   return (
     // biome-ignore lint/a11y/noStaticElementInteractions: Esc from anywhere inside the panel closes it (its controls are the interactive parts)
     <div
+      ref={dock}
       className="kf-inspector-dock"
       style={fill ? undefined : { width }}
       onKeyDown={(e) => {
@@ -71,7 +86,7 @@ export function InspectorDock({ node, fill = false, onClose, ...inspector }: Pro
       {node ? (
         <Inspector node={node} {...inspector} onClose={() => onClose()} />
       ) : (
-        <aside className="kf-inspector kf-inspector--empty" aria-label="Inspector">
+        <aside className="kf-inspector kf-inspector--empty" aria-label="Inspector" tabIndex={-1}>
           <header className="kf-inspector__header">
             <h2>Inspector</h2>
             <button
@@ -84,6 +99,21 @@ export function InspectorDock({ node, fill = false, onClose, ...inspector }: Pro
             </button>
           </header>
           <p className="kf-inspector__hint-empty">Select one node to inspect it.</p>
+          {suggested && onInspect && (
+            <p className="kf-inspector__hint-empty">
+              <button
+                type="button"
+                className="kf-button"
+                title="The node that makes the picture: its render settings"
+                onClick={() => {
+                  focusOpened.current = true;
+                  onInspect(suggested.id);
+                }}
+              >
+                Inspect {suggested.title}
+              </button>
+            </p>
+          )}
         </aside>
       )}
     </div>

@@ -3,7 +3,8 @@
  * bytes of one thread; it says its estimate before any progress, then progress (--progress forces
  * both on a render this small, which is otherwise silent: tests/cli/render-3d.test.ts); at the
  * largest size the estimate is the first line, said before the long work starts (the test stops
- * the render there).
+ * the render there). A volume render says so, with the samples its rays take, instead of "sphere
+ * traced".
  */
 import { spawn } from 'node:child_process';
 import { readFileSync } from 'node:fs';
@@ -12,6 +13,7 @@ import { describe, expect, it } from 'vitest';
 import { BIN, cliTempDir, ROOT, runCli } from './run-cli.ts';
 
 const FIG26 = join(ROOT, 'examples/3d/fig26-quasi-sphere.kleinflow.json');
+const FIG10 = join(ROOT, 'examples/3d/fig10-volume-nesting-spheres.kleinflow.json');
 const SMALL = ['--size', '20x16', '--samples', '1'];
 const dir = cliTempDir('kleinflow-render3d-threads-');
 
@@ -63,5 +65,16 @@ describe('kleinflow render of a 3D graph on every core', () => {
     expect(line).toMatch(
       /^rendering .*huge\.png \(16384×16384, 4 samples\/px, sphere traced\): about \d+ h \d+ min on /,
     );
+  }, 60_000);
+
+  it('says a volume render is volume rendered, with the samples its rays take of those asked for', () => {
+    const out = join(dir, 'volume.png');
+    const r = runCli(['render', FIG10, '-o', out, ...SMALL, '--threads', '1', '--progress']);
+    expect(r.status).toBe(0);
+    const first = r.stderr.trim().split('\n')[0]!;
+    expect(first).toMatch(
+      /^rendering .*volume\.png \(20×16, 1 samples\/px, volume rendered, about \d+ of 128 samples per ray\): about /,
+    );
+    expect(first).not.toMatch(/sphere traced/);
   }, 60_000);
 });

@@ -1,3 +1,9 @@
+/**
+ * Fig. 6 in real Chromium: the quaternion Kleinian group example draws its limit set as shaded dots
+ * on the 3D view's overlay canvas (the painter of `kleinflow render`, shader-gen/space/
+ * limit-dots-3d.ts), an orbit of the camera redraws them from the new point of view, and
+ * Export → PNG carries them; a search cut short by `max words` says so in a live status.
+ */
 import type { Page } from 'playwright-core';
 import { describe, expect, it } from 'vitest';
 import { appSessionForSuite } from './app-suite.ts';
@@ -52,5 +58,24 @@ describe('the limit set of a quaternion Kleinian group in the 3D view', () => {
     for (let i = 0; i < image.data.length; i += 4)
       if (Math.max(image.data[i]!, image.data[i + 1]!, image.data[i + 2]!) > 100) lit++;
     expect(lit).toBeGreaterThan(200);
+  }, 150_000);
+
+  it('says in a live status when the search stopped at max words', async () => {
+    const status = page.getByTestId('limit-set-status');
+    expect(await status.getAttribute('role')).toBe('status');
+    expect(await status.textContent()).toBe('');
+    const setWords = (maxWords: number) =>
+      page.evaluate(
+        (n) =>
+          window.__kleinflow!.store.dispatchSilently({
+            type: 'set-params',
+            patches: [{ nodeId: 'group', params: { maxWords: n } }],
+          }),
+        maxWords,
+      );
+    await setWords(2000);
+    await expect.poll(() => status.textContent(), SLOW).toMatch(/search stopped at 2000 words/);
+    await setWords(1_000_000);
+    await expect.poll(() => status.textContent(), SLOW).toBe('');
   }, 150_000);
 });

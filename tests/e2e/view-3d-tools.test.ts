@@ -3,7 +3,8 @@
  * tracer (the same generator as `kleinflow glsl`) with the scene's values and the view's camera,
  * and glslangValidator accepts both; Export → SVG is disabled with its reason; while the camera
  * orbits the 3D pane renders at a reduced resolution and returns to full size once still; and
- * inspect mode explains a 3D pixel (and a press on a handle then never drags it). The pane is small and the render node cheap, as in
+ * inspect mode explains a 3D pixel (and a press on a handle then never drags it), and in volume
+ * mode says what the volume integration did along the ray. The pane is small and the render node cheap, as in
  * view-3d.test.ts (SwiftShader sphere-traces slowly).
  */
 import { readFileSync } from 'node:fs';
@@ -13,10 +14,11 @@ import type { GraphDoc } from '../../nodes/graph/document.ts';
 import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { registry } from '../../nodes/types/index.ts';
 import { explainPixel3d } from '../../shader-gen/space/explain-3d.ts';
+import { explainVolumePixel3d } from '../../shader-gen/space/explain-volume-3d.ts';
 import { standaloneShader } from '../../shader-gen/standalone.ts';
 import { shadertoyWrapper, validateShaders } from '../shader-gen/support/glslang.ts';
 import { appSessionForSuite } from './app-suite.ts';
-import { waitRendered } from './editor-page.ts';
+import { nodeEl, waitRendered } from './editor-page.ts';
 import { freePanePoint, handleCentres, open3dExample, openSmall3dPane } from './view-3d-page.ts';
 
 const ID = 'fig11-sphere-inversion-fractal';
@@ -229,5 +231,79 @@ describe('Explain this pixel in 3D', () => {
     expect(
       await page.getByRole('button', { name: 'Inspect', exact: true }).getAttribute('aria-pressed'),
     ).toBe('false');
+  }, 240_000);
+
+  it('in volume mode the panel says what the volume integration did along the ray', async () => {
+    const camera = { position: [5.25, -4.5, 3.75], target: [0, 0, 0.5], fovDeg: 41 } as const;
+    await page.evaluate((cam) => {
+      const store = window.__kleinflow!.store;
+      store.dispatchSilently({
+        type: 'set-params',
+        patches: [{ nodeId: 'render', params: { render: 'volume', volumeSteps: 24 } }],
+      });
+      store.dispatchSilently({
+        type: 'set-camera-3d',
+        camera: { position: [...cam.position], target: [...cam.target], fovDeg: cam.fovDeg },
+      });
+    }, camera);
+    await waitRendered(page, 120_000);
+    const current = await doc();
+    const scene = evaluateGraph(current, registry).scene3d!;
+    expect(scene.volume?.steps).toBe(24);
+    // The node shows the volume's settings, not the sphere tracer's (which would change nothing).
+    const renderNode = nodeEl(page, 'render');
+    await renderNode.getByRole('combobox', { name: 'volume palette' }).waitFor();
+    expect(await renderNode.getByRole('combobox', { name: 'colouring' }).count()).toBe(0);
+    expect(await renderNode.getByRole('textbox', { name: 'reflections' }).count()).toBe(0);
+    const view = { ...scene, camera: current.camera3d ?? scene.camera };
+    const b = (await page.getByTestId('render-pane').boundingBox())!;
+    const handles = await handleCentres(page);
+    const [w, h] = await page
+      .getByTestId('render-pane')
+      .evaluate((el) => [el.clientWidth, el.clientHeight] as const);
+    const at = (x: number, y: number) => explainVolumePixel3d(view, w, h, x, h - y);
+    // A pixel whose ray, and its neighbours' (a click lands within a pixel), crosses nested mirrors;
+    // tried from the pane's centre out, where the clusters are (each try prepares a trace: ~10 ms).
+    const candidates: [number, number][] = [];
+    for (let y = 12; y < h - 12; y += 4) for (let x = 12; x < w - 12; x += 4) candidates.push([x, y]);
+    candidates.sort(
+      (p, q) => Math.hypot(p[0] - w / 2, p[1] - h / 2) - Math.hypot(q[0] - w / 2, q[1] - h / 2),
+    );
+    let found: { x: number; y: number; samples: Set<number> } | null = null;
+    for (const [x, y] of candidates) {
+      if (handles.some(([hx, hy]) => Math.hypot(hx - b.x - x, hy - b.y - y) < 24)) continue;
+      if (at(x, y).deepest < 2) continue;
+      const around = [-1, 0, 1].flatMap((dx) => [-1, 0, 1].map((dy) => at(x + dx, y + dy)));
+      if (around.every((e) => e.deepest >= 2)) {
+        found = { x, y, samples: new Set(around.map((e) => e.samples)) };
+        break;
+      }
+    }
+    expect(found, `no nested pixel in a ${w} × ${h} view`).not.toBeNull();
+    await page.keyboard.down('Alt');
+    await page.mouse.click(b.x + found!.x, b.y + found!.y);
+    await page.keyboard.up('Alt');
+    const panel = page.getByTestId('inspect-panel');
+    await panel.waitFor();
+    const samples = Number(await panel.getByTestId('inspect-samples').textContent());
+    expect(found!.samples.has(samples)).toBe(true);
+    const text = (await panel.textContent())!;
+    expect(text).toContain('of 24');
+    expect(text).not.toContain('Hit point');
+    expect(text).toMatch(/crosses the volume in \d+ samples?, down to nesting depth \d+/);
+    expect(Number(await panel.getByTestId('inspect-depth').textContent())).toBeGreaterThanOrEqual(2);
+    const runs = panel.getByRole('list', { name: 'Depth along the ray' }).getByRole('listitem');
+    expect(await runs.count()).toBeGreaterThan(1);
+    expect(await runs.first().textContent()).toMatch(/^depth \d+.*× \d+ samples?/);
+    expect(await panel.getByTestId('inspect-colour').textContent()).toMatch(/^#[0-9a-f]{6}$/);
+    expect(await panel.getByTestId('inspect-gpu').textContent()).toContain('CPU volume renderer');
+    await page.keyboard.press('Escape');
+    await panel.waitFor({ state: 'detached' });
+    await page.evaluate(() =>
+      window.__kleinflow!.store.dispatchSilently({
+        type: 'set-params',
+        patches: [{ nodeId: 'render', params: { render: 'surface' } }],
+      }),
+    );
   }, 240_000);
 });

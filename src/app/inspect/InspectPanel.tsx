@@ -4,65 +4,26 @@
  * pixel (agreeing, disagreeing with a note, or unavailable and why), the final point and scale, and
  * the word of elements applied — numbered like the markers on the picture. Escape closes it.
  * A 3D graph's explanation (inspection-3d.ts) shows in the same panel: the ray's hit point, the
- * word that maps it onto a seed, and points with three coordinates.
+ * word that maps it onto a seed, and points with three coordinates; a volume-rendered one
+ * (inspection-volume.ts) shows what the volume integration did along the ray (VolumeFacts.tsx).
  */
 import { type JSX, useCallback } from 'react';
 import { MAX_DRAWN_STEPS } from '../../viewport/overlay/orbit-path.ts';
-import type { GpuCheck, Inspection } from './inspection.ts';
+import type { Inspection } from './inspection.ts';
 import type { Inspection3d } from './inspection-3d.ts';
+import type { InspectionVolume } from './inspection-volume.ts';
+import { fmt, GpuLine, point, STOP_TITLE } from './panel-parts.tsx';
 import type { PanelPlace } from './panel-place.ts';
+import { VolumeFacts } from './VolumeFacts.tsx';
 
 interface Props {
-  readonly inspection: Inspection | Inspection3d;
+  readonly inspection: Inspection | Inspection3d | InspectionVolume;
   /** Where it goes in the pane (away from the point). */
   readonly place: PanelPlace;
   onClose(): void;
 }
 
-/** A number for people: `digits` significant digits, no exponent for ordinary sizes, a true minus sign. */
-export const fmt = (v: number, digits = 4): string => {
-  if (!Number.isFinite(v)) return String(v);
-  const a = Math.abs(v);
-  const text =
-    a !== 0 && (a >= 1e6 || a < 1e-4) ? v.toExponential(digits - 1) : String(+v.toPrecision(digits));
-  return text.replace(/-/g, '−');
-};
-const point = (p: readonly number[], digits = 4) => `(${p.map((v) => fmt(v, digits)).join(', ')})`;
-
-const STOP_TITLE = {
-  'fundamental-domain': 'reached the tile',
-  limit: 'hit the limit',
-  seed: 'in an orbit seed',
-  clipped: 'outside the clip disk',
-  missed: 'the ray misses the orbit',
-} as const;
-
-function GpuLine({ gpu, depth }: { gpu: GpuCheck; depth: number }) {
-  if (gpu.kind === 'agrees')
-    return (
-      <p className="kf-inspect__gpu kf-inspect__gpu--agrees" data-testid="inspect-gpu">
-        GPU depth: {gpu.depth} (agrees)
-      </p>
-    );
-  if (gpu.kind === 'unavailable')
-    return (
-      <p className="kf-inspect__gpu kf-inspect__gpu--unavailable" data-testid="inspect-gpu">
-        GPU depth: not available — {gpu.reason}.
-      </p>
-    );
-  return (
-    <div className="kf-inspect__gpu kf-inspect__gpu--disagrees" role="alert" data-testid="inspect-gpu">
-      <p>
-        GPU depth: {gpu.depth} ({STOP_TITLE[gpu.stop]}) — disagrees with the CPU's {depth}.
-      </p>
-      <p className="kf-inspect__note">{gpu.note}</p>
-    </div>
-  );
-}
-
 export function InspectPanel({ inspection, place, onClose }: Props): JSX.Element {
-  const { trace: t, word } = inspection;
-  const shown = word.slice(0, MAX_DRAWN_STEPS);
   // Pan/zoom listens natively on the pane: a press, a drag or a wheel in the panel (Close, selecting
   // text, scrolling the word) must not pan or zoom the picture behind it.
   const keepEvents = useCallback((el: HTMLElement | null) => {
@@ -95,6 +56,21 @@ export function InspectPanel({ inspection, place, onClose }: Props): JSX.Element
           ×
         </button>
       </header>
+      {'kind' in inspection && inspection.kind === 'volume' ? (
+        <VolumeFacts inspection={inspection} />
+      ) : (
+        <TraceFacts inspection={inspection} />
+      )}
+    </section>
+  );
+}
+
+/** A 2D pixel's or a 3D hit's explanation: the point, the depth, the word. */
+function TraceFacts({ inspection }: { inspection: Inspection | Inspection3d }) {
+  const { trace: t, word } = inspection;
+  const shown = word.slice(0, MAX_DRAWN_STEPS);
+  return (
+    <>
       <dl className="kf-inspect__facts">
         <dt>{'kind' in inspection ? 'Hit point' : 'Point'}</dt>
         <dd data-testid="inspect-point">{t.stop === 'missed' ? '—' : point(t.start)}</dd>
@@ -133,6 +109,6 @@ export function InspectPanel({ inspection, place, onClose }: Props): JSX.Element
           )}
         </>
       )}
-    </section>
+    </>
   );
 }

@@ -4,7 +4,8 @@
  * view has changed and settled, so the panel always explains the picture on screen. A press that moves is a
  * pan, not a click. Escape closes the panel, then leaves inspect mode. In a 3D view the clicked
  * pixel itself is kept (the camera moves, not the picture's plane) and explained again, by the
- * CPU tracer, as the graph or the camera changes (inspection-3d.ts).
+ * CPU tracer, as the graph or the camera changes (inspection-3d.ts) — or, for a volume-rendered
+ * graph, by the CPU volume renderer (inspection-volume.ts).
  */
 import { type RefObject, useEffect, useRef, useState } from 'react';
 import type { View } from '../../../nodes/core/scene.ts';
@@ -17,6 +18,7 @@ import type { PixelInspection } from '../../viewport/pixel-probe.ts';
 import type { Viewport } from '../../viewport/viewport.ts';
 import { type Inspection, inspect } from './inspection.ts';
 import { type Inspection3d, inspect3d } from './inspection-3d.ts';
+import { type InspectionVolume, inspectVolume } from './inspection-volume.ts';
 import { type PanelPlace, panelPlace } from './panel-place.ts';
 
 /** A press that moves less than this (CSS px) before release is a click. */
@@ -27,7 +29,7 @@ const SETTLE_MS = 150;
 export interface PixelInspectState {
   /** The inspected world point (the clicked one), or null when the panel is closed. */
   readonly anchor: Vec2 | null;
-  readonly inspection: Inspection | Inspection3d | null;
+  readonly inspection: Inspection | Inspection3d | InspectionVolume | null;
   /** Where the panel goes: away from the point (panel-place.ts). */
   readonly place: PanelPlace;
   close(): void;
@@ -58,7 +60,7 @@ function probeAt(viewport: Viewport | null, screen: Screen, anchor: Vec2): Pixel
 
 export function usePixelInspect(p: Inputs): PixelInspectState {
   const [anchor, setAnchor] = useState<Vec2 | null>(null);
-  const [inspection, setInspection] = useState<Inspection | Inspection3d | null>(null);
+  const [inspection, setInspection] = useState<Inspection | Inspection3d | InspectionVolume | null>(null);
   /** The clicked CSS point of a 3D view (its explanation follows the camera), or null. */
   const [pixel3d, setPixel3d] = useState<Vec2 | null>(null);
   const latest = useRef(p);
@@ -135,7 +137,13 @@ export function usePixelInspect(p: Inputs): PixelInspectState {
   const probedAnchor = useRef<Vec2 | null>(null);
   useEffect(() => {
     if (!space || !pixel3d || width === 0 || height === 0) return undefined;
-    const run = () => setInspection(inspect3d(evaluation, space.scene, space.camera, pixel3d, width, height));
+    const { scene, camera } = space;
+    const run = () =>
+      setInspection(
+        scene.volume
+          ? inspectVolume(scene, camera, pixel3d, width, height)
+          : inspect3d(evaluation, scene, camera, pixel3d, width, height),
+      );
     if (probedAnchor.current !== pixel3d) {
       probedAnchor.current = pixel3d;
       run();

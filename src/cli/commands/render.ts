@@ -26,7 +26,7 @@ import {
   parseTimeOption,
   runAnimationCommand,
 } from '../render-animation-command.ts';
-import { announceEstimate, estimateRender3dSeconds, estimateRenderSeconds } from '../render-estimate.ts';
+import { announceEstimate, estimate3d, estimateRenderSeconds } from '../render-estimate.ts';
 import { renderScene3dPngOnPool, renderScenePng } from '../render-png.ts';
 
 export const DEFAULT_RENDER_SIZE = { width: 1024, height: 1024 } as const;
@@ -157,7 +157,7 @@ interface Still3dRequest {
 }
 
 /**
- * The 3D still: the CPU sphere tracer in bands over worker threads (render-3d-pool.ts), the
+ * The 3D still: the CPU sphere tracer (or volume renderer) in bands over worker threads (render-3d-pool.ts), the
  * estimate said before any of it starts. Starting workers costs about a second, so a render
  * estimated shorter than that stays on this thread unless --threads asks otherwise.
  */
@@ -170,12 +170,12 @@ async function render3d(
 ): Promise<number> {
   const { width, height } = request;
   const samples = request.samples ?? scene.samples;
-  const single = estimateRender3dSeconds(scene, width, height, samples);
+  const { seconds: single, how } = estimate3d(scene, width, height, samples);
   const wanted = request.threads ?? (single < WORKERS_AFTER_S ? 1 : availableParallelism());
   const threads = Math.min(wanted, height);
   const summary = `${width}×${height}, ${samples} samples/px`;
   const still = {
-    label: `rendering ${output} (${summary}, sphere traced)`,
+    label: `rendering ${output} (${summary}, ${how})`,
     summary,
     seconds: single / threads,
     always: request.always,

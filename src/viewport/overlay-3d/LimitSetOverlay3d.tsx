@@ -75,23 +75,26 @@ export function LimitSetOverlay3d(props: {
         aria-label="Limit set of the quaternion Kleinian group"
         style={{ position: 'absolute', inset: 0, width, height, pointerEvents: 'none' }}
       />
-      {notes.map((n, i) => (
-        <div
-          key={n}
-          data-testid="limit-set-note"
-          style={{
-            position: 'absolute',
-            left: 8,
-            bottom: 10 + 18 * i,
-            color: '#ffcc66',
-            font: '12px system-ui, sans-serif',
-            textShadow: '0 0 3px #000',
-            pointerEvents: 'none',
-          }}
-        >
-          Limit set: {n}
-        </div>
-      ))}
+      {/* A live status: a screen reader hears that the search stopped short (the dots alone say nothing). */}
+      <div role="status" data-testid="limit-set-status">
+        {notes.map((n, i) => (
+          <div
+            key={n}
+            data-testid="limit-set-note"
+            style={{
+              position: 'absolute',
+              left: 8,
+              bottom: 10 + 18 * i,
+              color: '#ffcc66',
+              font: '12px system-ui, sans-serif',
+              textShadow: '0 0 3px #000',
+              pointerEvents: 'none',
+            }}
+          >
+            Limit set: {n}
+          </div>
+        ))}
+      </div>
     </>
   );
 }

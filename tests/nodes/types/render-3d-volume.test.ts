@@ -1,8 +1,9 @@
 /**
  * The Render 3D node's volume mode (nodes/types/render-3d-volume.ts, docs/math-3d.md "§11 Volume
  * rendering of the nesting depth"): the scene carries a Volume3d only in volume mode, with the named
- * palette's a, b, c, d; out-of-range numbers are clamped with a message; its fields show only then;
- * it needs no seeds.
+ * palette's a, b, c, d; out-of-range numbers are clamped with a message; its fields show only then,
+ * and the sphere tracer's (colouring, environment, lighting, marching, reflections) only in surface
+ * mode; it needs no seeds.
  */
 import { describe, expect, it } from 'vitest';
 import { isFieldShown } from '../../../nodes/core/field-visibility.ts';
@@ -74,5 +75,33 @@ describe('Render 3D volume mode', () => {
       expect(isFieldShown(def, field, { render: 'surface' }), field).toBe(false);
     }
     expect(isFieldShown(def, 'render', {})).toBe(true);
+  });
+
+  it('hides the sphere tracer’s fields in volume mode, where they change nothing', () => {
+    const def = defOf('render-3d');
+    const surfaceOnly = ['coloring', 'environment', 'reflections', 'step', 'marchSteps', 'deScale'].concat([
+      'light',
+      'ambient',
+      'diffuse',
+      'specular',
+      'shininess',
+      'occlusion',
+      'shadow',
+    ]);
+    for (const field of surfaceOnly) {
+      expect(isFieldShown(def, field, { render: 'surface' }), field).toBe(true);
+      expect(isFieldShown(def, field, { render: 'volume' }), field).toBe(false);
+    }
+    // what hangs on the colouring or the environment goes with it
+    const palette = { coloring: 'cosine', palette: 'custom', environment: 'sky' };
+    for (const field of ['palette', 'a', 'horizon', 'ground']) {
+      expect(isFieldShown(def, field, { ...palette, render: 'surface' }), field).toBe(true);
+      expect(isFieldShown(def, field, { ...palette, render: 'volume' }), field).toBe(false);
+    }
+    // what both modes use stays
+    for (const field of ['camera', 'target', 'fov', 'maxIterations', 'samples', 'background'])
+      expect(isFieldShown(def, field, { render: 'volume' }), field).toBe(true);
+    // the switch itself comes first, so showing the colouring never moves it
+    expect(Object.keys(def.params)[0]).toBe('render');
   });
 });

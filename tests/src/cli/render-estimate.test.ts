@@ -1,13 +1,30 @@
-/** Long CPU renders say up front how long they will take, and how long is left as they go. */
+/**
+ * Long CPU renders say up front how long they will take, and how long is left as they go. A volume
+ * render is estimated from its own cost: the samples its rays take (the renderer's count, early
+ * exits and rays past the mirrors included) × the time of one sample.
+ */
 import { describe, expect, it } from 'vitest';
+import { probeVolume3d } from '../../../shader-gen/space/render-3d.ts';
 import { progressLine } from '../../../src/cli/progress.ts';
 import {
   ANNOUNCE_AFTER_S,
   announceEstimate,
+  estimate3d,
   estimateRenderSeconds,
+  estimateVolume3d,
   formatDuration,
 } from '../../../src/cli/render-estimate.ts';
+import { FIG11 } from '../../shader-gen/space/scenes-3d.ts';
+import { NO_MIRRORS, ONE_MIRROR, VOLUME } from '../../shader-gen/space/volume-scenes.ts';
 import { loadExample } from '../../support/examples.ts';
+
+/** The mean samples a ray of a small W × H render takes (every pixel: the probe's grid covers them all). */
+const meanSamples = (scene: typeof ONE_MIRROR, w: number, h: number) => {
+  const p = probeVolume3d(scene, w, h);
+  let sum = 0;
+  for (let i = 2; i < p.length; i += 4) sum += p[i]!;
+  return sum / (w * h);
+};
 
 const sink = (isTTY = false) => {
   const lines: string[] = [];
@@ -37,6 +54,34 @@ describe('render estimate', () => {
     const s = estimateRenderSeconds(scene, 16384, 16384, 4);
     expect(Number.isFinite(s)).toBe(true);
     expect(s).toBeGreaterThan(0);
+  });
+
+  it('estimates a volume render from the samples its rays take, × the time of one sample', () => {
+    const e = estimateVolume3d(ONE_MIRROR, 24, 18, 4);
+    expect(e.samplesPerRay).toBeCloseTo(meanSamples(ONE_MIRROR, 24, 18), 9);
+    expect(e.samplesPerRay).toBeGreaterThan(0);
+    expect(e.samplesPerRay).toBeLessThan(VOLUME.steps); // the rays past the mirror take none
+    expect(e.steps).toBe(VOLUME.steps);
+    expect(e.secondsPerSample).toBeGreaterThan(0);
+    expect(e.seconds).toBeCloseTo(24 * 18 * 4 * e.samplesPerRay * e.secondsPerSample, 12);
+    // Twice the samples asked for, twice the samples taken (nothing here is dense enough to stop early).
+    const twice = { ...ONE_MIRROR, volume: { ...VOLUME, steps: 2 * VOLUME.steps } };
+    expect(estimateVolume3d(twice, 24, 18, 4).samplesPerRay).toBeCloseTo(2 * e.samplesPerRay, 9);
+    // A dense cloud stops its rays early: fewer samples taken than asked for by the rays that meet it.
+    const dense = { ...ONE_MIRROR, volume: { ...VOLUME, density: 40 } };
+    expect(estimateVolume3d(dense, 24, 18, 4).samplesPerRay).toBeLessThan(e.samplesPerRay / 2);
+    // No mirrors: no ray takes a sample, the render costs nothing worth announcing.
+    expect(estimateVolume3d(NO_MIRRORS, 24, 18, 4)).toMatchObject({ samplesPerRay: 0, seconds: 0 });
+  });
+
+  it('says how a 3D render is drawn: sphere traced, or volume rendered with its samples per ray', () => {
+    expect(estimate3d(ONE_MIRROR, 24, 18, 1).how).toMatch(
+      /^volume rendered, about \d+ of 64 samples per ray$/,
+    );
+    const surface = { ...FIG11, marchSteps: 16 };
+    const s = estimate3d(surface, 8, 6, 1);
+    expect(s.how).toBe('sphere traced');
+    expect(s.seconds).toBeGreaterThan(0);
   });
 
   it('adds the time left to the progress line, extrapolated from the time so far', () => {

@@ -20,7 +20,7 @@ import type { GlslFunction } from '../../glsl/snippet.ts';
 import type { SourceBuilder } from '../../glsl/source.ts';
 import { POLE_AT_INFINITY } from '../elements/element-3d-kind.ts';
 import type { TracePlan } from '../plan.ts';
-import { local, type PlacedWalk, walkLimit } from './placed-walk.ts';
+import { emitStepBlocks, type PlacedWalk, walkLimit } from './placed-walk.ts';
 
 /**
  * Whether the program has the bound: every element kind has a GLSL boundary distance (as on the
@@ -71,21 +71,10 @@ export function emitBudgetWalk(out: SourceBuilder, placed: PlacedWalk): void {
     `    float delta = ${GLSL_FAR};`,
     '    float b;',
   );
-  placed.elements.forEach(({ record, rows }, i) => {
-    const data = rows.map((expr, k) => `      vec4 d${k} = ${local(expr)};`);
-    const args = rows.map((_, k) => `d${k}`).join(', ');
-    out.block(i + 1, [
-      `    { // ${record.kind}`,
-      ...data,
-      `      b = ${record.glsl.boundaryDistance!.name}(p, ${args});`,
-      '      delta = min(delta, b);',
-      ...record.glsl
-        .step({ pole: true, applied })
-        .split('\n')
-        .map((line) => `      ${line}`),
-      '    }',
-    ]);
-  });
+  emitStepBlocks(out, placed, { pole: true, applied }, (record, args) => [
+    `b = ${record.glsl.boundaryDistance!.name}(p, ${args});`,
+    'delta = min(delta, b);',
+  ]);
   out.push(
     // No element applied: the walk escaped after all (before N: no bound), or x_N is in no region.
     `    if (last) return max(min(bound, ${term('max(seedDe, 0.0)', 's', 'length(p - pole)')}), floorDe);`,

@@ -4,8 +4,9 @@
  * into once per pixel, and the step budget.
  */
 import type { Scene3d } from '../../../nodes/core/scene-3d.ts';
+import type { SourceBuilder } from '../../glsl/source.ts';
 import { ELEMENT_ARRAY, type SceneValues } from '../../glsl/values.ts';
-import type { ElementRecord3d } from '../elements/element-3d-kind.ts';
+import type { ElementRecord3d, StepHooks } from '../elements/element-3d-kind.ts';
 import type { TracePlan } from '../plan.ts';
 import { packSeed } from '../seeds-3d.ts';
 
@@ -51,3 +52,29 @@ export const local = (expr: string): string => {
   const m = UNIFORM_ROW.exec(expr);
   return m ? `el${m[1]}` : expr;
 };
+
+/**
+ * The walk loop's body: one straight-line block per element, in scene order — its rows bound to
+ * `vec4 d0, d1, …`, then `before` (statements reading them, e.g. a boundary distance), then the
+ * kind's own step with `hooks` (which ends in `continue` when it applies).
+ */
+export function emitStepBlocks(
+  out: SourceBuilder,
+  placed: PlacedWalk,
+  hooks: StepHooks,
+  before: (record: ElementRecord3d, args: string) => readonly string[] = () => [],
+): void {
+  placed.elements.forEach(({ record, rows }, i) => {
+    const args = rows.map((_, k) => `d${k}`).join(', ');
+    out.block(i + 1, [
+      `    { // ${record.kind}`,
+      ...rows.map((expr, k) => `      vec4 d${k} = ${local(expr)};`),
+      ...before(record, args).map((line) => `      ${line}`),
+      ...record.glsl
+        .step(hooks)
+        .split('\n')
+        .map((line) => `      ${line}`),
+      '    }',
+    ]);
+  });
+}

@@ -6,7 +6,7 @@ import { POLE_AT_INFINITY } from '../elements/element-3d-kind.ts';
 import { ballDistanceGlsl } from '../elements/sphere-inversion.ts';
 import { seedDistanceCall, seedGlslFunctions } from '../seeds-3d.ts';
 import { budgetFunctions, emitBudgetWalk, hasBudgetBound } from './budget.glsl.ts';
-import { local, type PlacedWalk, walkLimit } from './placed-walk.ts';
+import { emitStepBlocks, local, type PlacedWalk, walkLimit } from './placed-walk.ts';
 
 export { type PlacedWalk, placeWalk } from './placed-walk.ts';
 
@@ -141,7 +141,7 @@ export function emitSceneGlobals(out: SourceBuilder, placed: PlacedWalk): boolea
  */
 export function emitWalk(out: SourceBuilder, placed: PlacedWalk, record: boolean): void {
   const limit = walkLimit(placed);
-  // The bound of a walk out of budget (budget.glsl.ts), called by traceRay after a few steps.
+  // The bound of a walk out of budget (budget.glsl.ts), called by traceRay.
   if (record && hasBudgetBound(placed)) emitBudgetWalk(out, placed);
   out.push(
     `float walk${record ? 'Record' : 'Plain'}(vec3 start, out vec4 info, out vec3 fin) {`,
@@ -151,17 +151,7 @@ export function emitWalk(out: SourceBuilder, placed: PlacedWalk, record: boolean
     ...(record ? [`  vec3 pole = vec3(${floatLiteral(POLE_AT_INFINITY)}, 0.0, 0.0);`] : []),
     `  for (; depth < ${limit};) {`,
   );
-  placed.elements.forEach(({ record: kind, rows: data }, i) => {
-    out.block(i + 1, [
-      `    { // ${kind.kind}`,
-      ...data.map((expr, k) => `      vec4 d${k} = ${local(expr)};`),
-      ...kind.glsl
-        .step({ pole: record, applied: '' })
-        .split('\n')
-        .map((line) => `      ${line}`),
-      '    }',
-    ]);
-  });
+  emitStepBlocks(out, placed, { pole: record, applied: '' });
   out.push('    break;', '  }');
   if (placed.seeds.length === 0) out.push(`  float sd = ${GLSL_FAR};`, '  int seed = -1;');
   else {

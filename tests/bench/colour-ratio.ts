@@ -9,7 +9,6 @@
  * and its pictures compared in 8-bit sRGB levels (the max difference and the share of pixels beyond
  * rounding are printed): a ratio only means something at equal output. Never fails on a time.
  */
-import { fileURLToPath } from 'node:url';
 import type { Scene } from '../../nodes/core/scene.ts';
 import { compile, shadertoySource } from '../../shader-gen/compile.ts';
 import { shadertoyWrapper } from '../shader-gen/support/glslang.ts';
@@ -18,6 +17,7 @@ import { withBenchPage } from './bench-page.ts';
 import type { OutputDifference, OutputProgram } from './gpu-page.ts';
 import { HAND_WRITTEN, withDefines } from './hand-written/index.ts';
 import { FRAME_SIZE, median, medianRatio, printTable } from './report.ts';
+import { runWhenMain } from './run-when-main.ts';
 import { ROUNDS } from './shader-ratio.ts';
 
 const ms = (x: number) => x.toFixed(1);
@@ -111,10 +111,4 @@ export async function run(rounds = ROUNDS): Promise<void> {
   });
 }
 
-if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {
-  const rounds = Number(process.argv[2] ?? ROUNDS);
-  run(Number.isInteger(rounds) && rounds >= 1 ? rounds : ROUNDS).catch((e) => {
-    console.error(e);
-    process.exitCode = 1;
-  });
-}
+runWhenMain(import.meta.url, run, ROUNDS);

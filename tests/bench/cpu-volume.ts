@@ -5,11 +5,11 @@
  * (tests/bench/hand-written/fig10-volume-cpu.ts), interleaved, with the fraction of pixels whose
  * bytes differ by more than 2. Prints figures, never fails on a time.
  */
-import { fileURLToPath } from 'node:url';
 import { renderScene3d } from '../../shader-gen/space/render-3d.ts';
 import { exampleScenes3d } from '../shader-gen/space/scenes-3d.ts';
 import { renderFig10Volume } from './hand-written/fig10-volume-cpu.ts';
 import { median, medianRatio, printTable } from './report.ts';
+import { runWhenMain } from './run-when-main.ts';
 
 export const SIZE = 96;
 const ROUNDS = 3;
@@ -53,10 +53,4 @@ export async function run(size = SIZE): Promise<void> {
   );
 }
 
-if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {
-  const size = Number(process.argv[2] ?? SIZE);
-  run(Number.isInteger(size) && size >= 8 ? size : SIZE).catch((e) => {
-    console.error(e);
-    process.exitCode = 1;
-  });
-}
+runWhenMain(import.meta.url, run, SIZE, 8);

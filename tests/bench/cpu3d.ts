@@ -10,7 +10,6 @@
  */
 import { readFileSync } from 'node:fs';
 import { availableParallelism } from 'node:os';
-import { fileURLToPath } from 'node:url';
 import { evaluateGraph } from '../../nodes/graph/evaluate.ts';
 import { parseDocumentText } from '../../nodes/graph/load.ts';
 import { registry } from '../../nodes/types/index.ts';
@@ -18,6 +17,7 @@ import { EXAMPLES_3D_DIR, examplePath } from '../../src/cli/examples.ts';
 import { renderScene3dOnPool } from '../../src/cli/render-3d-pool.ts';
 import { formatDuration } from '../../src/cli/render-estimate.ts';
 import { printTable } from './report.ts';
+import { runWhenMain } from './run-when-main.ts';
 
 export const SIZE = 256;
 /** The figure the goal is about: 1024², 4 samples/px, at most 3 minutes. */
@@ -67,10 +67,4 @@ async function runExample(name: string, size: number): Promise<void> {
   );
 }
 
-if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {
-  const size = Number(process.argv[2] ?? SIZE);
-  run(Number.isInteger(size) && size >= 8 ? size : SIZE).catch((e) => {
-    console.error(e);
-    process.exitCode = 1;
-  });
-}
+runWhenMain(import.meta.url, run, SIZE, 8);

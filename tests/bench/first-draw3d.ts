@@ -9,12 +9,12 @@
  * distances lost their early returns (docs/math-3d.md "Mirror material"). Prints figures, never
  * fails on a time.
  */
-import { fileURLToPath } from 'node:url';
 import { cameraUniforms, compile3d } from '../../shader-gen/space/compile-3d.ts';
 import { GpuProbe } from '../parity/gpu-probe.ts';
 import { exampleScenes3d } from '../shader-gen/space/scenes-3d.ts';
 import { HAND_WRITTEN_3D } from './hand-written/trace3d.ts';
 import { printTable } from './report.ts';
+import { runWhenMain } from './run-when-main.ts';
 
 export async function run(): Promise<void> {
   const gpu = await GpuProbe.open(1, 1);
@@ -60,9 +60,4 @@ export async function run(): Promise<void> {
   }
 }
 
-if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {
-  run().catch((e) => {
-    console.error(e);
-    process.exitCode = 1;
-  });
-}
+runWhenMain(import.meta.url, () => run());

@@ -11,6 +11,7 @@ import { exampleScene } from '../src/viewport/fixtures.ts';
 import { withBenchPage } from './bench-page.ts';
 import type { GpuBenchResult } from './gpu-page.ts';
 import { printTable } from './report.ts';
+import { runWhenMain } from './run-when-main.ts';
 
 /** Frames per median (the brief asks for at least 5). */
 const FRAMES = 5;
@@ -102,8 +103,4 @@ export async function run(): Promise<void> {
   });
 }
 
-if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {
-  run().catch((e) => {
-    console.error(e);
-  });
-}
+runWhenMain(import.meta.url, () => run());

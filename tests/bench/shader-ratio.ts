@@ -11,12 +11,12 @@
  * reloads uniforms, so no uniform shader, hand-written or generated, comes near the constant one
  * there). Never fails on a time; compare ratios, not absolute times.
  */
-import { fileURLToPath } from 'node:url';
 import { compile } from '../../shader-gen/compile.ts';
 import { exampleScene } from '../src/viewport/fixtures.ts';
 import { withBenchPage } from './bench-page.ts';
 import { HAND_WRITTEN } from './hand-written/index.ts';
 import { median, medianRatio, printTable } from './report.ts';
+import { runWhenMain } from './run-when-main.ts';
 
 /** Rounds of U B H HU frames (a ratio moves by about ±0.02 between runs at 25–31 rounds here). */
 export const ROUNDS = 31;
@@ -74,10 +74,4 @@ export async function run(rounds = ROUNDS): Promise<void> {
   });
 }
 
-if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {
-  const rounds = Number(process.argv[2] ?? ROUNDS);
-  run(Number.isInteger(rounds) && rounds >= 1 ? rounds : ROUNDS).catch((e) => {
-    console.error(e);
-    process.exitCode = 1;
-  });
-}
+runWhenMain(import.meta.url, run, ROUNDS);

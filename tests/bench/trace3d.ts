@@ -8,13 +8,13 @@
  * on hit or miss. Plus one colour frame of each generated program (normals, occlusion, shadow).
  * Prints figures, never fails on a time. Goal (issue #22): ≤ 1.25× (stretch 1.10×), < 1 % differ.
  */
-import { fileURLToPath } from 'node:url';
 import type { Scene3d } from '../../nodes/core/scene-3d.ts';
 import { cameraUniforms, compile3d, type Variant3d } from '../../shader-gen/space/compile-3d.ts';
 import { GpuProbe } from '../parity/gpu-probe.ts';
 import { exampleScenes3d } from '../shader-gen/space/scenes-3d.ts';
-import { HAND_WRITTEN_3D } from './hand-written/trace3d.ts';
+import { HAND_WRITTEN_3D, type HandWrittenTracer } from './hand-written/trace3d.ts';
 import { FRAME_SIZE, median, medianRatio, printTable } from './report.ts';
+import { runWhenMain } from './run-when-main.ts';
 
 export const ROUNDS = 5;
 const ms = (x: number) => x.toFixed(0);
@@ -74,17 +74,31 @@ export async function benchScene(
   ];
 }
 
-export async function run(rounds = ROUNDS): Promise<void> {
+/** A table of benchScene rows: each hand-written program against the generated ones. */
+export interface HandBench {
+  readonly tracers: readonly HandWrittenTracer[];
+  /** What the table compares, printed above it after the frame size and renderer. */
+  readonly title: string;
+  /** The rest of the heading, after the rounds. */
+  readonly notes: string;
+  readonly differLabel: string;
+  readonly variant?: Variant3d;
+  readonly differ?: (a: Float32Array, b: Float32Array) => number;
+}
+
+/** Runs benchScene for every tracer of `bench` on one probe page and prints the table. */
+export async function runHandBench(bench: HandBench, rounds: number): Promise<void> {
   const gpu = await GpuProbe.open(FRAME_SIZE, FRAME_SIZE);
   try {
     const scenes = exampleScenes3d();
     const rows: string[][] = [];
-    for (const { example, source } of HAND_WRITTEN_3D)
-      rows.push(await benchScene(gpu, example, scenes[example]!, source, rounds));
+    for (const { example, source } of bench.tracers)
+      rows.push(
+        await benchScene(gpu, example, scenes[example]!, source, rounds, bench.variant, bench.differ),
+      );
     console.log(
-      `\n3D sphere tracer against hand-written tracers written for speed, ${FRAME_SIZE}², Chromium ` +
-        `WebGL2 (${gpu.renderer}), ${rounds} interleaved rounds (U B H …), probe output; colour = one ` +
-        'shaded baked frame. Goal: generated/hand ≤ 1.25×, hit/miss differ < 1 %.\n',
+      `\n${bench.title}, ${FRAME_SIZE}², Chromium WebGL2 (${gpu.renderer}), ${rounds} interleaved rounds ` +
+        `(U B H …), ${bench.notes}\n`,
     );
     printTable(
       [
@@ -94,7 +108,7 @@ export async function run(rounds = ROUNDS): Promise<void> {
         'hand ms',
         'baked/hand',
         'uniform/hand',
-        'hit/miss differ',
+        bench.differLabel,
         'colour ms',
       ],
       rows,
@@ -104,10 +118,16 @@ export async function run(rounds = ROUNDS): Promise<void> {
   }
 }
 
-if (process.argv[1] && fileURLToPath(import.meta.url) === process.argv[1]) {
-  const rounds = Number(process.argv[2] ?? ROUNDS);
-  run(Number.isInteger(rounds) && rounds >= 1 ? rounds : ROUNDS).catch((e) => {
-    console.error(e);
-    process.exitCode = 1;
-  });
-}
+export const run = (rounds = ROUNDS): Promise<void> =>
+  runHandBench(
+    {
+      tracers: HAND_WRITTEN_3D,
+      title: '3D sphere tracer against hand-written tracers written for speed',
+      notes:
+        'probe output; colour = one shaded baked frame. Goal: generated/hand ≤ 1.25×, hit/miss differ < 1 %.',
+      differLabel: 'hit/miss differ',
+    },
+    rounds,
+  );
+
+runWhenMain(import.meta.url, run, ROUNDS);

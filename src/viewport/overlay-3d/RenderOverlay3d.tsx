@@ -6,16 +6,16 @@
  * a drag only changes values (uniforms) and never recompiles. From the keyboard, Tab reaches each
  * handle (named for a screen reader) and arrows / Page Up / Page Down move it (handle-keys-3d.ts).
  */
-import { type JSX, type KeyboardEvent, useMemo, useRef } from 'react';
+import { type JSX, useMemo, useRef } from 'react';
 import type { Camera3d, Handle3dItem, Scene3d } from '../../../nodes/core/scene-3d.ts';
 import type { Vec2 } from '../../../nodes/core/values.ts';
 import type { NodePatch } from '../../../nodes/graph/drag-patches.ts';
 import { dragPatches3d } from '../../../nodes/graph/drag-patches-3d.ts';
 import type { Evaluation } from '../../../nodes/graph/evaluate.ts';
-import { announce } from '../../ui/announce.ts';
 import { type PaneSize, pointOnScreenPlane } from '../camera-3d.ts';
 import { OVERLAY_PX } from '../overlay/constants.ts';
 import { HandleKnobs, LABEL_COLOR, OUTLINE_COLOR } from '../overlay/OverlayShapes.tsx';
+import { fmt, handleKeyboard } from '../overlay/use-handle-keyboard.ts';
 import { type DragPlacer, useOverlayPointer } from '../overlay/use-overlay-pointer.ts';
 import { handleKeyPatches3d } from './handle-keys-3d.ts';
 import {
@@ -47,7 +47,6 @@ export interface RenderOverlay3dProps {
 }
 
 const FALLBACK_COLOR = '#ffffff';
-const fmt = (v: number) => (Math.round(v * 100) / 100).toString();
 
 /**
  * A 3D handle drag: the handle keeps its pixel offset from the pointer and moves in the plane
@@ -132,20 +131,13 @@ export function RenderOverlay3d(props: RenderOverlay3dProps): JSX.Element {
       const type = n?.def?.label ?? 'node';
       return n?.node.label ? `${n.node.label}, ${type}` : type;
     };
-    return {
-      name: (h: Screen3dHandle) =>
-        `${nodeName(h.nodeId)} ${h.handle} at ${h.at.map(fmt).join(', ')}: arrow keys move it across the screen, Page Up and Page Down away and nearer`,
-      onKey: (h: Screen3dHandle, at: Vec2, e: KeyboardEvent<SVGCircleElement>) => {
-        const patches = handleKeyPatches3d(e, h, at[0], at[1], camera, pane, evaluation);
-        if (!patches) return;
-        // The keys are the handle's: not the page's scroll nor the camera's orbit.
-        e.preventDefault();
-        e.stopPropagation();
-        if (patches.length === 0) return;
-        onCommit(patches);
-        announce(`${nodeName(h.nodeId)} moved`);
-      },
-    };
+    return handleKeyboard<Screen3dHandle>(
+      nodeName,
+      (h) =>
+        `at ${h.at.map(fmt).join(', ')}: arrow keys move it across the screen, Page Up and Page Down away and nearer`,
+      (h, at, e) => handleKeyPatches3d(e, h, at[0], at[1], camera, pane, evaluation),
+      onCommit,
+    );
   }, [readOnly, props.inspecting, evaluation, camera, pane, onCommit]);
   const hot = drag ? new Set([drag.target.nodeId]) : hoveredNodeIds;
   // Keys: the node id and how many of that node's items came before (a node may draw several).

@@ -3,13 +3,14 @@
  * outline (so it reads on any picture), with constant pixel widths at every zoom, labels, and the
  * grab handles on top. The hovered node's geometry is drawn wider with a soft halo.
  */
-import type { JSX, KeyboardEvent } from 'react';
+import type { JSX } from 'react';
 import type { HandleItem } from '../../../nodes/core/scene.ts';
 import type { Vec2 } from '../../../nodes/core/values.ts';
 import type { HandleRef } from '../../../nodes/graph/drag-patches.ts';
 import { OVERLAY_PX } from './constants.ts';
 import { circleCandidates, type LabelRequest, placeLabels, pointCandidates } from './label-placement.ts';
 import { circleRimVisible, clipLineToRect, type ScreenHandle, type ScreenItem } from './screen.ts';
+import type { HandleKeyboard } from './use-handle-keyboard.ts';
 
 export const OUTLINE_COLOR = 'rgba(8, 8, 12, 0.78)';
 export const LABEL_COLOR = '#f6f6fa';
@@ -196,10 +197,7 @@ export interface HandleKnobsProps<T extends HandleRef> {
   readonly hoverHandle: T | null;
   readonly dragTarget: T | null;
   /** When set, each knob is focusable and takes keys (arrow keys move it): its name and its keys. */
-  readonly keyboard?: {
-    readonly name: (item: T) => string;
-    readonly onKey: (item: T, at: Vec2, e: KeyboardEvent<SVGCircleElement>) => void;
-  };
+  readonly keyboard?: HandleKeyboard<T>;
 }
 
 /** The grab handles (2D and 3D overlays): bigger when hovered, dragged, or their node is hovered. */

@@ -18,7 +18,38 @@ interface Inputs {
   readonly onCommit: (patches: NodePatch[]) => void;
 }
 
-const fmt = (v: number) => (Math.round(v * 100) / 100).toString();
+export const fmt = (v: number) => (Math.round(v * 100) / 100).toString();
+
+/** What HandleKnobs takes to make its knobs keyboard handles: a name and a key handler per handle. */
+export interface HandleKeyboard<T> {
+  readonly name: (item: T) => string;
+  readonly onKey: (item: T, at: Vec2, e: KeyboardEvent<SVGCircleElement>) => void;
+}
+
+/**
+ * The keyboard of a 2D or 3D overlay: handle `item` is named "<node name> <handle> <where>", and a
+ * key for which `patches` has an answer is the handle's (not the page's scroll nor the pane's pan or
+ * orbit); a non-empty answer is committed as one undo step and announced.
+ */
+export function handleKeyboard<T extends { readonly nodeId: string; readonly handle: string }>(
+  nodeName: (id: string) => string,
+  where: (item: T) => string,
+  patches: (item: T, at: Vec2, e: KeyboardEvent<SVGCircleElement>) => NodePatch[] | null,
+  onCommit: (patches: NodePatch[]) => void,
+): HandleKeyboard<T> {
+  return {
+    name: (item) => `${nodeName(item.nodeId)} ${item.handle} ${where(item)}`,
+    onKey: (item, at, e) => {
+      const found = patches(item, at, e);
+      if (!found) return;
+      e.preventDefault();
+      e.stopPropagation();
+      if (found.length === 0) return;
+      onCommit(found);
+      announce(`${nodeName(item.nodeId)} moved`);
+    },
+  };
+}
 
 export function useHandleKeyboard(props: Inputs, screen: Screen, enabled: boolean) {
   const { doc, evaluation, onCommit } = props;
@@ -29,19 +60,11 @@ export function useHandleKeyboard(props: Inputs, screen: Screen, enabled: boolea
       const type = evaluation.analysis.nodes.get(id)?.def?.label ?? 'node';
       return label ? `${label}, ${type}` : type;
     };
-    return {
-      name: (item: HandleItem) =>
-        `${nodeName(item.nodeId)} ${item.handle} at ${fmt(item.at[0])}, ${fmt(item.at[1])}: arrow keys move it`,
-      onKey: (item: HandleItem, at: Vec2, e: KeyboardEvent<SVGCircleElement>) => {
-        const patches = handleKeyPatches(e, item, at, screen, evaluation);
-        if (!patches) return;
-        // The arrows are the handle's: not the page's scroll nor the pane's pan.
-        e.preventDefault();
-        e.stopPropagation();
-        if (patches.length === 0) return;
-        onCommit(patches);
-        announce(`${nodeName(item.nodeId)} moved`);
-      },
-    };
+    return handleKeyboard<HandleItem>(
+      nodeName,
+      (item) => `at ${fmt(item.at[0])}, ${fmt(item.at[1])}: arrow keys move it`,
+      (item, at, e) => handleKeyPatches(e, item, at, screen, evaluation),
+      onCommit,
+    );
   }, [enabled, doc, evaluation, onCommit, screen]);
 }

@@ -246,10 +246,10 @@ describe('Explain this pixel in 3D', () => {
         camera: { position: [...cam.position], target: [...cam.target], fovDeg: cam.fovDeg },
       });
     }, camera);
-    await waitRendered(page, 120_000);
+    // The panel is the CPU's (no GPU frame is read): wait for the edited document, not the picture.
+    await expect.poll(async () => evaluateGraph(await doc(), registry).scene3d?.volume?.steps, SLOW).toBe(24);
     const current = await doc();
     const scene = evaluateGraph(current, registry).scene3d!;
-    expect(scene.volume?.steps).toBe(24);
     // The node shows the volume's settings, not the sphere tracer's (which would change nothing).
     const renderNode = nodeEl(page, 'render');
     await renderNode.getByRole('combobox', { name: 'volume palette' }).waitFor();
